@@ -1,0 +1,44 @@
+#pragma once
+// DdsType specialisations for every message of idl/: which generated C type carries it.
+// Conversions live in conversions/<area>.cpp, one file per IDL file.
+#include "common/dds/type_traits.hpp"
+#include "common/msg/clock.hpp"
+#include "common/msg/navigation.hpp"
+#include "common/msg/robot.hpp"
+#include "common/msg/simulation.hpp"
+#include "common/msg/system.hpp"
+#include "idl/clock.h"
+#include "idl/navigation.h"
+#include "idl/robot.h"
+#include "idl/simulation.h"
+#include "idl/system.h"
+
+#define AUTONOMY_DDS_TYPE(VALUE, CTYPE)                                                  \
+  template <>                                                                            \
+  struct DdsType<VALUE> {                                                                \
+    using C = CTYPE;                                                                     \
+    static const dds_topic_descriptor_t* descriptor() { return &CTYPE##_desc; }          \
+    static const char* type_name() { return CTYPE##_desc.m_typename; }                   \
+    static void to_c(const VALUE& value, C& out, Arena& arena);                          \
+    static VALUE from_c(const C& in);                                                    \
+  };
+
+namespace autonomy::dds {
+
+AUTONOMY_DDS_TYPE(msg::Heartbeat, autonomy_Heartbeat)
+AUTONOMY_DDS_TYPE(msg::SimClock, autonomy_SimClock)
+AUTONOMY_DDS_TYPE(msg::LockstepRegistration, autonomy_LockstepRegistration)
+AUTONOMY_DDS_TYPE(msg::TickAck, autonomy_TickAck)
+AUTONOMY_DDS_TYPE(msg::RobotState, autonomy_RobotState)
+AUTONOMY_DDS_TYPE(msg::VelocityCommand, autonomy_VelocityCommand)
+AUTONOMY_DDS_TYPE(msg::CommandRejection, autonomy_CommandRejection)
+AUTONOMY_DDS_TYPE(msg::SpawnRequest, autonomy_SpawnRequest)
+AUTONOMY_DDS_TYPE(msg::SpawnReply, autonomy_SpawnReply)
+AUTONOMY_DDS_TYPE(msg::WorldMap, autonomy_WorldMap)
+AUTONOMY_DDS_TYPE(msg::SimulatorStatus, autonomy_SimulatorStatus)
+AUTONOMY_DDS_TYPE(msg::NavGoal, autonomy_NavGoal)
+AUTONOMY_DDS_TYPE(msg::GoalStatus, autonomy_GoalStatus)
+
+}  // namespace autonomy::dds
+
+#undef AUTONOMY_DDS_TYPE

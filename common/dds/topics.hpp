@@ -1,0 +1,46 @@
+#pragma once
+// The catalogue of topics: one line per topic, its type and QoS class. docs/topics.md describes
+// the same list for people (writers, readers, keys); keep both in step.
+#include "common/dds/message_types.hpp"
+#include "common/dds/topic.hpp"
+
+namespace autonomy::dds::topics {
+
+inline constexpr TopicSpec<msg::Heartbeat> heartbeat{"autonomy/heartbeat", QosClass::State};
+
+inline constexpr TopicSpec<msg::SimClock> clock{"autonomy/clock", QosClass::State};
+inline constexpr TopicSpec<msg::LockstepRegistration> lockstep_registration{"autonomy/lockstep/registration",
+                                                                            QosClass::State};
+inline constexpr TopicSpec<msg::TickAck> tick_ack{"autonomy/lockstep/ack", QosClass::Event};
+
+inline constexpr TopicSpec<msg::RobotState> robot_state{"autonomy/robot/state", QosClass::State};
+inline constexpr TopicSpec<msg::VelocityCommand> cmd_vel{"autonomy/robot/cmd_vel", QosClass::Command};
+inline constexpr TopicSpec<msg::CommandRejection> command_rejected{"autonomy/sim/command_rejected", QosClass::Event};
+
+inline constexpr TopicSpec<msg::SpawnRequest> spawn_request{"autonomy/sim/spawn_request", QosClass::Request};
+inline constexpr TopicSpec<msg::SpawnReply> spawn_reply{"autonomy/sim/spawn_reply", QosClass::Reply};
+inline constexpr TopicSpec<msg::WorldMap> world_map{"autonomy/map", QosClass::State};
+inline constexpr TopicSpec<msg::SimulatorStatus> sim_status{"autonomy/sim/status", QosClass::State};
+
+inline constexpr TopicSpec<msg::NavGoal> nav_goal{"autonomy/nav/goal", QosClass::Command};
+inline constexpr TopicSpec<msg::GoalStatus> goal_status{"autonomy/nav/goal_status", QosClass::State};
+
+// Calls visit(spec) for every topic of the catalogue: tools use it to find a topic's type by name.
+template <typename Visitor>
+void for_each_topic(Visitor&& visit) {
+  visit(heartbeat);
+  visit(clock);
+  visit(lockstep_registration);
+  visit(tick_ack);
+  visit(robot_state);
+  visit(cmd_vel);
+  visit(command_rejected);
+  visit(spawn_request);
+  visit(spawn_reply);
+  visit(world_map);
+  visit(sim_status);
+  visit(nav_goal);
+  visit(goal_status);
+}
+
+}  // namespace autonomy::dds::topics

@@ -1,0 +1,37 @@
+// Human-readable names of the message enums, as logs and JSON show them.
+#include "common/msg/clock.hpp"
+#include "common/msg/navigation.hpp"
+#include "common/msg/robot.hpp"
+#include "common/msg/simulation.hpp"
+#include "common/msg/system.hpp"
+
+namespace autonomy::msg {
+
+const char* to_string(ServiceState s) {
+  switch (s) {
+    case ServiceState::Starting: return "starting";
+    case ServiceState::Ready: return "ready";
+    case ServiceState::Stopping: return "stopping";
+  }
+  return "?";
+}
+
+const char* to_string(ClockMode m) { return m == ClockMode::Lockstep ? "lockstep" : "paced"; }
+
+const char* to_string(Kinematics k) { return k == Kinematics::Holonomic ? "holonomic" : "unicycle"; }
+
+const char* to_string(RequestStatus s) { return s == RequestStatus::Accepted ? "accepted" : "rejected"; }
+
+const char* to_string(GoalState s) {
+  switch (s) {
+    case GoalState::Accepted: return "accepted";
+    case GoalState::Active: return "active";
+    case GoalState::Reached: return "reached";
+    case GoalState::Failed: return "failed";
+    case GoalState::Preempted: return "preempted";
+    case GoalState::Rejected: return "rejected";
+  }
+  return "?";
+}
+
+}  // namespace autonomy::msg

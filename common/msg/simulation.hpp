@@ -1,0 +1,48 @@
+#pragma once
+// C++ value types of idl/simulation.idl.
+#include "common/geometry/geometry.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace autonomy::msg {
+
+struct SpawnRequest {
+  std::string request_id;
+  std::string requester;
+  std::string robot_id;
+  bool has_pose = false;
+  double x = 0.0, y = 0.0, theta = 0.0;
+};
+
+enum class RequestStatus { Accepted, Rejected };
+
+struct SpawnReply {
+  std::string request_id;
+  std::string robot_id;
+  RequestStatus status = RequestStatus::Rejected;
+  std::string reason;
+};
+
+struct WorldMap {
+  std::string name;
+  double width = 0.0;
+  double height = 0.0;
+  std::vector<geometry::Rect> obstacles;
+};
+
+struct SimulatorStatus {
+  int64_t tick = 0;
+  int64_t sim_time_ns = 0;
+  uint32_t robots = 0;
+  std::vector<std::string> lockstep_participants;
+  uint64_t commands_applied = 0;
+  uint64_t commands_rejected = 0;
+  uint64_t participants_dropped = 0;
+  double mean_step_us = 0.0;
+};
+
+const char* to_string(RequestStatus s);
+
+}  // namespace autonomy::msg

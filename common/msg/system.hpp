@@ -1,0 +1,22 @@
+#pragma once
+// C++ value types of idl/system.idl. Services use these; the generated C types stay in common/dds.
+#include <cstdint>
+#include <string>
+
+namespace autonomy::msg {
+
+enum class ServiceState { Starting, Ready, Stopping };
+
+struct Heartbeat {
+  std::string service;
+  std::string instance;
+  std::string host;
+  int32_t pid = 0;
+  ServiceState state = ServiceState::Starting;
+  double uptime_s = 0.0;
+  uint32_t period_ms = 0;
+};
+
+const char* to_string(ServiceState s);
+
+}  // namespace autonomy::msg

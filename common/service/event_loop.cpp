@@ -1,0 +1,53 @@
+#include "common/service/event_loop.hpp"
+
+#include <algorithm>
+
+namespace autonomy::service {
+
+namespace {
+constexpr dds_attach_t kStopTag = -1;
+}
+
+EventLoop::EventLoop(const dds::Participant& participant) : waitset_(participant), stop_(participant) {
+  waitset_.attach(stop_.handle(), kStopTag);
+}
+
+void EventLoop::on_condition(dds_entity_t condition, std::function<void()> handler) {
+  waitset_.attach(condition, static_cast<dds_attach_t>(handlers_.size()));
+  handlers_.push_back(std::move(handler));
+}
+
+void EventLoop::every(std::chrono::nanoseconds period, std::function<void()> handler) {
+  timers_.push_back({period, Clock::now() + period, std::move(handler)});
+}
+
+std::chrono::nanoseconds EventLoop::time_to_next_timer() const {
+  auto wait = std::chrono::nanoseconds(std::chrono::seconds(1));
+  const auto now = Clock::now();
+  for (const auto& t : timers_) wait = std::min(wait, std::max<std::chrono::nanoseconds>(t.due - now, {}));
+  return wait;
+}
+
+void EventLoop::run_due_timers() {
+  const auto now = Clock::now();
+  for (auto& t : timers_) {
+    if (t.due > now) continue;
+    t.due = std::max(t.due + t.period, now);
+    t.handler();
+  }
+}
+
+void EventLoop::run_once(std::chrono::nanoseconds timeout) {
+  const auto wait = std::min(timeout, time_to_next_timer());
+  for (dds_attach_t tag : waitset_.wait(wait)) {
+    if (tag == kStopTag) continue;
+    handlers_[static_cast<size_t>(tag)]();
+  }
+  run_due_timers();
+}
+
+void EventLoop::run() {
+  while (!stopped()) run_once(std::chrono::seconds(1));
+}
+
+}  // namespace autonomy::service

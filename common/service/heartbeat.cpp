@@ -1,0 +1,37 @@
+#include "common/service/heartbeat.hpp"
+
+#include <unistd.h>
+
+namespace autonomy::service {
+
+std::string host_name() {
+  char name[256] = {0};
+  if (gethostname(name, sizeof(name) - 1) != 0) return "unknown";
+  return name;
+}
+
+HeartbeatPublisher::HeartbeatPublisher(const dds::Participant& participant, std::string service,
+                                       std::string instance, std::chrono::milliseconds period)
+    : topic_(participant, dds::topics::heartbeat),
+      writer_(participant, topic_),
+      period_(period),
+      started_(std::chrono::steady_clock::now()) {
+  beat_.service = std::move(service);
+  beat_.instance = std::move(instance);
+  beat_.host = host_name();
+  beat_.pid = static_cast<int32_t>(getpid());
+  beat_.period_ms = static_cast<uint32_t>(period.count());
+}
+
+void HeartbeatPublisher::set_state(msg::ServiceState state) {
+  if (beat_.state == state) return;
+  beat_.state = state;
+  publish();
+}
+
+void HeartbeatPublisher::publish() {
+  beat_.uptime_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+  writer_.write(beat_);
+}
+
+}  // namespace autonomy::service

@@ -1,0 +1,32 @@
+#pragma once
+// The process's heartbeat on autonomy/heartbeat: who it is, where, and its lifecycle state.
+#include "common/dds/topics.hpp"
+#include "common/dds/writer.hpp"
+
+#include <chrono>
+#include <string>
+
+namespace autonomy::service {
+
+class HeartbeatPublisher {
+ public:
+  HeartbeatPublisher(const dds::Participant& participant, std::string service, std::string instance,
+                     std::chrono::milliseconds period);
+
+  // Publishes at once when the state changes, so readiness is seen without waiting a period.
+  void set_state(msg::ServiceState state);
+  void publish();
+  std::chrono::milliseconds period() const { return period_; }
+
+ private:
+  dds::Topic<msg::Heartbeat> topic_;
+  dds::Writer<msg::Heartbeat> writer_;
+  msg::Heartbeat beat_;
+  std::chrono::milliseconds period_;
+  std::chrono::steady_clock::time_point started_;
+};
+
+// This machine's host name, or "unknown".
+std::string host_name();
+
+}  // namespace autonomy::service

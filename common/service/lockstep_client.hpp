@@ -1,0 +1,49 @@
+#pragma once
+// The participant's side of simulated time: follow autonomy/clock, register for lockstep, and
+// acknowledge each tick once this process's commands for it are written.
+//
+// Protocol (the simulator's side is simulator/core/lockstep_barrier.hpp):
+//   1. the simulator publishes the world state of tick k, then SimClock{tick = k};
+//   2. each registered participant computes from the state of tick k, writes its commands stamped
+//      k, then writes TickAck{k, commands_sent};
+//   3. the simulator applies the commands once every participant's ack and announced commands
+//      for k arrived (or drops a participant that stays silent past the ack timeout), steps to k+1.
+#include "common/clock/clock.hpp"
+#include "common/dds/reader.hpp"
+#include "common/dds/topics.hpp"
+#include "common/dds/writer.hpp"
+#include "common/service/event_loop.hpp"
+
+#include <functional>
+#include <string>
+
+namespace autonomy::service {
+
+class LockstepClient {
+ public:
+  // on_tick runs on the loop's thread for every new tick (older or repeated ticks are skipped).
+  LockstepClient(const dds::Participant& participant, EventLoop& loop, std::string participant_name,
+                 std::function<void(const msg::SimClock&)> on_tick);
+  // Leaves the lockstep set at once (disposes the registration) instead of waiting for a timeout.
+  ~LockstepClient();
+
+  // Joins the set of participants the simulator waits for.
+  void register_participant();
+  void acknowledge(int64_t tick, uint32_t commands_sent);
+
+  const clock::SimulatedClock& clock() const { return clock_; }
+  const std::string& name() const { return name_; }
+
+ private:
+  std::string name_;
+  clock::SimulatedClock clock_;
+  std::function<void(const msg::SimClock&)> on_tick_;
+  dds::Topic<msg::SimClock> clock_topic_;
+  dds::Topic<msg::LockstepRegistration> registration_topic_;
+  dds::Topic<msg::TickAck> ack_topic_;
+  dds::Reader<msg::SimClock> clock_reader_;
+  dds::Writer<msg::LockstepRegistration> registration_writer_;
+  dds::Writer<msg::TickAck> ack_writer_;
+};
+
+}  // namespace autonomy::service
