@@ -25,8 +25,10 @@ class Reader {
   Reader(const Participant& participant, const Topic<T>& topic)
       : Reader(participant, topic, topic.spec().qos) {}
   Reader(const Participant& participant, const Topic<T>& topic, QosClass qos)
-      : entity_(check(dds_create_reader(participant.handle(), topic.handle(), make_qos(qos).get(), nullptr),
-                      "dds_create_reader")),
+      : Reader(participant, topic, make_qos(qos).get()) {}
+  // An explicit QoS, for tools that mirror the QoS of writers they discovered.
+  Reader(const Participant& participant, const Topic<T>& topic, const dds_qos_t* qos)
+      : entity_(check(dds_create_reader(participant.handle(), topic.handle(), qos, nullptr), "dds_create_reader")),
         any_data_(check(dds_create_readcondition(entity_.handle(), DDS_ANY_STATE), "dds_create_readcondition")) {}
 
   // Removes and returns every available sample. dds_take groups samples by instance (key);

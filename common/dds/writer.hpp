@@ -16,8 +16,10 @@ class Writer {
   Writer(const Participant& participant, const Topic<T>& topic)
       : Writer(participant, topic, topic.spec().qos) {}
   Writer(const Participant& participant, const Topic<T>& topic, QosClass qos)
-      : entity_(check(dds_create_writer(participant.handle(), topic.handle(), make_qos(qos).get(), nullptr),
-                      "dds_create_writer")) {}
+      : Writer(participant, topic, make_qos(qos).get()) {}
+  // An explicit QoS, for tools (e.g. a class's QoS with autodispose turned off).
+  Writer(const Participant& participant, const Topic<T>& topic, const dds_qos_t* qos)
+      : entity_(check(dds_create_writer(participant.handle(), topic.handle(), qos, nullptr), "dds_create_writer")) {}
 
   void write(const T& value) const {
     C sample{};

@@ -16,6 +16,12 @@ Service::Service(ServiceOptions options)
   loop_.every(heartbeat_.period(), [this] { heartbeat_.publish(); });
 }
 
+void Service::fail(const std::string& reason) {
+  spdlog::error("giving up: {}", reason);
+  exit_code_ = 1;
+  loop_.stop();
+}
+
 void Service::run() {
   loop_.run();
   heartbeat_.set_state(msg::ServiceState::Stopping);

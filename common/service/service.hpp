@@ -27,6 +27,9 @@ class Service {
   // Runs the loop until a signal or stop(); publishes the stopping heartbeat.
   void run();
   void stop() { loop_.stop(); }
+  // Stops because the node cannot do its job; the process then exits with code 1.
+  void fail(const std::string& reason);
+  int exit_code() const { return exit_code_; }
 
  private:
   ServiceOptions options_;
@@ -34,12 +37,13 @@ class Service {
   dds::Participant participant_;
   EventLoop loop_;
   HeartbeatPublisher heartbeat_;
+  int exit_code_ = 0;
 };
 
 // Parses the shared options plus those add_options registers, then builds the node with
 // make_node(service) and runs until SIGINT/SIGTERM. Returns the process exit code: 0 after a
-// clean stop, 1 when the node could not start (the reason is logged), CLI11's code for bad
-// arguments.
+// clean stop, 1 when the node could not start or called fail() (the reason is logged), CLI11's
+// code for bad arguments.
 template <typename AddOptions, typename MakeNode>
 int run_service(int argc, char** argv, const char* service_name, const char* description, InstanceFlag flag,
                 AddOptions&& add_options, MakeNode&& make_node) {
@@ -57,7 +61,7 @@ int run_service(int argc, char** argv, const char* service_name, const char* des
     service.run();
     node.reset();
     spdlog::info("stopped");
-    return 0;
+    return service.exit_code();
   } catch (const std::exception& e) {
     spdlog::critical("cannot run: {}", e.what());
     return 1;

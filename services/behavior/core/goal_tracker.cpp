@@ -1,0 +1,147 @@
+#include "services/behavior/core/goal_tracker.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+#include <utility>
+
+namespace autonomy::behavior {
+
+namespace {
+
+bool positive_finite(double v) { return std::isfinite(v) && v > 0.0; }
+
+template <typename... Args>
+std::string format(const char* fmt, Args... args) {
+  char buffer[256];
+  std::snprintf(buffer, sizeof buffer, fmt, args...);
+  return buffer;
+}
+
+}  // namespace
+
+GoalTracker::GoalTracker(OccupancyGrid grid, GoalTrackerConfig config)
+    : grid_(std::move(grid)), config_(config) {
+  if (!positive_finite(config.default_tolerance_m) || !positive_finite(config.stall_timeout_s) ||
+      !positive_finite(config.min_progress_m) || !std::isfinite(config.route_search_radius_m) ||
+      config.route_search_radius_m < 0.0) {
+    throw std::invalid_argument("goal tracker parameters must be positive and finite");
+  }
+}
+
+GoalReport GoalTracker::set_goal(const std::string& goal_id, double x, double y, double tolerance_m,
+                                 double now_s) {
+  GoalReport report;
+  const geometry::Vec2 goal(x, y);
+  std::string rejection;
+  if (goal_id.empty()) {
+    rejection = "goal id is empty";
+  } else if (!std::isfinite(x) || !std::isfinite(y)) {
+    rejection = "goal coordinates are not finite";
+  } else if (std::isnan(tolerance_m) || std::isinf(tolerance_m)) {
+    rejection = "goal tolerance is not finite";
+  } else if (!grid_.inside_world(goal)) {
+    rejection = format("goal (%.2f, %.2f) is outside the world [0, %.2f] x [0, %.2f]", x, y,
+                       grid_.width_m(), grid_.height_m());
+  }
+  if (!rejection.empty()) {
+    report.changes.push_back(make_status(goal_id, GoalState::Rejected, std::move(rejection), goal));
+    // A rejected goal becomes "the latest goal" only when nothing is being pursued.
+    if (!pursued_) status_ = report.changes.back();
+    report.current = status_;
+    return report;
+  }
+
+  if (pursued_) end_pursuit(GoalState::Preempted, "preempted by goal " + goal_id, report);
+
+  const double tolerance = tolerance_m > 0.0 ? tolerance_m : config_.default_tolerance_m;
+  pursued_.emplace(Pursuit{goal_id, goal, tolerance, CostToGoField(grid_, goal),
+                           std::numeric_limits<double>::infinity(), now_s});
+  status_ = make_status(goal_id, GoalState::Accepted, "", goal);
+  report.changes.push_back(*status_);
+  report.current = status_;
+  return report;
+}
+
+GoalReport GoalTracker::update(const geometry::Pose2& pose, double now_s) {
+  GoalReport report;
+  if (!std::isfinite(pose.x) || !std::isfinite(pose.y)) {
+    report.current = status_;
+    return report;
+  }
+  const geometry::Vec2 position = pose.position();
+  last_position_ = position;
+  if (!pursued_) {
+    report.current = status_;
+    return report;
+  }
+
+  Pursuit& p = *pursued_;
+  const double distance = (p.goal - position).norm();
+  status_->distance_to_goal = distance;
+
+  if (status_->state == GoalState::Accepted) {
+    const double remaining = remaining_path_m(p, position);
+    if (distance > p.tolerance_m && !std::isfinite(remaining)) {
+      end_pursuit(GoalState::Failed, format("no route to goal (%.2f, %.2f)", p.goal.x(), p.goal.y()),
+                  report);
+      report.current = status_;
+      return report;
+    }
+    status_->state = GoalState::Active;
+    report.changes.push_back(*status_);
+    p.best_remaining_m = remaining;
+    // The stall clock started at acceptance: a robot that never moves fails stall_timeout_s after
+    // the goal arrived, however late the first pose came.
+  }
+
+  if (distance <= p.tolerance_m) {
+    end_pursuit(GoalState::Reached, "", report);
+    report.current = status_;
+    return report;
+  }
+
+  const double remaining = remaining_path_m(p, position);
+  if (remaining <= p.best_remaining_m - config_.min_progress_m ||
+      (std::isinf(p.best_remaining_m) && std::isfinite(remaining))) {
+    p.best_remaining_m = remaining;
+    p.last_progress_s = now_s;
+  } else if (now_s - p.last_progress_s >= config_.stall_timeout_s) {
+    end_pursuit(GoalState::Failed,
+                format("no progress for %.1f s, %.1f m from goal", config_.stall_timeout_s, distance),
+                report);
+  }
+  report.current = status_;
+  return report;
+}
+
+GoalStatus GoalTracker::make_status(const std::string& id, GoalState state, std::string reason,
+                                    const geometry::Vec2& goal) const {
+  GoalStatus s;
+  s.goal_id = id;
+  s.state = state;
+  s.reason = std::move(reason);
+  if (last_position_ && std::isfinite(goal.x()) && std::isfinite(goal.y())) {
+    s.distance_to_goal = (goal - *last_position_).norm();
+  }
+  return s;
+}
+
+// Path cost from the robot's position: the field at its cell, or, when the robot sits in the
+// inflation margin, the way out to the nearest reachable cell plus that cell's cost.
+double GoalTracker::remaining_path_m(const Pursuit& p, const geometry::Vec2& position) const {
+  const float here = p.field.cost_at(position);
+  if (std::isfinite(here)) return here;
+  const auto refuge = p.field.nearest_reachable(position, config_.route_search_radius_m);
+  if (!refuge) return std::numeric_limits<double>::infinity();
+  return p.field.cost(*refuge) + (p.field.geometry().centre(*refuge) - position).norm();
+}
+
+void GoalTracker::end_pursuit(GoalState state, std::string reason, GoalReport& report) {
+  status_ = make_status(pursued_->id, state, std::move(reason), pursued_->goal);
+  report.changes.push_back(*status_);
+  pursued_.reset();
+}
+
+}  // namespace autonomy::behavior

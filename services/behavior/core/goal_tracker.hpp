@@ -1,0 +1,87 @@
+#pragma once
+// The navigation-goal lifecycle of one robot: validates new goals, owns the cost-to-go field of the
+// goal being pursued, and decides when that goal is reached, failed or preempted. It does not move
+// the robot: the node asks GoToController for a command using field() while active() holds.
+//
+// Every call returns the transitions it caused, in order, so the node can publish each one
+// (accepted -> active -> reached arrive as three samples, never collapsed into the last).
+// Time is an argument (seconds on the caller's clock, simulated or wall); the tracker keeps none.
+//
+// Policies:
+//  - A malformed goal is Rejected and the goal being pursued carries on (as a ROS action server
+//    rejects a bad request without aborting the running one).
+//  - A valid new goal preempts the pursued one, whatever its id: [old Preempted, new Accepted].
+//  - A goal becomes Active on the first update() after set_goal(); it Fails right there instead when
+//    its cell is blocked or the robot's position has no route to it.
+//  - Progress is measured on the field's path cost, not the straight distance, so going around a
+//    wall counts as progress. No decrease of at least min_progress_m for stall_timeout_s -> Failed.
+#include "common/geometry/geometry.hpp"
+#include "services/behavior/core/cost_to_go_field.hpp"
+#include "services/behavior/core/goal_status.hpp"
+#include "services/behavior/core/occupancy_grid.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace autonomy::behavior {
+
+struct GoalTrackerConfig {
+  double default_tolerance_m = 0.2;  // for goals that ask for tolerance <= 0 (NavGoal allows it)
+  double stall_timeout_s = 10.0;
+  double min_progress_m = 0.1;  // smaller decreases of the remaining path are noise, not progress
+  // How far from the robot a reachable cell may be for the robot to count as having a route; keep
+  // it equal to GoToConfig::lookahead_m, the distance the controller will escape over.
+  double route_search_radius_m = 1.0;
+};
+
+struct GoalReport {
+  std::optional<GoalStatus> current;  // the pursued goal, else the last one to end; nullopt before any
+  std::vector<GoalStatus> changes;    // transitions caused by this call, in order; publish each
+};
+
+class GoalTracker {
+ public:
+  // Throws std::invalid_argument on non-positive or non-finite config values.
+  explicit GoalTracker(OccupancyGrid grid, GoalTrackerConfig config = {});
+
+  // tolerance_m <= 0 means config.default_tolerance_m. Computes the field for a valid goal.
+  [[nodiscard]] GoalReport set_goal(const std::string& goal_id, double x, double y,
+                                    double tolerance_m, double now_s);
+
+  // Feeds the robot's pose at now_s. A non-finite pose changes nothing.
+  [[nodiscard]] GoalReport update(const geometry::Pose2& pose, double now_s);
+
+  // A goal is Accepted or Active: the node should drive the robot with field().
+  bool active() const { return pursued_.has_value(); }
+  // The field of the pursued goal; nullptr when none is pursued.
+  const CostToGoField* field() const { return pursued_ ? &pursued_->field : nullptr; }
+  // Effective tolerance of the pursued goal (0 when none).
+  double tolerance_m() const { return pursued_ ? pursued_->tolerance_m : 0.0; }
+  const std::optional<GoalStatus>& status() const { return status_; }
+  const OccupancyGrid& grid() const { return grid_; }
+  const GoalTrackerConfig& config() const { return config_; }
+
+ private:
+  struct Pursuit {
+    std::string id;
+    geometry::Vec2 goal;
+    double tolerance_m;
+    CostToGoField field;
+    double best_remaining_m;  // least path cost seen so far (+inf before activation)
+    double last_progress_s;   // when best_remaining_m last dropped by min_progress_m
+  };
+
+  GoalStatus make_status(const std::string& id, GoalState state, std::string reason,
+                         const geometry::Vec2& goal) const;
+  double remaining_path_m(const Pursuit& p, const geometry::Vec2& position) const;
+  void end_pursuit(GoalState state, std::string reason, GoalReport& report);
+
+  OccupancyGrid grid_;
+  GoalTrackerConfig config_;
+  std::optional<Pursuit> pursued_;
+  std::optional<GoalStatus> status_;
+  std::optional<geometry::Vec2> last_position_;
+};
+
+}  // namespace autonomy::behavior

@@ -1,0 +1,56 @@
+#pragma once
+// Which cells a robot's centre may occupy. The world's obstacles are grown by the inflation radius
+// (robot radius plus a safety margin), so that the robot can be planned as a point: a cell is
+// blocked when its centre lies within that distance of an obstacle or of the world's border.
+//
+// Only cell centres are tested, so a point inside a free cell can be up to resolution * sqrt(2)/2
+// closer to an obstacle than the inflation radius. Keep margin >= 0.71 * resolution to guarantee
+// clearance for a robot that stays in free cells.
+#include "common/geometry/geometry.hpp"
+#include "services/behavior/core/grid_geometry.hpp"
+#include "services/behavior/core/world_map.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace autonomy::behavior {
+
+class OccupancyGrid {
+ public:
+  // Throws std::invalid_argument on a malformed world or parameters (non-positive or non-finite
+  // sizes, invalid rectangles, more than kMaxCells cells). The node validates configuration and maps
+  // before they get here; the throw keeps a bad value from silently producing an empty grid.
+  OccupancyGrid(const WorldMap& world, double resolution_m, double inflation_radius_m);
+
+  // A grid drawn as text, first string = top row (highest y); '#' is blocked, anything else free.
+  // No inflation: what is drawn is what is blocked. For tests and hand-made examples.
+  static OccupancyGrid from_picture(const std::vector<std::string>& rows_top_first,
+                                    double resolution_m);
+
+  static constexpr std::size_t kMaxCells = 64u * 1024u * 1024u;
+
+  const GridGeometry& geometry() const { return geometry_; }
+  double width_m() const { return width_m_; }
+  double height_m() const { return height_m_; }
+  double inflation_radius_m() const { return inflation_radius_m_; }
+
+  // Cells outside the grid count as blocked.
+  bool blocked(GridCell c) const { return !geometry_.contains(c) || blocked_[geometry_.index(c)] != 0; }
+
+  // Inside [0, width] x [0, height] (borders included).
+  bool inside_world(const geometry::Vec2& p) const {
+    return p.x() >= 0.0 && p.y() >= 0.0 && p.x() <= width_m_ && p.y() <= height_m_;
+  }
+
+ private:
+  OccupancyGrid() = default;
+
+  GridGeometry geometry_;
+  double width_m_ = 0.0;
+  double height_m_ = 0.0;
+  double inflation_radius_m_ = 0.0;
+  std::vector<std::uint8_t> blocked_;  // one byte per cell: vector<bool> would cost a shift per test
+};
+
+}  // namespace autonomy::behavior

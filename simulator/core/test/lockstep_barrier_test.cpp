@@ -1,0 +1,124 @@
+#include "simulator/core/lockstep_barrier.hpp"
+
+#include <gtest/gtest.h>
+
+namespace autonomy::sim {
+namespace {
+
+using Ack = LockstepBarrier::AckOutcome;
+using Names = std::vector<std::string>;
+
+class Barrier : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    barrier.add("a");
+    barrier.add("b");
+    barrier.begin_tick(1, 100.0);
+  }
+  LockstepBarrier barrier;
+};
+
+TEST_F(Barrier, CompletesAfterAcksAndAnnouncedCommandsArrivingAfterTheAck) {
+  EXPECT_EQ(barrier.on_ack("a", 1, 2), Ack::Counted);
+  EXPECT_EQ(barrier.on_ack("b", 1, 0), Ack::Counted);
+  EXPECT_FALSE(barrier.complete(1));
+  EXPECT_TRUE(barrier.on_command("a", 1));
+  EXPECT_FALSE(barrier.complete(1));
+  EXPECT_TRUE(barrier.on_command("a", 1));
+  EXPECT_TRUE(barrier.complete(1));
+}
+
+TEST_F(Barrier, CompletesWithCommandsArrivingBeforeTheAck) {
+  EXPECT_TRUE(barrier.on_command("a", 1));
+  EXPECT_TRUE(barrier.on_command("b", 1));
+  EXPECT_FALSE(barrier.complete(1));
+  EXPECT_EQ(barrier.on_ack("b", 1, 1), Ack::Counted);
+  EXPECT_FALSE(barrier.complete(1));  // a has not acked
+  EXPECT_EQ(barrier.on_ack("a", 1, 1), Ack::Counted);
+  EXPECT_TRUE(barrier.complete(1));
+}
+
+TEST_F(Barrier, OnlyTheCurrentTickCanComplete) {
+  EXPECT_EQ(barrier.on_ack("a", 1, 0), Ack::Counted);
+  EXPECT_EQ(barrier.on_ack("b", 1, 0), Ack::Counted);
+  EXPECT_TRUE(barrier.complete(1));
+  EXPECT_FALSE(barrier.complete(2));
+  barrier.end_tick(1);
+  barrier.begin_tick(2, 100.1);
+  EXPECT_FALSE(barrier.complete(2));  // tick 1's acks do not carry over
+}
+
+TEST_F(Barrier, ExpireDropsASilentParticipantAfterTheTimeout) {
+  EXPECT_EQ(barrier.on_ack("a", 1, 0), Ack::Counted);
+  EXPECT_EQ(barrier.expire(1, 101.9, 2.0), Names{});
+  EXPECT_EQ(barrier.expire(1, 102.0, 2.0), Names{"b"});
+  EXPECT_EQ(barrier.participants(), Names{"a"});
+  EXPECT_TRUE(barrier.complete(1));
+}
+
+TEST_F(Barrier, ExpireDropsAParticipantStillOwingCommands) {
+  EXPECT_EQ(barrier.on_ack("a", 1, 3), Ack::Counted);
+  EXPECT_EQ(barrier.on_ack("b", 1, 0), Ack::Counted);
+  EXPECT_TRUE(barrier.on_command("a", 1));
+  EXPECT_EQ(barrier.expire(1, 105.0, 2.0), Names{"a"});
+  EXPECT_TRUE(barrier.complete(1));
+}
+
+TEST_F(Barrier, DroppedParticipantRejoinsByAckingTheCurrentTick) {
+  EXPECT_EQ(barrier.on_ack("a", 1, 0), Ack::Counted);
+  ASSERT_EQ(barrier.expire(1, 103.0, 2.0), Names{"b"});
+  barrier.end_tick(1);
+  barrier.begin_tick(2, 103.0);
+  EXPECT_EQ(barrier.on_ack("b", 1, 0), Ack::IgnoredStale);  // a late ack does not rejoin
+  EXPECT_EQ(barrier.participants(), Names{"a"});
+  EXPECT_EQ(barrier.on_ack("b", 2, 1), Ack::Rejoined);
+  EXPECT_EQ(barrier.participants(), (Names{"a", "b"}));
+  EXPECT_EQ(barrier.on_ack("a", 2, 0), Ack::Counted);
+  EXPECT_FALSE(barrier.complete(2));  // b's announced command is still owed
+  EXPECT_TRUE(barrier.on_command("b", 2));
+  EXPECT_TRUE(barrier.complete(2));
+}
+
+TEST_F(Barrier, OldAcksAndCommandsAreIgnored) {
+  barrier.end_tick(1);
+  barrier.begin_tick(2, 100.1);
+  EXPECT_EQ(barrier.on_ack("a", 1, 0), Ack::IgnoredStale);
+  EXPECT_FALSE(barrier.on_command("a", 1));
+  EXPECT_EQ(barrier.on_ack("b", 2, 0), Ack::Counted);
+  EXPECT_FALSE(barrier.complete(2));
+}
+
+TEST_F(Barrier, RemovedParticipantIsNotWaitedForAndCannotRejoinByAck) {
+  barrier.remove("b");
+  EXPECT_EQ(barrier.on_ack("a", 1, 0), Ack::Counted);
+  EXPECT_TRUE(barrier.complete(1));
+  EXPECT_EQ(barrier.on_ack("b", 1, 0), Ack::IgnoredUnknown);
+  EXPECT_EQ(barrier.on_ack("stranger", 1, 0), Ack::IgnoredUnknown);
+  EXPECT_EQ(barrier.participants(), Names{"a"});
+}
+
+TEST_F(Barrier, ParticipantAddedDuringATickIsWaitedForFromTheNext) {
+  EXPECT_TRUE(barrier.add("c"));
+  EXPECT_FALSE(barrier.add("c"));
+  EXPECT_EQ(barrier.on_ack("a", 1, 0), Ack::Counted);
+  EXPECT_EQ(barrier.on_ack("b", 1, 0), Ack::Counted);
+  EXPECT_TRUE(barrier.complete(1));
+  EXPECT_EQ(barrier.expire(1, 200.0, 2.0), Names{});
+  barrier.end_tick(1);
+  barrier.begin_tick(2, 100.1);
+  EXPECT_EQ(barrier.on_ack("a", 2, 0), Ack::Counted);
+  EXPECT_EQ(barrier.on_ack("b", 2, 0), Ack::Counted);
+  EXPECT_FALSE(barrier.complete(2));
+  EXPECT_EQ(barrier.on_ack("c", 2, 0), Ack::Counted);
+  EXPECT_TRUE(barrier.complete(2));
+}
+
+TEST(BarrierWithoutParticipants, CompletesAtOnce) {
+  LockstepBarrier barrier;
+  barrier.begin_tick(0, 0.0);
+  EXPECT_TRUE(barrier.complete(0));
+  EXPECT_EQ(barrier.expire(0, 10.0, 2.0), Names{});
+}
+
+}  // namespace
+}  // namespace autonomy::sim

@@ -1,0 +1,48 @@
+// The simulator process: owns the world's ground truth and its clock.
+#include "simulator/dds/simulator_node.hpp"
+#include "simulator/scenario/builtin_scenario.hpp"
+#include "simulator/scenario/scenario_loader.hpp"
+
+#include <iostream>
+#include <memory>
+
+using namespace autonomy;
+
+int main(int argc, char** argv) {
+  std::vector<std::string> wait_for;
+  int64_t max_ticks = 0;
+  std::string trajectory;
+  std::string mode_override;
+  return service::run_service(
+      argc, argv, "simulator", "World and clock simulator: robots, obstacles, lockstep or paced time",
+      service::InstanceFlag::Instance,
+      [&](CLI::App& app) {
+        app.add_option("--wait-for", wait_for,
+                       "Hold tick 0 until these lockstep participants registered (e.g. behavior/r1)");
+        app.add_option("--max-ticks", max_ticks, "Stop after this many ticks (0: run until stopped)")
+            ->check(CLI::NonNegativeNumber);
+        app.add_option("--trajectory", trajectory, "Write every robot's pose per tick to this CSV file");
+        app.add_option("--mode", mode_override, "Override the scenario's clock mode")
+            ->check(CLI::IsMember({"lockstep", "paced"}));
+        app.footer("Without --config the built-in demo scenario (deploy/scenarios/demo.pbtxt) runs.");
+      },
+      [&](service::Service& service) {
+        const auto& config = service.options().config_file;
+        sim::ScenarioLoadResult loaded =
+            config.empty() ? sim::load_scenario_text(std::string(sim::builtin_default_scenario()),
+                                                     std::string(sim::kBuiltinScenarioSource))
+                           : sim::load_scenario_file(config);
+        if (!loaded.ok()) {
+          std::cerr << loaded.error_text();
+          throw std::runtime_error("scenario has " + std::to_string(loaded.errors.size()) + " error(s)");
+        }
+        sim::SimulatorRunOptions run;
+        run.settings = loaded.scenario->simulation;
+        if (mode_override == "lockstep") run.settings.mode = sim::ClockMode::Lockstep;
+        if (mode_override == "paced") run.settings.mode = sim::ClockMode::Paced;
+        run.wait_for_participants = wait_for;
+        if (max_ticks > 0) run.max_ticks = max_ticks;
+        run.trajectory_csv = trajectory;
+        return std::make_unique<sim::SimulatorNode>(service, sim::World(loaded.scenario->world), run);
+      });
+}

@@ -1,0 +1,36 @@
+#pragma once
+// Loading scenario files (protobuf text format, schema idl/scenario.proto) at the edge: syntax
+// and meaning are both checked here, every problem is reported with its file position, and only
+// plain structs go inward. Cores never see protobuf types.
+#include "simulator/core/world_spec.hpp"
+#include "simulator/scenario/scenario_error.hpp"
+#include "simulator/scenario/simulation_settings.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace autonomy::sim {
+
+struct Scenario {
+  WorldSpec world;  // world.name is the scenario name
+  SimulationSettings simulation;
+};
+
+struct [[nodiscard]] ScenarioLoadResult {
+  std::optional<Scenario> scenario;  // set exactly when errors is empty
+  // A syntax error stops parsing, so it comes alone; otherwise every semantic problem found,
+  // ordered by position.
+  std::vector<ScenarioError> errors;
+
+  bool ok() const { return errors.empty(); }
+  std::string error_text() const;  // one error per line, for logs and stderr
+};
+
+// `source_name` names the text in errors (a path, or kBuiltinScenarioSource).
+ScenarioLoadResult load_scenario_text(const std::string& text, const std::string& source_name);
+
+// Reads `path` and loads it; `path` as given is the source name in errors.
+ScenarioLoadResult load_scenario_file(const std::string& path);
+
+}  // namespace autonomy::sim
