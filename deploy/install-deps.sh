@@ -16,8 +16,8 @@ packages=(
   libcli11-dev nlohmann-json3-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
-  # wire inspection for the demo's packet capture
-  tshark procps iproute2
+  # wire inspection (packet capture of the demo) and the demo script's JSON reading
+  tshark procps iproute2 jq
 )
 
 missing=()

@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> wait_for;
   int64_t max_ticks = 0;
   std::string trajectory;
+  std::string picture;
   std::string mode_override;
   return service::run_service(
       argc, argv, "simulator", "World and clock simulator: robots, obstacles, lockstep or paced time",
@@ -22,6 +23,7 @@ int main(int argc, char** argv) {
         app.add_option("--max-ticks", max_ticks, "Stop after this many ticks (0: run until stopped)")
             ->check(CLI::NonNegativeNumber);
         app.add_option("--trajectory", trajectory, "Write every robot's pose per tick to this CSV file");
+        app.add_option("--svg", picture, "Write an SVG picture of the run (map and robot paths) at exit");
         app.add_option("--mode", mode_override, "Override the scenario's clock mode")
             ->check(CLI::IsMember({"lockstep", "paced"}));
         app.footer("Without --config the built-in demo scenario (deploy/scenarios/demo.pbtxt) runs.");
@@ -43,6 +45,7 @@ int main(int argc, char** argv) {
         run.wait_for_participants = wait_for;
         if (max_ticks > 0) run.max_ticks = max_ticks;
         run.trajectory_csv = trajectory;
+        run.picture_svg = picture;
         return std::make_unique<sim::SimulatorNode>(service, sim::World(loaded.scenario->world), run);
       });
 }

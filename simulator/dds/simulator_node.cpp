@@ -1,5 +1,7 @@
 #include "simulator/dds/simulator_node.hpp"
 
+#include "simulator/report/run_svg.hpp"
+
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
@@ -90,6 +92,7 @@ SimulatorNode::SimulatorNode(service::Service& service, World world, SimulatorRu
 SimulatorNode::~SimulatorNode() {
   try {
     publish_status();
+    write_picture();
     spdlog::info("stopped at tick {}: {} commands applied, {} rejected, {} participants dropped", tick_,
                  commands_applied_, commands_rejected_, participants_dropped_);
   } catch (const std::exception& e) {
@@ -256,9 +259,24 @@ void SimulatorNode::open_tick() {
 void SimulatorNode::publish_robot_state(const RobotStatus& r) {
   const int64_t now_ns = to_ns(static_cast<double>(tick_) * options_.settings.step_s);
   state_writer_.write(to_msg(r, tick_, now_ns));
+  if (!options_.picture_svg.empty()) paths_.record(r.id, r.pose.position());
   if (trajectory_.is_open())
     trajectory_ << tick_ << ',' << static_cast<double>(now_ns) * 1e-9 << ',' << r.id << ',' << r.pose.x << ','
                 << r.pose.y << ',' << r.pose.theta << '\n';
+}
+
+void SimulatorNode::write_picture() const {
+  if (options_.picture_svg.empty()) return;
+  RunPicture picture;
+  picture.world = &world_.spec();
+  picture.paths = paths_.paths();
+  picture.final_robots = world_.robots();
+  picture.caption = world_.spec().name + ", tick " + std::to_string(tick_) + " (" +
+                    std::to_string(static_cast<int>(world_.time_s())) + " s simulated)";
+  std::ofstream out(options_.picture_svg);
+  out << render_run_svg(picture);
+  if (!out) throw std::runtime_error("cannot write " + options_.picture_svg);
+  spdlog::info("picture of the run written to {}", options_.picture_svg);
 }
 
 void SimulatorNode::publish_status() {

@@ -12,6 +12,7 @@
 #include "common/service/service.hpp"
 #include "simulator/core/lockstep_barrier.hpp"
 #include "simulator/core/world.hpp"
+#include "simulator/report/trajectory_recorder.hpp"
 #include "simulator/scenario/simulation_settings.hpp"
 
 #include <chrono>
@@ -31,6 +32,7 @@ struct SimulatorRunOptions {
   std::vector<std::string> wait_for_participants;
   std::optional<int64_t> max_ticks;  // stop the service after this tick
   std::string trajectory_csv;         // tick,time_s,robot,x,y,theta per robot per tick, if set
+  std::string picture_svg;            // an SVG picture of the run written at exit, if set
 };
 
 class SimulatorNode {
@@ -54,6 +56,7 @@ class SimulatorNode {
   void open_tick();  // publishes state and clock of tick_, starts the barrier's tick
   void publish_robot_state(const RobotStatus& robot);
   void publish_status();
+  void write_picture() const;
   void reject(const msg::VelocityCommand& command, const std::string& reason);
 
   service::Service& service_;
@@ -72,6 +75,7 @@ class SimulatorNode {
   uint64_t participants_dropped_ = 0;
   double step_compute_us_total_ = 0.0;
   std::ofstream trajectory_;
+  TrajectoryRecorder paths_;
   bool finished_ = false;
 
   dds::Topic<msg::SimClock> clock_topic_;

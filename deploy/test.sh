@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Installs the dependencies, builds, and runs every test (unit and integration, with real DDS
+# processes on loopback). --sanitize builds and tests the ASan + UBSan configuration instead;
+# --all runs both configurations one after the other.
+set -euo pipefail
+repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+
+configs=(plain)
+case ${1:-} in
+  "") ;;
+  --sanitize) configs=(sanitize) ;;
+  --all) configs=(plain sanitize) ;;
+  *) echo "test: unknown option $1 (use --sanitize or --all)" >&2; exit 2 ;;
+esac
+
+bash "$repo/deploy/install-deps.sh"
+for c in "${configs[@]}"; do
+  if [ "$c" = sanitize ]; then
+    echo "== ASan + UBSan build and tests"
+    bash "$repo/deploy/build.sh" --sanitize
+    dir="$repo/build-asan"
+    export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
+    export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+  else
+    echo "== build and tests"
+    bash "$repo/deploy/build.sh"
+    dir="$repo/build"
+  fi
+  # Two cores: two tests at a time. Integration tests use one DDS domain each, so they can overlap.
+  ctest --test-dir "$dir" --parallel 2 --output-on-failure --timeout 300
+done
