@@ -58,6 +58,7 @@ class Reader {
       void* buffers[kBatch] = {nullptr};  // nullptr asks Cyclone to loan its own samples
       dds_sample_info_t infos[kBatch];
       const dds_return_t n = check(op(any_data_.handle(), buffers, infos, kBatch, kBatch), "dds_take/dds_read");
+      if (out.empty()) out.reserve(static_cast<size_t>(n));  // one allocation, not log2(n) regrowths
       for (dds_return_t i = 0; i < n; ++i) {
         Sample<T> s{DdsType<T>::from_c(*static_cast<const C*>(buffers[i]))};
         s.valid = infos[i].valid_data;

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Builds the benchmarks in Release (build-bench/) and runs them, printing their figures.
+#   bench/run.sh            full runs (about 1 to 2 minutes)
+#   bench/run.sh --quick    short runs, for a smoke test
+# Environment: BUILD_DIR (default <repo>/build-bench), BENCH_DOMAIN (default 160; the lockstep
+# bench uses the next few ids too, up to 169), CYCLONEDDS_URI (default: the loopback profile),
+# LOCKSTEP_DDS_EXTRA (a Cyclone config snippet to compare against the default, optional).
+# The figures are noisy on a shared 2-core machine: read the ratios measured in the same run.
+set -euo pipefail
+
+repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${BUILD_DIR:-$repo/build-bench}"
+domain="${BENCH_DOMAIN:-160}"
+export CYCLONEDDS_URI="${CYCLONEDDS_URI:-file://$repo/deploy/dds/loopback.xml}"
+
+quick=()
+if [[ "${1:-}" == "--quick" ]]; then quick=(--quick); fi
+
+cmake -S "$repo" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+ninja -C "$build" dds_layer_bench lockstep_bench simulator behavior
+
+echo "load average: $(cut -d' ' -f1-3 /proc/loadavg), $(nproc) cores, CYCLONEDDS_URI=$CYCLONEDDS_URI"
+"$build/bin/dds_layer_bench" --domain "$domain" "${quick[@]}"
+extra=()
+if [[ -n "${LOCKSTEP_DDS_EXTRA:-}" ]]; then extra=(--dds-extra "$LOCKSTEP_DDS_EXTRA"); fi
+"$build/bin/lockstep_bench" --domain "$((domain + 1))" "${quick[@]}" "${extra[@]}"
