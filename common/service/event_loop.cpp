@@ -32,7 +32,10 @@ void EventLoop::run_due_timers() {
   const auto now = Clock::now();
   for (auto& t : timers_) {
     if (t.due > now) continue;
-    t.due = std::max(t.due + t.period, now);
+    // Next due time on the timer's own phase, after now: missed periods are skipped, so a late
+    // timer runs once (due = now would run it again at once, a burst of two).
+    t.due += t.period;
+    if (t.due <= now) t.due += ((now - t.due) / t.period + 1) * t.period;
     t.handler();
   }
 }

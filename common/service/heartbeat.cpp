@@ -10,10 +10,18 @@ std::string host_name() {
   return name;
 }
 
+namespace {
+dds::Qos heartbeat_writer_qos() {
+  dds::Qos q = dds::make_qos(dds::topics::heartbeat.qos);
+  dds_qset_writer_data_lifecycle(q.get(), false);  // see ~HeartbeatPublisher
+  return q;
+}
+}  // namespace
+
 HeartbeatPublisher::HeartbeatPublisher(const dds::Participant& participant, std::string service,
                                        std::string instance, std::chrono::milliseconds period)
     : topic_(participant, dds::topics::heartbeat),
-      writer_(participant, topic_),
+      writer_(participant, topic_, heartbeat_writer_qos().get()),
       period_(period),
       started_(std::chrono::steady_clock::now()) {
   beat_.service = std::move(service);
@@ -21,6 +29,13 @@ HeartbeatPublisher::HeartbeatPublisher(const dds::Participant& participant, std:
   beat_.host = host_name();
   beat_.pid = static_cast<int32_t>(getpid());
   beat_.period_ms = static_cast<uint32_t>(period.count());
+}
+
+HeartbeatPublisher::~HeartbeatPublisher() {
+  try {
+    writer_.dispose(beat_);
+  } catch (...) {  // never throw from a destructor; the instance then ends as "lost"
+  }
 }
 
 void HeartbeatPublisher::set_state(msg::ServiceState state) {

@@ -12,6 +12,12 @@ class HeartbeatPublisher {
  public:
   HeartbeatPublisher(const dds::Participant& participant, std::string service, std::string instance,
                      std::chrono::milliseconds period);
+  // Disposes this process's instance: a clean stop. The writer does not dispose by itself, so
+  // a killed process's instance goes NOT_ALIVE_NO_WRITERS when its lease expires ("lost" in
+  // `autonomy node list -a`) instead of looking like a clean stop.
+  ~HeartbeatPublisher();
+  HeartbeatPublisher(const HeartbeatPublisher&) = delete;
+  HeartbeatPublisher& operator=(const HeartbeatPublisher&) = delete;
 
   // Publishes at once when the state changes, so readiness is seen without waiting a period.
   void set_state(msg::ServiceState state);

@@ -1,0 +1,225 @@
+#pragma once
+// Shared by the tests of common/: sample values of every message (every field distinct and not
+// its default), a field-wise view for comparing them, and the loopback DDS profile.
+#include "common/msg/clock.hpp"
+#include "common/msg/navigation.hpp"
+#include "common/msg/robot.hpp"
+#include "common/msg/simulation.hpp"
+#include "common/msg/system.hpp"
+
+#include <array>
+#include <chrono>
+#include <cstdlib>
+#include <functional>
+#include <string>
+#include <thread>
+#include <tuple>
+#include <vector>
+
+namespace autonomy::test {
+
+// Strings used in the "full" variants: non-ASCII UTF-8 of several byte lengths.
+inline const std::string kUtf8A = "r\xC3\xB6" "bot-\xE3\x83\xAD\xE3\x83\x9C";  // "röbot-ロボ"
+inline const std::string kUtf8B = "\xF0\x9F\xA4\x96 source \xE2\x9C\x93";     // "🤖 source ✓"
+inline const std::string kUtf8C = "Gr\xC3\xBC\xC3\x9F" "e \xCE\xB1\xCE\xB2";  // "Grüße αβ"
+
+// Full: non-empty (non-ASCII) strings and sequences of several elements. Empty: every string
+// and sequence empty, the other fields still distinct and non-default.
+enum class Variant { Full, Empty };
+
+inline std::string s(Variant v, const std::string& text) { return v == Variant::Full ? text : std::string(); }
+
+inline msg::Heartbeat make_heartbeat(Variant v) {
+  msg::Heartbeat m;
+  m.service = s(v, kUtf8A);
+  m.instance = s(v, kUtf8B);
+  m.host = s(v, kUtf8C);
+  m.pid = 4242;
+  m.state = msg::ServiceState::Stopping;
+  m.uptime_s = 12.75;
+  m.period_ms = 333;
+  return m;
+}
+
+inline msg::SimClock make_sim_clock(Variant) {
+  msg::SimClock m;
+  m.tick = 7'000'000'001;
+  m.sim_time_ns = 123'456'789'012;
+  m.step_ns = 20'000'001;
+  m.mode = msg::ClockMode::Paced;
+  m.warp = 2.5;
+  return m;
+}
+
+inline msg::LockstepRegistration make_registration(Variant v) {
+  msg::LockstepRegistration m;
+  m.participant = s(v, kUtf8A);
+  m.active = false;  // default is true
+  return m;
+}
+
+inline msg::TickAck make_tick_ack(Variant v) {
+  msg::TickAck m;
+  m.participant = s(v, kUtf8B);
+  m.tick = -5'000'000'003;
+  m.commands_sent = 4'000'000'000u;
+  return m;
+}
+
+inline msg::RobotState make_robot_state(Variant v) {
+  msg::RobotState m;
+  m.robot_id = s(v, kUtf8A);
+  m.tick = 101;
+  m.sim_time_ns = 202'000'000'003;
+  m.x = 1.25;
+  m.y = -2.5;
+  m.theta = 0.375;
+  m.vx = 0.5;
+  m.vy = -0.625;
+  m.omega = 0.0625;
+  m.kinematics = msg::Kinematics::Unicycle;
+  m.radius = 0.3;
+  m.max_speed = 1.75;
+  m.max_omega = 2.25;
+  m.in_collision = true;
+  return m;
+}
+
+inline msg::VelocityCommand make_velocity_command(Variant v) {
+  msg::VelocityCommand m;
+  m.robot_id = s(v, kUtf8A);
+  m.source = s(v, kUtf8B);
+  m.tick = 303;
+  m.vx = 0.11;
+  m.vy = -0.22;
+  m.omega = 0.33;
+  return m;
+}
+
+inline msg::CommandRejection make_command_rejection(Variant v) {
+  msg::CommandRejection m;
+  m.robot_id = s(v, kUtf8A);
+  m.source = s(v, kUtf8B);
+  m.tick = 404;
+  m.reason = s(v, kUtf8C);
+  return m;
+}
+
+inline msg::SpawnRequest make_spawn_request(Variant v) {
+  msg::SpawnRequest m;
+  m.request_id = s(v, kUtf8A);
+  m.requester = s(v, kUtf8B);
+  m.robot_id = s(v, kUtf8C);
+  m.has_pose = true;
+  m.x = 3.5;
+  m.y = -4.5;
+  m.theta = -1.5;
+  return m;
+}
+
+inline msg::SpawnReply make_spawn_reply(Variant v) {
+  msg::SpawnReply m;
+  m.request_id = s(v, kUtf8A);
+  m.robot_id = s(v, kUtf8B);
+  m.status = msg::RequestStatus::Accepted;  // default is Rejected
+  m.reason = s(v, kUtf8C);
+  return m;
+}
+
+inline msg::WorldMap make_world_map(Variant v) {
+  msg::WorldMap m;
+  m.name = s(v, kUtf8C);
+  m.width = 40.5;
+  m.height = 30.25;
+  if (v == Variant::Full) m.obstacles = {{1.0, 2.0, 3.0, 4.0}, {5.5, 6.5, 7.5, 8.5}, {-1.0, -2.0, 0.5, 0.25}};
+  return m;
+}
+
+inline msg::SimulatorStatus make_sim_status(Variant v) {
+  msg::SimulatorStatus m;
+  m.tick = 505;
+  m.sim_time_ns = 606'000'000'007;
+  m.robots = 3;
+  if (v == Variant::Full) m.lockstep_participants = {kUtf8A, "", "behavior/r2", kUtf8B};
+  m.commands_applied = 10'000'000'000ull;
+  m.commands_rejected = 11;
+  m.participants_dropped = 12;
+  m.mean_step_us = 45.5;
+  return m;
+}
+
+inline msg::NavGoal make_nav_goal(Variant v) {
+  msg::NavGoal m;
+  m.robot_id = s(v, kUtf8A);
+  m.goal_id = s(v, kUtf8B);
+  m.x = 9.5;
+  m.y = -8.25;
+  m.tolerance = 0.125;
+  return m;
+}
+
+inline msg::GoalStatus make_goal_status(Variant v) {
+  msg::GoalStatus m;
+  m.robot_id = s(v, kUtf8A);
+  m.goal_id = s(v, kUtf8B);
+  m.state = msg::GoalState::Preempted;
+  m.reason = s(v, kUtf8C);
+  m.tick = 707;
+  m.distance_to_goal = 6.125;
+  return m;
+}
+
+// Field-wise views: tuples compare with == and GoogleTest prints them field by field.
+inline auto fields(const msg::Heartbeat& m) {
+  return std::make_tuple(m.service, m.instance, m.host, m.pid, static_cast<int>(m.state), m.uptime_s, m.period_ms);
+}
+inline auto fields(const msg::SimClock& m) {
+  return std::make_tuple(m.tick, m.sim_time_ns, m.step_ns, static_cast<int>(m.mode), m.warp);
+}
+inline auto fields(const msg::LockstepRegistration& m) { return std::make_tuple(m.participant, m.active); }
+inline auto fields(const msg::TickAck& m) { return std::make_tuple(m.participant, m.tick, m.commands_sent); }
+inline auto fields(const msg::RobotState& m) {
+  return std::make_tuple(m.robot_id, m.tick, m.sim_time_ns, m.x, m.y, m.theta, m.vx, m.vy, m.omega,
+                         static_cast<int>(m.kinematics), m.radius, m.max_speed, m.max_omega, m.in_collision);
+}
+inline auto fields(const msg::VelocityCommand& m) {
+  return std::make_tuple(m.robot_id, m.source, m.tick, m.vx, m.vy, m.omega);
+}
+inline auto fields(const msg::CommandRejection& m) { return std::make_tuple(m.robot_id, m.source, m.tick, m.reason); }
+inline auto fields(const msg::SpawnRequest& m) {
+  return std::make_tuple(m.request_id, m.requester, m.robot_id, m.has_pose, m.x, m.y, m.theta);
+}
+inline auto fields(const msg::SpawnReply& m) {
+  return std::make_tuple(m.request_id, m.robot_id, static_cast<int>(m.status), m.reason);
+}
+inline auto fields(const msg::WorldMap& m) {
+  std::vector<std::array<double, 4>> rects;
+  for (const auto& r : m.obstacles) rects.push_back({r.min_x, r.min_y, r.max_x, r.max_y});
+  return std::make_tuple(m.name, m.width, m.height, rects);
+}
+inline auto fields(const msg::SimulatorStatus& m) {
+  return std::make_tuple(m.tick, m.sim_time_ns, m.robots, m.lockstep_participants, m.commands_applied,
+                         m.commands_rejected, m.participants_dropped, m.mean_step_us);
+}
+inline auto fields(const msg::NavGoal& m) { return std::make_tuple(m.robot_id, m.goal_id, m.x, m.y, m.tolerance); }
+inline auto fields(const msg::GoalStatus& m) {
+  return std::make_tuple(m.robot_id, m.goal_id, static_cast<int>(m.state), m.reason, m.tick, m.distance_to_goal);
+}
+
+#ifdef AUTONOMY_LOOPBACK_URI
+// The loopback Cyclone profile (deploy/dds/loopback.xml); call before creating a participant.
+inline void use_loopback_profile() { ::setenv("CYCLONEDDS_URI", AUTONOMY_LOOPBACK_URI, 1); }
+#endif
+
+// Polls pred every 2 ms until it holds or timeout passes; returns its last value.
+inline bool eventually(const std::function<bool()>& pred,
+                       std::chrono::milliseconds timeout = std::chrono::milliseconds(2000)) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  for (;;) {
+    if (pred()) return true;
+    if (std::chrono::steady_clock::now() >= deadline) return pred();
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+}
+
+}  // namespace autonomy::test
