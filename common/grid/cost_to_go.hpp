@@ -21,9 +21,10 @@
 //   The field is the shortest-path distance of that graph in the float arithmetic above: it is
 //   bit-for-bit the field a textbook Dijkstra (std::priority_queue, float labels, same step
 //   function) computes, see reference_dijkstra(). Against the same search in double the difference
-//   is float rounding only (accumulated along a path: relative error well under 1e-5 on 4000 x 4000
-//   maps). Unreachable and blocked cells hold +inf. The guarantee holds while costs stay below
-//   2^20 * res (a million straight steps); beyond that, float cannot add one step reliably anyway.
+//   is float rounding only, accumulated along a path: measured max relative difference 1e-6 on
+//   250 x 250, 5e-6 on 1000 x 1000 and 2e-5 on 4000 x 4000 maps (field_bench). Unreachable and
+//   blocked cells hold +inf in both. The guarantee holds while costs stay below 2^20 * res (a
+//   million straight steps); beyond that, float cannot add one step reliably anyway.
 //
 // Why it is fast (see the .cpp for the reasoning)
 //   Every step costs at least res, so a bucket queue whose buckets are res/4 wide is exactly
@@ -34,7 +35,17 @@
 //   or obstacle tests; the same byte, cleared, marks the cell as expanded.
 //
 // Memory: output (4 bytes/cell) + move masks (1 byte/cell) + the bucket ring, which only holds the
-// search frontier. FieldStats::work_bytes reports the peak exactly.
+// search frontier (measured 0.02-0.3 bytes/cell on random-rectangle maps); FieldStats::work_bytes
+// reports the total the computation holds, output included: 5.0-5.3 bytes/cell, under the 8-byte
+// budget. The input raster is 1 bit per cell.
+//
+// Speed (field_bench, 2-core VM shared with other builds, 15 % random rectangles): 6.2-7.3x less
+// CPU time than the textbook Dijkstra at 250^2, 1000^2 and 4000^2 (about 0.8 ms, 17 ms and
+// 0.35 s against 5.6 ms, 110 ms and 2.2 s).
+//
+// Layers: the same bucket queue, with one candidate and bucket per move; when a layer's largest
+// step would need a ring longer than min(4096, cells / 128) buckets (about 1000 resolutions on big
+// maps), an exact binary heap over the same masks runs instead.
 #include "common/geometry/geometry.hpp"
 #include "common/grid/occupancy_raster.hpp"
 
@@ -83,7 +94,9 @@ class CostField {
   double resolution_m() const { return resolution_m_; }
   Cell goal() const { return goal_; }
 
-  bool contains(Cell c) const { return c.col >= 0 && c.row >= 0 && c.col < width_ && c.row < height_; }
+  bool contains(Cell c) const {
+    return c.col >= 0 && c.row >= 0 && c.col < width_ && c.row < height_;
+  }
   // +inf outside the raster, on blocked cells and where no route exists.
   float cost(Cell c) const {
     return contains(c) ? costs_[static_cast<std::size_t>(c.row) * static_cast<std::size_t>(width_) +
@@ -114,9 +127,10 @@ class CostField {
 
 enum class FieldStatus {
   kOk,
-  kGoalOutside,   // the goal cell is not in the raster
-  kGoalBlocked,   // the goal cell is blocked
-  kBadLayer,      // a layer has the wrong size, a negative / non-finite value or gain
+  kGoalOutside,  // the goal cell is not in the raster
+  kGoalBlocked,  // the goal cell is blocked
+  kBadLayer,     // a layer has the wrong size, a negative / non-finite value or gain
+  kTooLarge,     // more than 2^32 - 1 cells (the queue stores 32-bit cell indices)
 };
 
 const char* to_string(FieldStatus s);
@@ -124,11 +138,11 @@ const char* to_string(FieldStatus s);
 struct FieldStats {
   std::size_t cells = 0;
   std::size_t reachable = 0;
-  std::size_t expanded = 0;      // cells popped and expanded (== reachable)
-  std::size_t pushes = 0;        // queue insertions (the goal included)
-  std::size_t buckets = 0;       // bucket-ring size (0 when the heap fallback ran)
-  bool heap_fallback = false;    // layers so expensive that the ring would be too long
-  std::size_t work_bytes = 0;    // peak heap bytes held by the computation, output included
+  std::size_t expanded = 0;    // cells popped and expanded (== reachable)
+  std::size_t pushes = 0;      // queue insertions (the goal included)
+  std::size_t buckets = 0;     // bucket-ring size (0 when the heap fallback ran)
+  bool heap_fallback = false;  // layers so expensive that the ring would be too long
+  std::size_t work_bytes = 0;  // peak heap bytes held by the computation, output included
 };
 
 struct [[nodiscard]] FieldResult {

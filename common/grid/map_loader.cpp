@@ -83,9 +83,12 @@ PgmResult parse_pgm(const std::string& bytes, const std::string& name) {
   PgmHeaderReader in(bytes);
   in.advance(2);
   long width = 0, height = 0, maxval = 0;
-  if (!in.number(1L << 20, width) || width == 0) return fail("bad header: missing or invalid width");
-  if (!in.number(1L << 20, height) || height == 0) return fail("bad header: missing or invalid height");
-  if (width * height > kMaxPixels) return fail("image too large (" + std::to_string(width) + " x " + std::to_string(height) + ")");
+  if (!in.number(1L << 20, width) || width == 0)
+    return fail("bad header: missing or invalid width");
+  if (!in.number(1L << 20, height) || height == 0)
+    return fail("bad header: missing or invalid height");
+  if (width * height > kMaxPixels)
+    return fail("image too large (" + std::to_string(width) + " x " + std::to_string(height) + ")");
   if (!in.number(65535, maxval) || maxval == 0) return fail("bad header: maxval must be 1..65535");
 
   PgmImage img;
@@ -124,8 +127,8 @@ PgmResult parse_pgm(const std::string& bytes, const std::string& name) {
       if (!in.number(std::numeric_limits<long>::max() / 16, v)) {
         in.skip_space_and_comments();
         if (in.at_end()) {
-          return fail("truncated pixel data: expected " + std::to_string(count) + " samples, found " +
-                      std::to_string(i));
+          return fail("truncated pixel data: expected " + std::to_string(count) +
+                      " samples, found " + std::to_string(i));
         }
         return fail("bad sample " + std::to_string(i) + ": not a number");
       }
@@ -159,8 +162,9 @@ OccupancyMap occupancy_from_image(const PgmImage& image, double resolution_m, Ra
   for (int y = 0; y < image.height; ++y) {
     const int row = image.height - 1 - y;  // first image row = top = highest raster row
     for (int x = 0; x < image.width; ++x) {
-      const double v = image.pixels[static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) +
-                                    static_cast<std::size_t>(x)];
+      const double v =
+          image.pixels[static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) +
+                       static_cast<std::size_t>(x)];
       const double p = md.negate ? v / maxval : (maxval - v) / maxval;
       if (p < md.free_thresh) {
         ++md.free_cells;
@@ -231,8 +235,8 @@ MapLoadResult load_ros_map(const std::string& yaml_path) {
   const YAML::Node origin = root["origin"];
   if (!origin) return missing("origin");
   RasterOrigin o;
-  if (!origin.IsSequence() || origin.size() != 3 || !number(origin[0], o.x) || !number(origin[1], o.y) ||
-      !number(origin[2], o.yaw)) {
+  if (!origin.IsSequence() || origin.size() != 3 || !number(origin[0], o.x) ||
+      !number(origin[1], o.y) || !number(origin[2], o.yaw)) {
     return bad(origin, "'origin' must be a list of three numbers [x, y, yaw]");
   }
 

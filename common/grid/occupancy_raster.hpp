@@ -3,7 +3,8 @@
 //
 // Orientation: row 0 is the bottom row (lowest world y), as in ROS's nav_msgs/OccupancyGrid and
 // the behavior controller's grid. Cell (col, row) covers, in the map frame,
-//   [origin.x + col * res, origin.x + (col + 1) * res) x [origin.y + row * res, origin.y + (row + 1) * res)
+//   [origin.x + col * res, origin.x + (col + 1) * res) x [origin.y + row * res, origin.y + (row +
+//   1) * res)
 // rotated by origin.yaw about (origin.x, origin.y). An image loaded from a ROS map (whose first
 // pixel row is the top) is therefore flipped on load; see map_loader.hpp.
 //
@@ -24,7 +25,8 @@ struct Cell {
   bool operator!=(const Cell& o) const { return !(*this == o); }
 };
 
-// Pose of cell (0, 0)'s outer corner in the map frame, as in a ROS map YAML's `origin: [x, y, yaw]`.
+// Pose of cell (0, 0)'s outer corner in the map frame, as in a ROS map YAML's `origin: [x, y,
+// yaw]`.
 struct RasterOrigin {
   double x = 0.0;
   double y = 0.0;
@@ -44,7 +46,9 @@ class OccupancyRaster {
   std::size_t cell_count() const {
     return static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_);
   }
-  bool contains(Cell c) const { return c.col >= 0 && c.row >= 0 && c.col < width_ && c.row < height_; }
+  bool contains(Cell c) const {
+    return c.col >= 0 && c.row >= 0 && c.col < width_ && c.row < height_;
+  }
   // Row-major, row 0 first: the layout of every per-cell array in this library.
   std::size_t index(Cell c) const {
     assert(contains(c));
@@ -58,6 +62,8 @@ class OccupancyRaster {
     return (row_words(c.row)[static_cast<std::size_t>(c.col) >> 6] >> (c.col & 63)) & 1u;
   }
   void set_blocked(Cell c, bool blocked);
+  // The same cells with another cell size (e.g. 1.0 to measure costs in cells).
+  OccupancyRaster with_resolution(double resolution_m) const;
   std::size_t blocked_count() const;
 
   // Bit i of word i / 64 is cell (i, row); bits past width() are zero. For whole-row algorithms.

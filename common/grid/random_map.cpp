@@ -6,14 +6,17 @@
 
 namespace autonomy::grid {
 
-OccupancyRaster random_rectangles(int width, int height, double blocked_fraction, std::uint64_t seed,
-                                  double resolution_m) {
+OccupancyRaster random_rectangles(int width, int height, double blocked_fraction,
+                                  std::uint64_t seed, double resolution_m) {
   OccupancyRaster r(width, height, resolution_m);
   if (width <= 0 || height <= 0) return r;
   std::mt19937_64 rng(seed);
-  const auto uniform = [&rng](std::uint64_t n) { return static_cast<int>(rng() % n); };  // tiny bias is fine
+  const auto uniform = [&rng](std::uint64_t n) {
+    return static_cast<int>(rng() % n);
+  };  // tiny bias is fine
   const int max_side = std::max(2, std::min(width, height) / 25);
-  const auto target = static_cast<std::size_t>(blocked_fraction * static_cast<double>(r.cell_count()));
+  const auto target =
+      static_cast<std::size_t>(blocked_fraction * static_cast<double>(r.cell_count()));
   const Cell goal = random_map_goal(r);
   std::size_t blocked = 0;
   // Count as we go; 100 tries per cell bound the loop if the target is unreachable.
@@ -35,6 +38,8 @@ OccupancyRaster random_rectangles(int width, int height, double blocked_fraction
   return r;
 }
 
-Cell random_map_goal(const OccupancyRaster& raster) { return {raster.width() / 2, raster.height() / 2}; }
+Cell random_map_goal(const OccupancyRaster& raster) {
+  return {raster.width() / 2, raster.height() / 2};
+}
 
 }  // namespace autonomy::grid

@@ -11,8 +11,8 @@ namespace autonomy::grid {
 
 // Rectangles have sides of 1 .. max(2, min(width, height) / 25) cells. The cell returned by
 // random_map_goal is kept free (a 3 x 3 patch around the centre is cleared).
-OccupancyRaster random_rectangles(int width, int height, double blocked_fraction, std::uint64_t seed,
-                                  double resolution_m = 1.0);
+OccupancyRaster random_rectangles(int width, int height, double blocked_fraction,
+                                  std::uint64_t seed, double resolution_m = 1.0);
 
 // The centre cell, which random_rectangles keeps free.
 Cell random_map_goal(const OccupancyRaster& raster);

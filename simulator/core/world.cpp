@@ -50,6 +50,19 @@ World::World(WorldSpec spec) : spec_(std::move(spec)) {
   if (!(spec_.width > 0.0) || !(spec_.height > 0.0)) {
     throw std::invalid_argument("world size must be positive");
   }
+  map_ = ObstacleMap(spec_.width, spec_.height, spec_.obstacles, spec_.polygons, spec_.rasters);
+  for (std::size_t i = 0; i < spec_.doors.size(); ++i) {
+    const DoorSpec& d = spec_.doors[i];
+    if (const auto problem = door_problem(d)) throw std::invalid_argument("door " + d.id + ": " + *problem);
+    for (std::size_t j = 0; j < i; ++j) {
+      if (spec_.doors[j].id == d.id) throw std::invalid_argument("duplicate door id " + d.id);
+    }
+    Door door;
+    door.angle = door.target = d.angle;
+    door.leaf = d.leaf(d.angle);
+    door.schedule = DoorSchedule(d.schedule, d.angle, Rng::stream(spec_.seed, "door/" + d.id));
+    doors_.push_back(std::move(door));
+  }
   if (!(spec_.command_timeout_s > 0.0)) {
     throw std::invalid_argument("command timeout must be positive");
   }
@@ -79,8 +92,9 @@ std::optional<std::string> World::placement_problem(const std::string& self,
     return "does not fit inside the world [0, " + format_number(spec_.width) + "] x [0, " +
            format_number(spec_.height) + "]";
   }
-  if (const auto i = overlapping_obstacle(spec_.obstacles, center, radius)) {
-    return "overlaps obstacle " + std::to_string(*i);
+  if (const auto hit = map_.overlap(center, radius)) return "overlaps " + map_.describe(*hit);
+  for (std::size_t i = 0; i < doors_.size(); ++i) {
+    if (disc_overlaps_leaf(doors_[i].leaf, center, radius)) return "overlaps door " + spec_.doors[i].id;
   }
   for (const auto& [id, other] : robots_) {
     if (id != self &&
@@ -124,6 +138,12 @@ SpawnResult World::spawn(const std::string& id, std::optional<geometry::Pose2> p
   robot.status.radius = body.radius;
   robot.status.max_speed = body.max_speed;
   robot.status.max_omega = body.max_omega;
+  robot.body = body;
+  robot.body.id = id;
+  robot.noise = Rng::stream(spec_.seed, "robot/" + id);
+  if (body.sensors.range.rays > 0 && body.sensors.range.max_range_m > 0.0) {
+    robot.range.emplace(body.sensors.range);
+  }
   robots_.emplace(id, std::move(robot));
   return SpawnResult::spawned();
 }
@@ -162,6 +182,125 @@ void World::step(double dt) {
     move(robot, dt);
   }
   time_s_ += dt;
+  for (std::size_t i = 0; i < doors_.size(); ++i) {
+    // The tolerance keeps an event at t = 1.0 from missing the step that ends at 0.1 * 10.
+    if (const auto angle = doors_[i].schedule.advance(time_s_ + kTimeTolerance)) doors_[i].target = *angle;
+    try_move_door(i);
+  }
+}
+
+void World::try_move_door(std::size_t i) {
+  Door& door = doors_[i];
+  if (door.angle == door.target) return;
+  const DoorSpec& spec = spec_.doors[i];
+  for (const auto& [id, robot] : robots_) {
+    if (disc_in_sweep(spec, door.angle, door.target, robot.status.pose.position(), robot.status.radius)) {
+      return;  // blocked: try again after the next step
+    }
+  }
+  door.angle = door.target;
+  door.leaf = spec.leaf(door.angle);
+}
+
+std::optional<RobotSpec> World::robot_spec(const std::string& id) const {
+  const auto it = robots_.find(id);
+  if (it == robots_.end()) return std::nullopt;
+  return it->second.body;
+}
+
+std::vector<DoorStatus> World::doors() const {
+  std::vector<DoorStatus> out;
+  out.reserve(doors_.size());
+  for (std::size_t i = 0; i < doors_.size(); ++i) {
+    const Door& d = doors_[i];
+    out.push_back({spec_.doors[i].id, d.angle, d.target, d.angle != d.target, d.leaf});
+  }
+  return out;
+}
+
+std::optional<DoorStatus> World::door(const std::string& id) const {
+  for (const DoorStatus& d : doors()) {
+    if (d.id == id) return d;
+  }
+  return std::nullopt;
+}
+
+CommandResult World::set_door(const std::string& id, double angle) {
+  for (std::size_t i = 0; i < doors_.size(); ++i) {
+    const DoorSpec& spec = spec_.doors[i];
+    if (spec.id != id) continue;
+    if (!(angle >= 0.0 && angle <= spec.max_angle)) {
+      return CommandResult::reject("door " + id + ": angle " + format_number(angle) + " is outside [0, " +
+                                   format_number(spec.max_angle) + "]");
+    }
+    doors_[i].target = angle;
+    try_move_door(i);
+    return CommandResult::accept();
+  }
+  return CommandResult::reject("door " + id + " unknown");
+}
+
+std::vector<DoorView> World::door_views() const {
+  std::vector<DoorView> views;
+  views.reserve(doors_.size());
+  for (std::size_t i = 0; i < doors_.size(); ++i) views.push_back({&spec_.doors[i], doors_[i].angle});
+  return views;
+}
+
+DynamicObstacles World::dynamic_obstacles(const std::string& except_robot) const {
+  DynamicObstacles out;
+  out.leaves.reserve(doors_.size());
+  for (const Door& d : doors_) out.leaves.push_back(d.leaf);
+  out.robots.reserve(robots_.size());
+  for (const auto& [id, robot] : robots_) {
+    if (id != except_robot) out.robots.push_back({robot.status.pose.position(), robot.status.radius});
+  }
+  return out;
+}
+
+bool World::line_of_sight(const geometry::Vec2& a, const geometry::Vec2& b) const {
+  return visible(map_, door_views(), a, b);
+}
+
+std::optional<RangeScan> World::sense(const std::string& id) {
+  const auto it = robots_.find(id);
+  if (it == robots_.end() || !it->second.range) return std::nullopt;
+  Robot& robot = it->second;
+  return robot.range->scan(robot.status.pose, map_, dynamic_obstacles(id), &robot.noise);
+}
+
+std::optional<RangeScan> World::sense(const std::string& id, const RangeSensorSpec& sensor) {
+  const auto it = robots_.find(id);
+  if (it == robots_.end() || sensor.rays < 1 || !(sensor.max_range_m > 0.0)) return std::nullopt;
+  Robot& robot = it->second;
+  return RangeSensor(sensor).scan(robot.status.pose, map_, dynamic_obstacles(id), &robot.noise);
+}
+
+std::vector<DoorObservation> World::observe_doors(const std::string& id) {
+  const auto it = robots_.find(id);
+  if (it == robots_.end()) return {};
+  return observe_doors(id, it->second.body.sensors.doors);
+}
+
+std::vector<DoorObservation> World::observe_doors(const std::string& id, const DoorSensorSpec& sensor) {
+  const auto it = robots_.find(id);
+  if (it == robots_.end()) return {};
+  Robot& robot = it->second;
+  return DoorObserver(sensor).observe(robot.status.pose, map_, door_views(), &robot.noise);
+}
+
+std::optional<geometry::Pose2> World::observe_pose(const std::string& id) {
+  const auto it = robots_.find(id);
+  if (it == robots_.end()) return std::nullopt;
+  Robot& robot = it->second;
+  const PoseSensorSpec& noise = robot.body.sensors.pose;
+  geometry::Pose2 p = robot.status.pose;
+  if (noise.position_noise_m > 0.0) {
+    p.x = robot.noise.normal(p.x, noise.position_noise_m);
+    p.y = robot.noise.normal(p.y, noise.position_noise_m);
+  }
+  if (noise.heading_noise_rad > 0.0) p.theta = geometry::wrap_angle(robot.noise.normal(p.theta, noise.heading_noise_rad));
+  return p;
 }
 
 void World::move(Robot& robot, double dt) {

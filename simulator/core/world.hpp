@@ -1,13 +1,25 @@
 #pragma once
-// The simulated world: a rectangular room with rectangular obstacles and disc-shaped robots
-// that follow velocity commands. Pure and deterministic: time advances only through step(),
-// robots are processed in id order, and nothing here reads clocks, files or random devices.
+// The simulated world: a rectangular area with obstacles (rectangles, polygons, occupancy
+// rasters), doors that open and close, and disc-shaped robots that follow velocity commands and
+// sense their surroundings. Pure and deterministic: time advances only through step(), robots
+// and doors are processed in id / file order, random processes draw from streams seeded by
+// spec().seed (random.hpp), and nothing here reads clocks, files or random devices.
 //
 // Safety rules it enforces, whoever the controller is:
 // - a command is checked against the robot's limits and rejected whole when it breaks one;
 // - a held command expires after command_timeout_s of simulated time, then the robot stops;
-// - a robot never ends a step overlapping an obstacle, the world boundary or another robot.
+// - a robot never ends a step overlapping an obstacle, a door leaf, the world boundary or another
+//   robot (it stops at the contact, it never passes through);
+// - a door never swings through a robot: it waits until the robot has left the leaf's sweep.
+//
+// Sensing reads the state after the last step; each robot's noise comes from its own stream, so
+// whether and how often other robots sense does not change what it sees.
+#include "simulator/core/door.hpp"
+#include "simulator/core/door_observer.hpp"
 #include "simulator/core/motion.hpp"
+#include "simulator/core/obstacle_map.hpp"
+#include "simulator/core/random.hpp"
+#include "simulator/core/range_sensor.hpp"
 #include "simulator/core/robot_status.hpp"
 #include "simulator/core/spawn_result.hpp"
 #include "simulator/core/velocity_command.hpp"
@@ -35,7 +47,8 @@ class World {
   // Checks `command` and, if it is valid, makes it the robot's held command from now on.
   CommandResult submit(const VelocityCommand& command);
 
-  // Advances simulated time by dt > 0 seconds, moving every robot by its held command.
+  // Advances simulated time by dt > 0 seconds, moving every robot by its held command, then
+  // advancing every door's schedule to the new time and moving the leaves that can move.
   void step(double dt);
 
   // Takes a robot out of the world; false when it was not there.
@@ -45,12 +58,46 @@ class World {
   std::optional<RobotStatus> robot(const std::string& id) const;
   double time_s() const { return time_s_; }
   const WorldSpec& spec() const { return spec_; }
+  // Body, limits and sensors of a present robot.
+  std::optional<RobotSpec> robot_spec(const std::string& id) const;
+
+  // --- Doors ---------------------------------------------------------------------------------
+  std::vector<DoorStatus> doors() const;  // in spec().doors order
+  std::optional<DoorStatus> door(const std::string& id) const;
+  // Asks door `id` to take `angle` (0 = closed .. its max_angle) now, or as soon as no robot is
+  // in the way. Its schedule's later events still apply. Rejects unknown ids and bad angles.
+  CommandResult set_door(const std::string& id, double angle);
+
+  // --- Sensing -------------------------------------------------------------------------------
+  // Nothing between a and b blocks sight: no obstacle and no door leaf (robots do not block).
+  bool line_of_sight(const geometry::Vec2& a, const geometry::Vec2& b) const;
+  // A range scan of robot `id` with its configured sensor, or with `sensor`; nothing when the
+  // robot is absent or (configured case) has no range sensor. Rays meet obstacles, the world
+  // boundary, door leaves and other robots.
+  std::optional<RangeScan> sense(const std::string& id);
+  std::optional<RangeScan> sense(const std::string& id, const RangeSensorSpec& sensor);
+  // The doors robot `id` sees now (door_observer.hpp), with its configured or the given sensor.
+  std::vector<DoorObservation> observe_doors(const std::string& id);
+  std::vector<DoorObservation> observe_doors(const std::string& id, const DoorSensorSpec& sensor);
+  // The robot's pose as its localisation reports it (true pose plus configured noise).
+  std::optional<geometry::Pose2> observe_pose(const std::string& id);
+
+  const ObstacleMap& obstacle_map() const { return map_; }
 
  private:
   struct Robot {
     RobotStatus status;
     Velocity held;              // the last accepted command
     double held_until_s = 0.0;  // simulated time the held command expires
+    RobotSpec body;             // as configured (or attach_defaults), id set
+    Rng noise;                  // this robot's sensor noise stream
+    std::optional<RangeSensor> range;  // from body.sensors.range, when configured
+  };
+  struct Door {
+    double angle = 0.0;
+    double target = 0.0;
+    DoorLeaf leaf;
+    DoorSchedule schedule;
   };
 
   // The configuration for `id`: a start robot, a known robot, or nothing.
@@ -61,8 +108,14 @@ class World {
                                                double radius) const;
   bool is_free(const std::string& self, const geometry::Vec2& center, double radius) const;
   void move(Robot& robot, double dt);
+  // Moves door i to its target unless a robot is in the sweep.
+  void try_move_door(std::size_t i);
+  std::vector<DoorView> door_views() const;
+  DynamicObstacles dynamic_obstacles(const std::string& except_robot) const;
 
   WorldSpec spec_;
+  ObstacleMap map_;
+  std::vector<Door> doors_;  // parallel to spec_.doors
   std::map<std::string, Robot> robots_;  // ordered: id order is the processing order
   double time_s_ = 0.0;
 };

@@ -3,6 +3,7 @@
 // and meaning are both checked here, every problem is reported with its file position, and only
 // plain structs go inward. Cores never see protobuf types.
 #include "simulator/core/world_spec.hpp"
+#include "simulator/scenario/scenario_content.hpp"
 #include "simulator/scenario/scenario_error.hpp"
 #include "simulator/scenario/simulation_settings.hpp"
 
@@ -13,8 +14,12 @@
 namespace autonomy::sim {
 
 struct Scenario {
-  WorldSpec world;  // world.name is the scenario name
+  WorldSpec world;  // world.name is the scenario name; world.seed == simulation.seed
   SimulationSettings simulation;
+  std::vector<RoomSpec> rooms;
+  std::vector<PlaceSpec> places;
+  std::vector<WaypointSpec> waypoints;
+  RadioSettings radio;
 };
 
 struct [[nodiscard]] ScenarioLoadResult {
@@ -27,7 +32,8 @@ struct [[nodiscard]] ScenarioLoadResult {
   std::string error_text() const;  // one error per line, for logs and stderr
 };
 
-// `source_name` names the text in errors (a path, or kBuiltinScenarioSource).
+// `source_name` names the text in errors (a path, or kBuiltinScenarioSource). Map files are
+// read relative to the directory of `source_name` (the working directory when it has none).
 ScenarioLoadResult load_scenario_text(const std::string& text, const std::string& source_name);
 
 // Reads `path` and loads it; `path` as given is the source name in errors.

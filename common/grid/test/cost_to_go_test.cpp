@@ -20,7 +20,8 @@ OccupancyRaster picture(const std::vector<std::string>& rows, double res = 1.0) 
   OccupancyRaster r(w, h, res);
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
-      if (rows[static_cast<std::size_t>(y)][static_cast<std::size_t>(x)] == '#') r.set_blocked({x, h - 1 - y}, true);
+      if (rows[static_cast<std::size_t>(y)][static_cast<std::size_t>(x)] == '#')
+        r.set_blocked({x, h - 1 - y}, true);
     }
   }
   return r;
@@ -48,8 +49,8 @@ std::vector<float> layer_for(const OccupancyRaster& r, unsigned seed, float max_
 
 // The contract: bit-identical to the float textbook Dijkstra, float rounding away from the double
 // one, and the same +inf pattern.
-void expect_matches_references(const OccupancyRaster& r, Cell goal, const std::vector<CostLayer>& layers,
-                               const std::string& what) {
+void expect_matches_references(const OccupancyRaster& r, Cell goal,
+                               const std::vector<CostLayer>& layers, const std::string& what) {
   const auto fast = compute_cost_to_go(r, goal, layers);
   ASSERT_TRUE(fast.ok()) << what << ": " << fast.reason;
   const auto ref_f = reference_dijkstra<float>(r, goal, layers);
@@ -128,9 +129,11 @@ TEST(CostToGo, GoalOutsideOrBlockedIsAReasonedResult) {
 TEST(CostToGo, BadLayersAreRejected) {
   const auto r = picture({"...", "..."});
   std::vector<float> short_layer(5, 1.0f);
-  EXPECT_EQ(compute_cost_to_go(r, {0, 0}, {CostLayer(short_layer, 1.0f)}).status, FieldStatus::kBadLayer);
+  EXPECT_EQ(compute_cost_to_go(r, {0, 0}, {CostLayer(short_layer, 1.0f)}).status,
+            FieldStatus::kBadLayer);
   std::vector<float> layer(6, 1.0f);
-  EXPECT_EQ(compute_cost_to_go(r, {0, 0}, {CostLayer(layer, -1.0f)}).status, FieldStatus::kBadLayer);
+  EXPECT_EQ(compute_cost_to_go(r, {0, 0}, {CostLayer(layer, -1.0f)}).status,
+            FieldStatus::kBadLayer);
   layer[3] = std::nanf("");
   const auto nan = compute_cost_to_go(r, {0, 0}, {CostLayer(layer, 1.0f)});
   EXPECT_EQ(nan.status, FieldStatus::kBadLayer);
@@ -166,8 +169,10 @@ TEST(CostToGo, EqualsTextbookDijkstraOnRandomMaps) {
   for (int size : {1, 2, 7, 40, 129, 300}) {
     for (int percent : {0, 10, 25, 40}) {
       const Cell goal{size / 3, size / 2};
-      const auto r = noise(size, size + 3, percent, static_cast<unsigned>(size * 100 + percent), goal);
-      expect_matches_references(r, goal, {}, "noise " + std::to_string(size) + "/" + std::to_string(percent));
+      const auto r =
+          noise(size, size + 3, percent, static_cast<unsigned>(size * 100 + percent), goal);
+      expect_matches_references(r, goal, {},
+                                "noise " + std::to_string(size) + "/" + std::to_string(percent));
     }
   }
   for (std::uint64_t seed : {1u, 2u, 3u}) {
@@ -185,7 +190,21 @@ TEST(CostToGo, EqualsTextbookDijkstraWithCostLayers) {
     expect_matches_references(r, goal, {CostLayer(a, 0.7f)}, "one layer " + std::to_string(size));
     expect_matches_references(r, goal, {CostLayer(a, 0.2f), CostLayer(b, 4.0f)},
                               "two layers " + std::to_string(size));
+    // Steps up to 400 resolutions would need a 2048-bucket ring: too much for these small maps,
+    // so the heap runs.
+    const auto steep = layer_for(r, 3, 400.0f);
+    expect_matches_references(r, goal, {CostLayer(steep, 1.0f)},
+                              "steep layer " + std::to_string(size));
+    EXPECT_TRUE(compute_cost_to_go(r, goal, {CostLayer(steep, 1.0f)}).stats.heap_fallback);
   }
+  // A map large enough for that ring.
+  const auto big = random_rectangles(700, 700, 0.2, 9);
+  const auto steep = layer_for(big, 4, 400.0f);
+  expect_matches_references(big, random_map_goal(big), {CostLayer(steep, 1.0f)},
+                            "steep layer, 700");
+  const auto f = compute_cost_to_go(big, random_map_goal(big), {CostLayer(steep, 1.0f)});
+  EXPECT_FALSE(f.stats.heap_fallback);
+  EXPECT_EQ(f.stats.buckets, 2048u);
 }
 
 TEST(CostToGo, HugeLayerCostsUseTheExactHeapFallback) {
@@ -201,9 +220,10 @@ TEST(CostToGo, MemoryStaysUnderEightBytesPerCell) {
   const auto r = random_rectangles(1000, 1000, 0.15, 7);
   const auto f = compute_cost_to_go(r, random_map_goal(r));
   ASSERT_TRUE(f.ok());
-  const double per_cell = static_cast<double>(f.stats.work_bytes) / static_cast<double>(f.stats.cells);
+  const double per_cell =
+      static_cast<double>(f.stats.work_bytes) / static_cast<double>(f.stats.cells);
   EXPECT_LT(per_cell, 8.0);
-  EXPECT_GE(per_cell, 5.0);  // output float + move byte at least
+  EXPECT_GE(per_cell, 5.0);         // output float + move byte at least
   EXPECT_EQ(f.stats.buckets, 16u);  // ceil(4 sqrt2) + 3 rounded up to a power of two
 }
 

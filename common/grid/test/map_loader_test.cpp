@@ -31,8 +31,10 @@ class MapLoaderTest : public ::testing::Test {
     return path;
   }
   std::string yaml(const std::string& image, const std::string& extra = "") {
-    return "image: " + image + "\nresolution: 0.5\norigin: [-1.0, 2.0, 0.0]\n"
-           "occupied_thresh: 0.65\nfree_thresh: 0.196\n" + extra;
+    return "image: " + image +
+           "\nresolution: 0.5\norigin: [-1.0, 2.0, 0.0]\n"
+           "occupied_thresh: 0.65\nfree_thresh: 0.196\n" +
+           extra;
   }
 
   fs::path dir_;
@@ -93,21 +95,26 @@ TEST_F(MapLoaderTest, ReadsAsciiAnd16BitImages) {
 
 TEST_F(MapLoaderTest, YamlErrorsNameFileAndLine) {
   write("m.pgm", kP5);
-  auto path = write("bad.yaml", "image: m.pgm\nresolution: -2\norigin: [0, 0, 0]\n"
-                                "occupied_thresh: 0.65\nfree_thresh: 0.2\n");
+  auto path = write("bad.yaml",
+                    "image: m.pgm\nresolution: -2\norigin: [0, 0, 0]\n"
+                    "occupied_thresh: 0.65\nfree_thresh: 0.2\n");
   auto r = load_ros_map(path);
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.error.rfind(path + ":2: 'resolution'", 0), 0u) << r.error;
 
-  path = write("origin.yaml", "image: m.pgm\nresolution: 1\norigin: [0, 0]\n"
-                              "occupied_thresh: 0.65\nfree_thresh: 0.2\n");
+  path = write("origin.yaml",
+               "image: m.pgm\nresolution: 1\norigin: [0, 0]\n"
+               "occupied_thresh: 0.65\nfree_thresh: 0.2\n");
   r = load_ros_map(path);
-  EXPECT_NE(r.error.find("origin.yaml:3: 'origin' must be a list of three numbers"), std::string::npos)
+  EXPECT_NE(r.error.find("origin.yaml:3: 'origin' must be a list of three numbers"),
+            std::string::npos)
       << r.error;
 
-  path = write("missing.yaml", "image: m.pgm\nresolution: 1\norigin: [0, 0, 0]\nfree_thresh: 0.2\n");
+  path =
+      write("missing.yaml", "image: m.pgm\nresolution: 1\norigin: [0, 0, 0]\nfree_thresh: 0.2\n");
   r = load_ros_map(path);
-  EXPECT_NE(r.error.find("missing.yaml:1: missing required key 'occupied_thresh'"), std::string::npos)
+  EXPECT_NE(r.error.find("missing.yaml:1: missing required key 'occupied_thresh'"),
+            std::string::npos)
       << r.error;
 
   path = write("syntax.yaml", "image: m.pgm\nresolution: 1\norigin: [0, 0, 0\n");
@@ -119,10 +126,12 @@ TEST_F(MapLoaderTest, YamlErrorsNameFileAndLine) {
   r = load_ros_map(path);
   EXPECT_NE(r.error.find("mode.yaml:6: mode 'raw' is not supported"), std::string::npos) << r.error;
 
-  path = write("thr.yaml", "image: m.pgm\nresolution: 1\norigin: [0, 0, 0]\n"
-                           "occupied_thresh: 0.3\nfree_thresh: 0.5\n");
+  path = write("thr.yaml",
+               "image: m.pgm\nresolution: 1\norigin: [0, 0, 0]\n"
+               "occupied_thresh: 0.3\nfree_thresh: 0.5\n");
   r = load_ros_map(path);
-  EXPECT_NE(r.error.find("thr.yaml:5: 'free_thresh' must not exceed"), std::string::npos) << r.error;
+  EXPECT_NE(r.error.find("thr.yaml:5: 'free_thresh' must not exceed"), std::string::npos)
+      << r.error;
 
   r = load_ros_map((dir_ / "nope.yaml").string());
   EXPECT_NE(r.error.find("nope.yaml: cannot read file"), std::string::npos) << r.error;
@@ -140,14 +149,16 @@ TEST_F(MapLoaderTest, ImageProblemsAreReportedWithTheYamlLine) {
 }
 
 TEST(ParsePgm, RejectsBadHeadersAndTruncatedData) {
-  EXPECT_NE(parse_pgm("P6\n1 1\n255\n\0\0\0", "x.pgm").error.find("x.pgm: not a PGM image"), std::string::npos);
+  EXPECT_NE(parse_pgm("P6\n1 1\n255\n\0\0\0", "x.pgm").error.find("x.pgm: not a PGM image"),
+            std::string::npos);
   EXPECT_NE(parse_pgm("P5\n0 1\n255\n", "x.pgm").error.find("invalid width"), std::string::npos);
   EXPECT_NE(parse_pgm("P5\n2 1\n", "x.pgm").error.find("maxval"), std::string::npos);
   EXPECT_NE(parse_pgm("P5\n2 1\n70000\n", "x.pgm").error.find("maxval"), std::string::npos);
   const auto truncated = parse_pgm("P5\n4 2\n255\nabc", "x.pgm");
   EXPECT_FALSE(truncated.ok());
-  EXPECT_NE(truncated.error.find("truncated pixel data: expected 8 bytes for 4 x 2 pixels, found 3"),
-            std::string::npos)
+  EXPECT_NE(
+      truncated.error.find("truncated pixel data: expected 8 bytes for 4 x 2 pixels, found 3"),
+      std::string::npos)
       << truncated.error;
   const auto short16 = parse_pgm("P5\n2 1\n1000\n\x01\x02\x03", "x.pgm");
   EXPECT_NE(short16.error.find("expected 4 bytes"), std::string::npos) << short16.error;

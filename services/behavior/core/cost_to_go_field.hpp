@@ -5,11 +5,14 @@
 // still know where to go.
 //
 // Moves: orthogonal steps cost one resolution, diagonal steps sqrt(2) resolutions. A diagonal step
-// is allowed only when both orthogonal cells beside it are free, so that paths never clip the corner
-// of an inflated obstacle. Unreachable and blocked cells hold +infinity.
+// is allowed only when both orthogonal cells beside it are free, so that paths never clip the
+// corner of an inflated obstacle. Unreachable and blocked cells hold +infinity.
 //
-// This version is a plain Dijkstra over a binary heap: O(N log N) in the number of cells.
+// The search is common/grid's exact bucket-queue field (cost_to_go.hpp): bit-for-bit the costs of
+// a textbook float Dijkstra over this graph, several times faster, 5 bytes per cell while it runs.
+// This class adapts it to the behavior grid (world coordinates, GridCell).
 #include "common/geometry/geometry.hpp"
+#include "common/grid/cost_to_go.hpp"
 #include "services/behavior/core/grid_geometry.hpp"
 #include "services/behavior/core/occupancy_grid.hpp"
 
@@ -48,14 +51,14 @@ class CostToGoField {
                                                           double within_m) const;
 
   // Row-major costs, index = row * cols + col; for tests, benchmarks and plots.
-  const std::vector<float>& costs() const { return costs_; }
+  const std::vector<float>& costs() const { return field_.costs(); }
 
  private:
   GridGeometry geometry_;
   geometry::Vec2 goal_;
   std::optional<GridCell> goal_cell_;
   bool has_route_anywhere_ = false;
-  std::vector<float> costs_;
+  grid::CostField field_;  // same cells, same row-major layout as geometry_
 };
 
 }  // namespace autonomy::behavior

@@ -158,6 +158,33 @@ TEST(CostToGoField, EqualsBellmanFordOnRandomMaps) {
   }
 }
 
+TEST(CostToGoField, IsBitIdenticalToTheTextbookFloatDijkstra) {
+  // The first version of this class was a textbook float Dijkstra; the fast field must reproduce
+  // its costs exactly, on an inflated world map as well as on pictures.
+  WorldMap world;
+  world.width_m = 30.0;
+  world.height_m = 20.0;
+  world.obstacles = {{4.0, 3.0, 6.0, 15.0}, {10.0, 0.0, 11.0, 12.0}, {15.0, 8.0, 25.0, 9.0}};
+  const OccupancyGrid inflated(world, 0.1, 0.3);
+  std::vector<std::pair<const OccupancyGrid*, Vec2>> cases = {{&inflated, Vec2(2.0, 2.0)}};
+  const auto noisy = random_map(21, 120, 90, 30);
+  cases.push_back({&noisy, Vec2(0.1, 0.1)});
+  for (const auto& [grid, goal] : cases) {
+    const CostToGoField field(*grid, goal);
+    const auto& g = grid->geometry();
+    grid::OccupancyRaster raster(g.cols(), g.rows(), g.resolution_m());
+    for (int r = 0; r < g.rows(); ++r) {
+      for (int c = 0; c < g.cols(); ++c) raster.set_blocked({c, r}, grid->blocked({c, r}));
+    }
+    const auto goal_cell = *g.cell_at(goal);
+    const auto textbook = grid::reference_dijkstra<float>(raster, {goal_cell.col, goal_cell.row});
+    ASSERT_EQ(field.costs().size(), textbook.size());
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < textbook.size(); ++i) differ += field.costs()[i] != textbook[i];
+    EXPECT_EQ(differ, 0u);
+  }
+}
+
 TEST(CostToGoField, AdviceDirections) {
   const auto open = OccupancyGrid::from_picture({"...", "...", "..."}, 1.0);
   const CostToGoField field(open, Vec2(0.5, 0.5));

@@ -1,0 +1,14 @@
+#pragma once
+// The subcommands of `autonomy`; each registers itself on its parent and returns what to run.
+#include "tools/autonomy/common.hpp"
+
+namespace autonomy::tools {
+
+Command add_topic_list(CLI::App& topic);
+Command add_topic_echo(CLI::App& topic);
+Command add_topic_hz(CLI::App& topic);
+Command add_topic_pub(CLI::App& topic);
+Command add_node_list(CLI::App& node);
+Command add_node_wait(CLI::App& node);
+
+}  // namespace autonomy::tools

@@ -1,0 +1,50 @@
+// autonomy: topics and processes on a DDS domain, in the manner of `ros2 topic` and `ros2 node`.
+// Each subcommand lives in its own file (topic_*.cpp, node_*.cpp); this file only wires them.
+#include <iostream>
+
+#include "common/dds/error.hpp"
+#include "common/service/shutdown.hpp"
+#include "tools/autonomy/commands.hpp"
+
+int main(int argc, char** argv) {
+  using namespace autonomy::tools;
+  // First: blocks SIGINT/SIGTERM before Cyclone starts its threads; Ctrl-C then reaches the
+  // commands as a guard condition (Interrupt), and every command returns normally.
+  autonomy::service::ShutdownSignals signals;
+
+  CLI::App app{"Topics and processes of the autonomy middleware on a DDS domain.", "autonomy"};
+  app.require_subcommand(1);
+  app.footer(
+      "Exit codes: 0 success; 1 failure (timeout, not acknowledged, DDS error); 2 usage error (bad arguments, "
+      "unknown topic, JSON that does not fit the message); 130 interrupted (Ctrl-C) before the goal of "
+      "pub or node wait was reached. echo and hz end with 0 on Ctrl-C.\n"
+      "Environment: AUTONOMY_DOMAIN (default for --domain), CYCLONEDDS_URI (Cyclone DDS configuration, e.g. "
+      "file://.../deploy/dds/loopback.xml).");
+  auto* topic = app.add_subcommand("topic", "Topics: list, echo, hz, pub");
+  topic->require_subcommand(1);
+  auto* node = app.add_subcommand("node", "Our processes, from their heartbeats: list, wait");
+  node->require_subcommand(1);
+
+  const std::vector<Command> commands = {add_topic_list(*topic), add_topic_echo(*topic), add_topic_hz(*topic),
+                                         add_topic_pub(*topic),  add_node_list(*node),   add_node_wait(*node)};
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? kExitOk : kExitUsage;
+  }
+
+  Context context{signals};
+  for (const auto& c : commands) {
+    if (!c.app->parsed()) continue;
+    try {
+      return c.run(context);
+    } catch (const autonomy::dds::DdsError& e) {
+      std::cerr << "autonomy: DDS error: " << e.what() << "\n";
+      return kExitFailed;
+    } catch (const std::exception& e) {
+      std::cerr << "autonomy: " << e.what() << "\n";
+      return kExitFailed;
+    }
+  }
+  return kExitUsage;  // not reached: CLI11 requires a subcommand
+}

@@ -1,0 +1,130 @@
+// autonomy topic pub: write JSON as a catalogue topic's message.
+#include <iostream>
+#include <memory>
+
+#include "common/dds/error.hpp"
+#include "tools/autonomy/commands.hpp"
+#include "tools/autonomy/topic_registry.hpp"
+
+namespace autonomy::tools {
+
+namespace {
+
+struct Options {
+  int domain = 0;
+  std::string topic;
+  std::string json_text;
+  int64_t count = 1;
+  double rate_hz = 1.0;
+  double wait_s = 3.0;
+  double ack_timeout_s = 5.0;
+  bool quiet = false;
+};
+
+int run(const Options& o, Context& ctx) {
+  const auto registry = TopicRegistry::catalogue();
+  const TopicEntry* topic = registry.find(o.topic);
+  if (!topic) {
+    std::cerr << "autonomy topic pub: unknown topic \"" << o.topic << "\"; known topics: " << registry.names() << "\n";
+    return kExitUsage;
+  }
+  json::Json message;
+  try {
+    message = topic->normalize(json::parse(o.json_text));
+  } catch (const json::JsonError& e) {
+    std::string keys;
+    for (const auto& k : topic->key_fields) keys += (keys.empty() ? "" : ", ") + k;
+    std::cerr << "autonomy topic pub: " << e.what() << "\n  " << topic->name << " carries " << topic->message_name
+              << " {";
+    for (size_t i = 0; i < topic->fields.size(); ++i) std::cerr << (i ? ", " : "") << topic->fields[i];
+    std::cerr << "}" << (keys.empty() ? "" : "; required key fields: " + keys) << "\n";
+    return kExitUsage;
+  }
+
+  dds::Participant participant(o.domain);
+  Interrupt interrupt(ctx.signals, participant);
+  // The class's QoS, but no dispose when this short-lived writer goes: its readers see the
+  // instance lose its writer (no_writers), not a retraction of what was published.
+  dds::Qos qos = dds::make_qos(topic->qos);
+  dds_qset_writer_data_lifecycle(qos.get(), false);
+  const auto writer = topic->make_writer(participant, qos.get());
+
+  // Volatile samples written before a reader is matched are lost: wait for one.
+  const auto wait_deadline = std::chrono::steady_clock::now() + seconds(o.wait_s);
+  while (writer->matched_readers() == 0 && std::chrono::steady_clock::now() < wait_deadline) {
+    if (!sleep_for(interrupt, participant, std::chrono::milliseconds(10))) return kExitInterrupted;
+  }
+  if (writer->matched_readers() == 0)
+    std::cerr << "autonomy topic pub: warning: no reader of " << topic->name << " matched within " << o.wait_s
+              << " s; publishing anyway\n";
+
+  // With --count 0, Ctrl-C is the normal end: what was written is still acknowledged below.
+  const bool until_interrupted = o.count == 0;
+  const auto period = seconds(o.rate_hz > 0 ? 1.0 / o.rate_hz : 0.0);
+  auto next = std::chrono::steady_clock::now();
+  for (int64_t i = 1; until_interrupted || i <= o.count; ++i) {
+    writer->write(message);
+    if (!o.quiet) print_line("publishing #" + std::to_string(i) + ": " + message.dump());
+    if (!until_interrupted && i == o.count) break;
+    next += period;
+    const auto left = next - std::chrono::steady_clock::now();
+    if (left > std::chrono::nanoseconds::zero()) (void)sleep_for(interrupt, participant, left);
+    if (interrupt.requested()) {
+      if (!until_interrupted) return kExitInterrupted;
+      break;
+    }
+  }
+
+  // Reliable samples may still be in flight (or waiting for a retransmit): wait for the
+  // acknowledgements of every matched reader before the writer goes.
+  const auto ack_deadline = std::chrono::steady_clock::now() + seconds(o.ack_timeout_s);
+  for (;;) {
+    const dds_return_t rc = dds_wait_for_acks(writer->handle(), DDS_MSECS(50));
+    if (rc == DDS_RETCODE_OK) return kExitOk;
+    if (rc != DDS_RETCODE_TIMEOUT) dds::check(rc, "dds_wait_for_acks");
+    if (interrupt.requested() && !until_interrupted) return kExitInterrupted;
+    if (std::chrono::steady_clock::now() >= ack_deadline) {
+      std::cerr << "autonomy topic pub: not every reader acknowledged within " << o.ack_timeout_s << " s\n";
+      return kExitFailed;
+    }
+  }
+}
+
+}  // namespace
+
+Command add_topic_pub(CLI::App& topic) {
+  auto o = std::make_shared<Options>();
+  auto* cmd = topic.add_subcommand(
+      "pub",
+      "Publish a message given as JSON on a catalogue topic, with the topic's QoS class. Key fields are "
+      "required; other fields left out take the message's defaults. Waits for a reader (--wait), and before "
+      "exiting for every matched reader to acknowledge (reliable topics). The writer lives only while "
+      "pub runs: late joiners of a state topic get the message only until then (--count 0 keeps it up).\n"
+      "Example: autonomy topic pub autonomy/nav/goal '{\"robot_id\":\"r1\",\"goal_id\":\"g1\",\"x\":17,\"y\":9}'");
+  add_domain_option(cmd, o->domain);
+  cmd->add_option("topic", o->topic, "Topic name, e.g. autonomy/nav/goal")->required();
+  cmd->add_option("json", o->json_text, "The message as a JSON object")->required();
+  cmd->add_option("-n,--count", o->count, "Number of times to publish (0: until Ctrl-C)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->add_option("-r,--rate", o->rate_hz, "Publications per second when --count is not 1 (0: back to back)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->add_option("--wait", o->wait_s, "Seconds to wait for a matched reader before publishing (warns if none)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->add_option("--ack-timeout", o->ack_timeout_s, "Seconds to wait for the readers' acknowledgements at the end")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->add_flag("-q,--quiet", o->quiet, "Do not print each published message");
+  const std::string topics = "\nTopics of the catalogue: " + TopicRegistry::catalogue().names() + ".";
+  cmd->footer(
+      "Exit codes: 0 published and acknowledged (with --count 0: stopped by Ctrl-C); 1 not acknowledged in time, or "
+      "DDS error; 2 unknown topic, "
+      "invalid JSON, a missing key field, a wrong type or unknown field, bad arguments; 130 Ctrl-C before --count was "
+      "reached." +
+      topics);
+  return {cmd, [o](Context& ctx) { return run(*o, ctx); }};
+}
+
+}  // namespace autonomy::tools

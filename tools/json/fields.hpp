@@ -1,0 +1,240 @@
+#pragma once
+// The field tables of the message value types (common/msg): one Fields<T> per type, listing every
+// field in IDL order with its JSON name and whether it is a DDS key. to_json, from_json and
+// key_json (msg_json.hpp) are written once over these tables. A new message type needs one
+// Fields specialisation here; a new enum needs one EnumValues specialisation.
+#include <array>
+
+#include "common/geometry/geometry.hpp"
+#include "common/msg/clock.hpp"
+#include "common/msg/navigation.hpp"
+#include "common/msg/robot.hpp"
+#include "common/msg/simulation.hpp"
+#include "common/msg/system.hpp"
+
+namespace autonomy::json {
+
+// Every value of an enum; the JSON name of a value is msg::to_string(value).
+template <typename E>
+struct EnumValues;
+
+template <>
+struct EnumValues<msg::ServiceState> {
+  static constexpr std::array values{msg::ServiceState::Starting, msg::ServiceState::Ready,
+                                     msg::ServiceState::Stopping};
+};
+template <>
+struct EnumValues<msg::ClockMode> {
+  static constexpr std::array values{msg::ClockMode::Lockstep, msg::ClockMode::Paced};
+};
+template <>
+struct EnumValues<msg::Kinematics> {
+  static constexpr std::array values{msg::Kinematics::Holonomic, msg::Kinematics::Unicycle};
+};
+template <>
+struct EnumValues<msg::RequestStatus> {
+  static constexpr std::array values{msg::RequestStatus::Accepted, msg::RequestStatus::Rejected};
+};
+template <>
+struct EnumValues<msg::GoalState> {
+  static constexpr std::array values{msg::GoalState::Accepted, msg::GoalState::Active,    msg::GoalState::Reached,
+                                     msg::GoalState::Failed,   msg::GoalState::Preempted, msg::GoalState::Rejected};
+};
+
+// visit(v, m) calls v.key(name, member) for key fields and v.field(name, member) for the others;
+// M is T or const T.
+template <typename T>
+struct Fields;
+
+template <>
+struct Fields<msg::Heartbeat> {
+  static constexpr const char* name = "Heartbeat";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.key("service", m.service);
+    v.key("instance", m.instance);
+    v.field("host", m.host);
+    v.field("pid", m.pid);
+    v.field("state", m.state);
+    v.field("uptime_s", m.uptime_s);
+    v.field("period_ms", m.period_ms);
+  }
+};
+
+template <>
+struct Fields<msg::SimClock> {
+  static constexpr const char* name = "SimClock";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("tick", m.tick);
+    v.field("sim_time_ns", m.sim_time_ns);
+    v.field("step_ns", m.step_ns);
+    v.field("mode", m.mode);
+    v.field("warp", m.warp);
+  }
+};
+
+template <>
+struct Fields<msg::LockstepRegistration> {
+  static constexpr const char* name = "LockstepRegistration";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.key("participant", m.participant);
+    v.field("active", m.active);
+  }
+};
+
+template <>
+struct Fields<msg::TickAck> {
+  static constexpr const char* name = "TickAck";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("participant", m.participant);
+    v.field("tick", m.tick);
+    v.field("commands_sent", m.commands_sent);
+  }
+};
+
+template <>
+struct Fields<msg::RobotState> {
+  static constexpr const char* name = "RobotState";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.key("robot_id", m.robot_id);
+    v.field("tick", m.tick);
+    v.field("sim_time_ns", m.sim_time_ns);
+    v.field("x", m.x);
+    v.field("y", m.y);
+    v.field("theta", m.theta);
+    v.field("vx", m.vx);
+    v.field("vy", m.vy);
+    v.field("omega", m.omega);
+    v.field("kinematics", m.kinematics);
+    v.field("radius", m.radius);
+    v.field("max_speed", m.max_speed);
+    v.field("max_omega", m.max_omega);
+    v.field("in_collision", m.in_collision);
+  }
+};
+
+template <>
+struct Fields<msg::VelocityCommand> {
+  static constexpr const char* name = "VelocityCommand";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.key("robot_id", m.robot_id);
+    v.field("source", m.source);
+    v.field("tick", m.tick);
+    v.field("vx", m.vx);
+    v.field("vy", m.vy);
+    v.field("omega", m.omega);
+  }
+};
+
+template <>
+struct Fields<msg::CommandRejection> {
+  static constexpr const char* name = "CommandRejection";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("robot_id", m.robot_id);
+    v.field("source", m.source);
+    v.field("tick", m.tick);
+    v.field("reason", m.reason);
+  }
+};
+
+template <>
+struct Fields<msg::SpawnRequest> {
+  static constexpr const char* name = "SpawnRequest";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("request_id", m.request_id);
+    v.field("requester", m.requester);
+    v.field("robot_id", m.robot_id);
+    v.field("has_pose", m.has_pose);
+    v.field("x", m.x);
+    v.field("y", m.y);
+    v.field("theta", m.theta);
+  }
+};
+
+template <>
+struct Fields<msg::SpawnReply> {
+  static constexpr const char* name = "SpawnReply";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("request_id", m.request_id);
+    v.field("robot_id", m.robot_id);
+    v.field("status", m.status);
+    v.field("reason", m.reason);
+  }
+};
+
+template <>
+struct Fields<geometry::Rect> {
+  static constexpr const char* name = "Rectangle";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("min_x", m.min_x);
+    v.field("min_y", m.min_y);
+    v.field("max_x", m.max_x);
+    v.field("max_y", m.max_y);
+  }
+};
+
+template <>
+struct Fields<msg::WorldMap> {
+  static constexpr const char* name = "WorldMap";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("name", m.name);
+    v.field("width", m.width);
+    v.field("height", m.height);
+    v.field("obstacles", m.obstacles);
+  }
+};
+
+template <>
+struct Fields<msg::SimulatorStatus> {
+  static constexpr const char* name = "SimulatorStatus";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("tick", m.tick);
+    v.field("sim_time_ns", m.sim_time_ns);
+    v.field("robots", m.robots);
+    v.field("lockstep_participants", m.lockstep_participants);
+    v.field("commands_applied", m.commands_applied);
+    v.field("commands_rejected", m.commands_rejected);
+    v.field("participants_dropped", m.participants_dropped);
+    v.field("mean_step_us", m.mean_step_us);
+  }
+};
+
+template <>
+struct Fields<msg::NavGoal> {
+  static constexpr const char* name = "NavGoal";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.key("robot_id", m.robot_id);
+    v.field("goal_id", m.goal_id);
+    v.field("x", m.x);
+    v.field("y", m.y);
+    v.field("tolerance", m.tolerance);
+  }
+};
+
+template <>
+struct Fields<msg::GoalStatus> {
+  static constexpr const char* name = "GoalStatus";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.key("robot_id", m.robot_id);
+    v.field("goal_id", m.goal_id);
+    v.field("state", m.state);
+    v.field("reason", m.reason);
+    v.field("tick", m.tick);
+    v.field("distance_to_goal", m.distance_to_goal);
+  }
+};
+
+}  // namespace autonomy::json

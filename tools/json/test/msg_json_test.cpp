@@ -1,0 +1,167 @@
+#include "tools/json/msg_json.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace autonomy::json {
+namespace {
+
+// Values with every field off its default, so a dropped field shows as a failed comparison.
+msg::Heartbeat heartbeat() { return {"simulator", "main", "host1", 4242, msg::ServiceState::Ready, 12.5, 500}; }
+msg::SimClock sim_clock() { return {17, 1'700'000'000, 100'000'000, msg::ClockMode::Paced, 2.5}; }
+msg::LockstepRegistration registration() { return {"behavior/r1", false}; }
+msg::TickAck tick_ack() { return {"behavior/r1", 99, 3}; }
+msg::RobotState robot_state() {
+  return {"r1", 5, 500, 1.5, -2.25, 0.5, 0.1, -0.2, 0.3, msg::Kinematics::Unicycle, 0.3, 1.2, 2.0, true};
+}
+msg::VelocityCommand velocity() { return {"r1", "behavior/r1", 7, 0.5, 0.0, -0.25}; }
+msg::CommandRejection rejection() { return {"r2", "behavior/r2", 8, "vy must be 0 for a unicycle"}; }
+msg::SpawnRequest spawn_request() { return {"q1", "tester", "r3", true, 1.0, 2.0, 3.0}; }
+msg::SpawnReply spawn_reply() { return {"q1", "r3", msg::RequestStatus::Accepted, "ok"}; }
+msg::WorldMap world_map() { return {"office", 60.0, 20.0, {{0, 0, 1, 1}, {2.5, 3.5, 4.5, 5.5}}}; }
+msg::SimulatorStatus sim_status() { return {10, 1000, 2, {"behavior/r1", "behavior/r2"}, 40, 2, 1, 33.3}; }
+msg::NavGoal nav_goal() { return {"r1", "g1", 17.0, 9.0, 0.25}; }
+msg::GoalStatus goal_status() { return {"r1", "g1", msg::GoalState::Preempted, "new goal", 44, 3.75}; }
+
+// Compares through the field table, so the test needs no operator== on the message types.
+template <typename T>
+void expect_round_trip(const T& value) {
+  const Json j = to_json(value);
+  const T back = from_json<T>(j);
+  EXPECT_EQ(to_json(back), j) << j.dump();
+  EXPECT_EQ(j.size(), field_names<T>().size()) << "every field is printed: " << j.dump();
+  // Through text as well: what echo prints, pub reads.
+  EXPECT_EQ(to_json(from_json<T>(parse(j.dump()))), j);
+}
+
+TEST(MsgJson, EveryTypeRoundTrips) {
+  expect_round_trip(heartbeat());
+  expect_round_trip(sim_clock());
+  expect_round_trip(registration());
+  expect_round_trip(tick_ack());
+  expect_round_trip(robot_state());
+  expect_round_trip(velocity());
+  expect_round_trip(rejection());
+  expect_round_trip(spawn_request());
+  expect_round_trip(spawn_reply());
+  expect_round_trip(world_map());
+  expect_round_trip(sim_status());
+  expect_round_trip(nav_goal());
+  expect_round_trip(goal_status());
+}
+
+TEST(MsgJson, EnumsAreLowerCaseNames) {
+  EXPECT_EQ(to_json(heartbeat())["state"], "ready");
+  EXPECT_EQ(to_json(robot_state())["kinematics"], "unicycle");
+  EXPECT_EQ(to_json(sim_clock())["mode"], "paced");
+  EXPECT_EQ(to_json(goal_status())["state"], "preempted");
+  EXPECT_EQ(to_json(spawn_reply())["status"], "accepted");
+}
+
+TEST(MsgJson, FieldsKeepTheirTypesAndOrder) {
+  const Json j = to_json(world_map());
+  EXPECT_EQ(j.dump(),
+            R"({"name":"office","width":60.0,"height":20.0,"obstacles":[{"min_x":0.0,"min_y":0.0,"max_x":1.0,)"
+            R"("max_y":1.0},{"min_x":2.5,"min_y":3.5,"max_x":4.5,"max_y":5.5}]})");
+  EXPECT_TRUE(to_json(heartbeat())["pid"].is_number_integer());
+  EXPECT_TRUE(to_json(robot_state())["in_collision"].is_boolean());
+}
+
+TEST(MsgJson, KeyJsonHasOnlyTheKeys) {
+  EXPECT_EQ(key_json(heartbeat()), (Json{{"service", "simulator"}, {"instance", "main"}}));
+  EXPECT_EQ(key_json(nav_goal()), (Json{{"robot_id", "r1"}}));
+  EXPECT_EQ(key_json(sim_clock()), Json::object());
+}
+
+TEST(MsgJson, OmittedFieldsKeepDefaults) {
+  const auto goal = from_json<msg::NavGoal>(parse(R"({"robot_id":"r1","goal_id":"g1","x":17,"y":9})"));
+  EXPECT_EQ(goal.robot_id, "r1");
+  EXPECT_EQ(goal.goal_id, "g1");
+  EXPECT_DOUBLE_EQ(goal.x, 17.0);
+  EXPECT_DOUBLE_EQ(goal.y, 9.0);
+  EXPECT_DOUBLE_EQ(goal.tolerance, msg::NavGoal{}.tolerance);
+
+  const auto clock = from_json<msg::SimClock>(Json::object());  // no key: everything optional
+  EXPECT_DOUBLE_EQ(clock.warp, 1.0);
+  EXPECT_EQ(clock.mode, msg::ClockMode::Lockstep);
+}
+
+TEST(MsgJson, NonFiniteDoublesRoundTripAsStrings) {
+  msg::GoalStatus s = goal_status();
+  s.distance_to_goal = std::numeric_limits<double>::infinity();
+  const Json j = to_json(s);
+  EXPECT_EQ(j["distance_to_goal"], "inf");
+  EXPECT_TRUE(std::isinf(from_json<msg::GoalStatus>(j).distance_to_goal));
+  s.distance_to_goal = std::nan("");
+  EXPECT_TRUE(std::isnan(from_json<msg::GoalStatus>(to_json(s)).distance_to_goal));
+}
+
+TEST(MsgJson, IntegralFloatsAreIntegers) { EXPECT_EQ(from_json<msg::TickAck>(parse(R"({"tick":12.0})")).tick, 12); }
+
+std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const JsonError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+template <typename T>
+std::string error_for(const std::string& text) {
+  return error_of([&] { (void)from_json<T>(parse(text)); });
+}
+
+TEST(MsgJsonErrors, InvalidJson) {
+  const std::string e = error_for<msg::NavGoal>(R"({"robot_id":"r1",)");
+  EXPECT_EQ(e.rfind("invalid JSON: ", 0), 0u) << e;
+}
+
+TEST(MsgJsonErrors, NotAnObject) {
+  EXPECT_EQ(error_for<msg::NavGoal>("[1,2]"), "NavGoal: expected an object, got an array");
+}
+
+TEST(MsgJsonErrors, MissingKeyField) {
+  EXPECT_EQ(error_for<msg::NavGoal>(R"({"goal_id":"g1","x":1})"), "NavGoal: missing key field \"robot_id\"");
+  EXPECT_EQ(error_for<msg::Heartbeat>(R"({"service":"simulator"})"), "Heartbeat: missing key field \"instance\"");
+}
+
+TEST(MsgJsonErrors, WrongTypeNamesTheField) {
+  EXPECT_EQ(error_for<msg::NavGoal>(R"({"robot_id":"r1","x":"abc"})"),
+            "NavGoal.x: expected a number, got string \"abc\"");
+  EXPECT_EQ(error_for<msg::NavGoal>(R"({"robot_id":7})"), "NavGoal.robot_id: expected a string, got number 7");
+  EXPECT_EQ(error_for<msg::RobotState>(R"({"robot_id":"r1","in_collision":1})"),
+            "RobotState.in_collision: expected true or false, got number 1");
+}
+
+TEST(MsgJsonErrors, UnknownFieldListsTheFields) {
+  EXPECT_EQ(error_for<msg::NavGoal>(R"({"robot_id":"r1","z":1})"),
+            "NavGoal: unknown field \"z\" (fields of NavGoal: robot_id, goal_id, x, y, tolerance)");
+}
+
+TEST(MsgJsonErrors, EnumNames) {
+  EXPECT_EQ(error_for<msg::Heartbeat>(R"({"service":"a","instance":"b","state":"READY"})"),
+            "Heartbeat.state: expected one of starting, ready, stopping, got string \"READY\"");
+}
+
+TEST(MsgJsonErrors, IntegerRanges) {
+  EXPECT_EQ(error_for<msg::TickAck>(R"({"commands_sent":-1})"),
+            "TickAck.commands_sent: expected an integer in [0, 4294967295], got number -1");
+  EXPECT_EQ(error_for<msg::TickAck>(R"({"tick":1.5})"),
+            "TickAck.tick: expected an integer in [-9223372036854775808, 9223372036854775807], got number 1.5");
+  EXPECT_EQ(error_for<msg::Heartbeat>(R"({"service":"a","instance":"b","pid":4294967296})"),
+            "Heartbeat.pid: expected an integer in [-2147483648, 2147483647], got number 4294967296");
+}
+
+TEST(MsgJsonErrors, NestedPaths) {
+  EXPECT_EQ(error_for<msg::WorldMap>(R"({"obstacles":[{"min_x":0},{"max_y":"x"}]})"),
+            "WorldMap.obstacles[1].max_y: expected a number, got string \"x\"");
+  EXPECT_EQ(error_for<msg::SimulatorStatus>(R"({"lockstep_participants":["a",2]})"),
+            "SimulatorStatus.lockstep_participants[1]: expected a string, got number 2");
+  EXPECT_EQ(error_for<msg::WorldMap>(R"({"obstacles":{}})"), "WorldMap.obstacles: expected an array, got an object");
+}
+
+}  // namespace
+}  // namespace autonomy::json
