@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds the benchmarks in Release (build-bench/) and runs them, printing their figures.
-#   bench/run.sh            full runs (about 1 to 2 minutes)
+#   bench/run.sh            full runs (a few minutes: the 4000x4000 textbook Dijkstra alone takes seconds)
 #   bench/run.sh --quick    short runs, for a smoke test
 # Environment: BUILD_DIR (default <repo>/build-bench), BENCH_DOMAIN (default 160; the lockstep
 # bench uses the next few ids too, up to 169), CYCLONEDDS_URI (default: the loopback profile),
@@ -17,10 +17,13 @@ quick=()
 if [[ "${1:-}" == "--quick" ]]; then quick=(--quick); fi
 
 cmake -S "$repo" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
-ninja -C "$build" dds_layer_bench lockstep_bench simulator behavior
+ninja -C "$build" dds_layer_bench lockstep_bench field_bench radio_bench world_bench simulator behavior
 
 echo "load average: $(cut -d' ' -f1-3 /proc/loadavg), $(nproc) cores, CYCLONEDDS_URI=$CYCLONEDDS_URI"
 "$build/bin/dds_layer_bench" --domain "$domain" "${quick[@]}"
 extra=()
 if [[ -n "${LOCKSTEP_DDS_EXTRA:-}" ]]; then extra=(--dds-extra "$LOCKSTEP_DDS_EXTRA"); fi
 "$build/bin/lockstep_bench" --domain "$((domain + 1))" "${quick[@]}" "${extra[@]}"
+"$build/bin/field_bench" "${quick[@]}"
+"$build/bin/radio_bench" "${quick[@]}"
+if [[ ${#quick[@]} -gt 0 ]]; then "$build/bin/world_bench" --ticks 30; else "$build/bin/world_bench"; fi
