@@ -6,16 +6,14 @@
 #include "simulator/core/robot_id.hpp"
 #include "simulator/core/shapes.hpp"
 
+#include "common/config/text_format.hpp"
 #include "common/grid/map_loader.hpp"
 
-#include <google/protobuf/io/tokenizer.h>
 #include <google/protobuf/text_format.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <map>
 #include <memory>
 #include <set>
@@ -29,53 +27,8 @@ namespace {
 namespace pb = google::protobuf;
 using ParseInfoTree = pb::TextFormat::ParseInfoTree;
 
-struct Position {
-  int line = 1;  // 1-based
-  int column = 1;
-};
-
-// Where the parser saw each field, so semantic errors point at the offending text. A field that
-// is absent has no position of its own: errors about it point at the enclosing message.
-class Locator {
- public:
-  Locator(const ParseInfoTree* tree, const pb::Descriptor* type, Position self)
-      : tree_(tree), type_(type), self_(self) {}
-
-  Position self() const { return self_; }
-
-  Position at(const char* field, int index = -1) const {
-    const pb::FieldDescriptor* f = type_->FindFieldByName(field);
-    if (tree_ == nullptr || f == nullptr) return self_;
-    const pb::TextFormat::ParseLocation location = tree_->GetLocation(f, index);
-    if (location.line < 0) return self_;
-    return {location.line + 1, location.column + 1};
-  }
-
-  Locator nested(const char* field, int index = -1) const {
-    const pb::FieldDescriptor* f = type_->FindFieldByName(field);
-    const ParseInfoTree* tree = tree_ != nullptr ? tree_->GetTreeForNested(f, index) : nullptr;
-    return {tree, f->message_type(), at(field, index)};
-  }
-
- private:
-  const ParseInfoTree* tree_;
-  const pb::Descriptor* type_;
-  Position self_;
-};
-
-class SyntaxErrors : public pb::io::ErrorCollector {
- public:
-  SyntaxErrors(const std::string& source, std::vector<ScenarioError>& errors)
-      : source_(source), errors_(errors) {}
-
-  void AddError(int line, pb::io::ColumnNumber column, const std::string& message) override {
-    errors_.push_back({source_, line + 1, column + 1, message});
-  }
-
- private:
-  const std::string& source_;
-  std::vector<ScenarioError>& errors_;
-};
+using configfile::Locator;
+using configfile::Position;
 
 std::string point_text(double x, double y) {
   return "(" + format_number(x) + ", " + format_number(y) + ")";
@@ -680,43 +633,23 @@ class ScenarioChecker {
 
 }  // namespace
 
-std::string ScenarioLoadResult::error_text() const {
-  std::string text;
-  for (const ScenarioError& e : errors) text += e.to_string() + "\n";
-  return text;
-}
+std::string ScenarioLoadResult::error_text() const { return configfile::error_text(errors); }
 
 ScenarioLoadResult load_scenario_text(const std::string& text, const std::string& source_name) {
   ScenarioLoadResult result;
-  SyntaxErrors syntax(source_name, result.errors);
   ParseInfoTree tree;
-  pb::TextFormat::Parser parser;
-  parser.RecordErrorsTo(&syntax);
-  parser.WriteLocationsTo(&tree);
   config::Scenario file;
-  if (!parser.ParseFromString(text, &file)) {
-    if (result.errors.empty()) result.errors.push_back({source_name, 0, 0, "cannot parse"});
-    return result;
-  }
+  if (!configfile::parse_text_format(text, source_name, file, tree, result.errors)) return result;
   Scenario scenario = ScenarioChecker(source_name, result.errors).check(file, tree);
-  std::stable_sort(result.errors.begin(), result.errors.end(),
-                   [](const ScenarioError& a, const ScenarioError& b) {
-                     return std::tie(a.line, a.column) < std::tie(b.line, b.column);
-                   });
+  configfile::sort_by_position(result.errors);
   if (result.errors.empty()) result.scenario = std::move(scenario);
   return result;
 }
 
 ScenarioLoadResult load_scenario_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    ScenarioLoadResult result;
-    result.errors.push_back({path, 0, 0, std::string("cannot read file: ") + std::strerror(errno)});
-    return result;
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  return load_scenario_text(text.str(), path);
+  ScenarioLoadResult result;
+  const std::optional<std::string> text = configfile::read_text_file(path, result.errors);
+  return text ? load_scenario_text(*text, path) : result;
 }
 
 }  // namespace autonomy::sim

@@ -2,14 +2,13 @@
 
 #include "idl/mission.pb.h"
 
-#include <google/protobuf/io/tokenizer.h>
+#include "common/config/text_format.hpp"
+
 #include <google/protobuf/text_format.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
@@ -22,53 +21,8 @@ namespace {
 namespace pb = google::protobuf;
 using ParseInfoTree = pb::TextFormat::ParseInfoTree;
 
-struct Position {
-  int line = 1;  // 1-based
-  int column = 1;
-};
-
-// Where the parser saw each field. An absent field has no position of its own: errors about it
-// point at the enclosing message (the file's start for the top level).
-class Locator {
- public:
-  Locator(const ParseInfoTree* tree, const pb::Descriptor* type, Position self)
-      : tree_(tree), type_(type), self_(self) {}
-
-  Position self() const { return self_; }
-
-  Position at(const char* field, int index = -1) const {
-    const pb::FieldDescriptor* f = type_->FindFieldByName(field);
-    if (tree_ == nullptr || f == nullptr) return self_;
-    const pb::TextFormat::ParseLocation location = tree_->GetLocation(f, index);
-    if (location.line < 0) return self_;
-    return {location.line + 1, location.column + 1};
-  }
-
-  Locator nested(const char* field, int index = -1) const {
-    const pb::FieldDescriptor* f = type_->FindFieldByName(field);
-    const ParseInfoTree* tree = tree_ != nullptr ? tree_->GetTreeForNested(f, index) : nullptr;
-    return {tree, f->message_type(), at(field, index)};
-  }
-
- private:
-  const ParseInfoTree* tree_;
-  const pb::Descriptor* type_;
-  Position self_;
-};
-
-class SyntaxErrors : public pb::io::ErrorCollector {
- public:
-  SyntaxErrors(const std::string& source, std::vector<MissionError>& errors)
-      : source_(source), errors_(errors) {}
-
-  void AddError(int line, pb::io::ColumnNumber column, const std::string& message) override {
-    errors_.push_back({source_, line + 1, column + 1, message});
-  }
-
- private:
-  const std::string& source_;
-  std::vector<MissionError>& errors_;
-};
+using configfile::Locator;
+using configfile::Position;
 
 std::string number(double v) {
   std::ostringstream s;
@@ -501,48 +455,23 @@ class MissionChecker {
 
 }  // namespace
 
-std::string MissionError::to_string() const {
-  if (line <= 0) return source + ": " + message;
-  return source + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + message;
-}
-
-std::string MissionLoadResult::error_text() const {
-  std::string text;
-  for (const MissionError& e : errors) text += e.to_string() + "\n";
-  return text;
-}
+std::string MissionLoadResult::error_text() const { return configfile::error_text(errors); }
 
 MissionLoadResult load_mission_text(const std::string& text, const std::string& source_name) {
   MissionLoadResult result;
-  SyntaxErrors syntax(source_name, result.errors);
   ParseInfoTree tree;
-  pb::TextFormat::Parser parser;
-  parser.RecordErrorsTo(&syntax);
-  parser.WriteLocationsTo(&tree);
   config::Mission file;
-  if (!parser.ParseFromString(text, &file)) {
-    if (result.errors.empty()) result.errors.push_back({source_name, 0, 0, "cannot parse"});
-    return result;
-  }
+  if (!configfile::parse_text_format(text, source_name, file, tree, result.errors)) return result;
   MissionSpec mission = MissionChecker(source_name, result.errors).check(file, tree);
-  std::stable_sort(result.errors.begin(), result.errors.end(),
-                   [](const MissionError& a, const MissionError& b) {
-                     return std::tie(a.line, a.column) < std::tie(b.line, b.column);
-                   });
+  configfile::sort_by_position(result.errors);
   if (result.errors.empty()) result.mission = std::move(mission);
   return result;
 }
 
 MissionLoadResult load_mission_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    MissionLoadResult result;
-    result.errors.push_back({path, 0, 0, std::string("cannot read file: ") + std::strerror(errno)});
-    return result;
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  return load_mission_text(text.str(), path);
+  MissionLoadResult result;
+  const std::optional<std::string> text = configfile::read_text_file(path, result.errors);
+  return text ? load_mission_text(*text, path) : result;
 }
 
 }  // namespace autonomy::behavior

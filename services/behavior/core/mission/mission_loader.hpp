@@ -8,6 +8,7 @@
 // each trigger has its parameters (a timeout's seconds, a contact trigger's known teammate, an
 // area's shape), at_goal only in go_to states, plan sets start from "obstacles" and name defined
 // layers, blend gains only for BLENDED and one per layer, stop states have no transitions.
+#include "common/config/file_error.hpp"
 #include "services/behavior/core/mission/mission_spec.hpp"
 
 #include <optional>
@@ -17,15 +18,7 @@
 namespace autonomy::behavior {
 
 // A problem in a mission file, located like a compiler diagnostic.
-struct MissionError {
-  std::string source;  // file path or the name given to load_mission_text
-  int line = 0;        // 1-based; 0 when the problem concerns the whole file (cannot read it)
-  int column = 0;      // 1-based
-  std::string message;
-
-  // "source:line:column: message", or "source: message" without a position.
-  std::string to_string() const;
-};
+using MissionError = configfile::FileError;
 
 struct [[nodiscard]] MissionLoadResult {
   std::optional<MissionSpec> mission;  // set exactly when errors is empty
