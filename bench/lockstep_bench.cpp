@@ -180,7 +180,7 @@ RunResult run_lockstep(const Options& o, int robots, int domain, const std::stri
       const auto& g = s.value;
       const auto it = current_goal.find(g.robot_id);
       if (it == current_goal.end() || it->second != g.goal_id) continue;
-      if (g.state != msg::GoalState::Reached && g.state != msg::GoalState::Failed &&
+      if (g.state != msg::GoalState::Reached && g.state != msg::GoalState::Blocked &&
           g.state != msg::GoalState::Rejected)
         continue;
       // Send the robot the other way.

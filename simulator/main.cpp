@@ -14,6 +14,8 @@ int main(int argc, char** argv) {
   std::string trajectory;
   std::string picture;
   std::string mode_override;
+  std::string metrics;
+  int radio_period = 1;
   return service::run_service(
       argc, argv, "simulator", "World and clock simulator: robots, obstacles, lockstep or paced time",
       service::InstanceFlag::Instance,
@@ -24,6 +26,13 @@ int main(int argc, char** argv) {
             ->check(CLI::NonNegativeNumber);
         app.add_option("--trajectory", trajectory, "Write every robot's pose per tick to this CSV file");
         app.add_option("--svg", picture, "Write an SVG picture of the run (map and robot paths) at exit");
+        app.add_option("--metrics", metrics,
+                       "Write the run's metrics (time, distance, connectivity, coverage) to PREFIX.csv and "
+                       "PREFIX.json at exit")
+            ->option_text("PREFIX");
+        app.add_option("--radio-period", radio_period, "Recompute the radio link table every N ticks")
+            ->check(CLI::PositiveNumber)
+            ->option_text("N (1)");
         app.add_option("--mode", mode_override, "Override the scenario's clock mode")
             ->check(CLI::IsMember({"lockstep", "paced"}));
         app.footer("Without --config the built-in demo scenario (deploy/scenarios/demo.pbtxt) runs.");
@@ -46,6 +55,8 @@ int main(int argc, char** argv) {
         if (max_ticks > 0) run.max_ticks = max_ticks;
         run.trajectory_csv = trajectory;
         run.picture_svg = picture;
-        return std::make_unique<sim::SimulatorNode>(service, sim::World(loaded.scenario->world), run);
+        run.metrics_prefix = metrics;
+        run.radio_period_ticks = radio_period;
+        return std::make_unique<sim::SimulatorNode>(service, std::move(*loaded.scenario), run);
       });
 }

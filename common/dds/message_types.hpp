@@ -6,11 +6,17 @@
 #include "common/msg/navigation.hpp"
 #include "common/msg/robot.hpp"
 #include "common/msg/simulation.hpp"
+#include "common/msg/perception.hpp"
+#include "common/msg/radio.hpp"
+#include "common/msg/truth.hpp"
 #include "common/msg/system.hpp"
 #include "idl/clock.h"
 #include "idl/navigation.h"
 #include "idl/robot.h"
 #include "idl/simulation.h"
+#include "idl/perception.h"
+#include "idl/radio.h"
+#include "idl/truth.h"
 #include "idl/system.h"
 
 #define AUTONOMY_DDS_TYPE(VALUE, CTYPE)                                                  \
@@ -38,6 +44,18 @@ AUTONOMY_DDS_TYPE(msg::WorldMap, autonomy_WorldMap)
 AUTONOMY_DDS_TYPE(msg::SimulatorStatus, autonomy_SimulatorStatus)
 AUTONOMY_DDS_TYPE(msg::NavGoal, autonomy_NavGoal)
 AUTONOMY_DDS_TYPE(msg::GoalStatus, autonomy_GoalStatus)
+// Simulator world v2: perception, ground truth, radio, team messages, door commands.
+AUTONOMY_DDS_TYPE(msg::RangeScan, autonomy_RangeScan)
+AUTONOMY_DDS_TYPE(msg::PoseEstimate, autonomy_PoseEstimate)
+AUTONOMY_DDS_TYPE(msg::DoorObservation, autonomy_DoorObservation)
+AUTONOMY_DDS_TYPE(msg::DoorState, autonomy_DoorState)
+AUTONOMY_DDS_TYPE(msg::RadioLink, autonomy_RadioLink)
+AUTONOMY_DDS_TYPE(msg::TeamConnectivity, autonomy_TeamConnectivity)
+AUTONOMY_DDS_TYPE(msg::TeamMessage, autonomy_TeamMessage)
+AUTONOMY_DDS_TYPE(msg::TeamDelivery, autonomy_TeamDelivery)
+AUTONOMY_DDS_TYPE(msg::DoorCommand, autonomy_DoorCommand)
+AUTONOMY_DDS_TYPE(msg::NavCancel, autonomy_NavCancel)
+AUTONOMY_DDS_TYPE(msg::MissionStatus, autonomy_MissionStatus)
 
 }  // namespace autonomy::dds
 

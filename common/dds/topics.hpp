@@ -25,6 +25,22 @@ inline constexpr TopicSpec<msg::SimulatorStatus> sim_status{"autonomy/sim/status
 inline constexpr TopicSpec<msg::NavGoal> nav_goal{"autonomy/nav/goal", QosClass::Command};
 inline constexpr TopicSpec<msg::GoalStatus> goal_status{"autonomy/nav/goal_status", QosClass::State};
 
+// What robots sense (the simulator's sensor models), per robot.
+inline constexpr TopicSpec<msg::RangeScan> range_scan{"autonomy/robot/range_scan", QosClass::Stream};
+inline constexpr TopicSpec<msg::PoseEstimate> pose_estimate{"autonomy/robot/pose_estimate", QosClass::Stream};
+inline constexpr TopicSpec<msg::DoorObservation> door_observation{"autonomy/robot/door_observation",
+                                                                  QosClass::Event};
+// Ground truth nobody senses directly (robot ground truth is robot_state).
+inline constexpr TopicSpec<msg::DoorState> truth_door{"autonomy/truth/door", QosClass::State};
+// The simulated radio and the team messages it relays; door commands for experiments.
+inline constexpr TopicSpec<msg::RadioLink> radio_link{"autonomy/radio/link", QosClass::State};
+inline constexpr TopicSpec<msg::TeamConnectivity> radio_team{"autonomy/radio/team", QosClass::State};
+inline constexpr TopicSpec<msg::TeamMessage> team_outbox{"autonomy/team/outbox", QosClass::Event};
+inline constexpr TopicSpec<msg::TeamDelivery> team_inbox{"autonomy/team/inbox", QosClass::Event};
+inline constexpr TopicSpec<msg::DoorCommand> door_command{"autonomy/sim/door_command", QosClass::Command};
+inline constexpr TopicSpec<msg::NavCancel> nav_cancel{"autonomy/nav/cancel", QosClass::Command};
+inline constexpr TopicSpec<msg::MissionStatus> mission_status{"autonomy/mission/status", QosClass::State};
+
 // Calls visit(spec) for every topic of the catalogue: tools use it to find a topic's type by name.
 template <typename Visitor>
 void for_each_topic(Visitor&& visit) {
@@ -41,6 +57,17 @@ void for_each_topic(Visitor&& visit) {
   visit(sim_status);
   visit(nav_goal);
   visit(goal_status);
+  visit(range_scan);
+  visit(pose_estimate);
+  visit(door_observation);
+  visit(truth_door);
+  visit(radio_link);
+  visit(radio_team);
+  visit(team_outbox);
+  visit(team_inbox);
+  visit(door_command);
+  visit(nav_cancel);
+  visit(mission_status);
 }
 
 }  // namespace autonomy::dds::topics

@@ -10,9 +10,17 @@ struct NavGoal {
   std::string goal_id;
   double x = 0.0, y = 0.0;
   double tolerance = 0.0;
+  std::string constraint_set;  // "" = obstacles only
 };
 
-enum class GoalState { Accepted, Active, Reached, Failed, Preempted, Rejected };
+struct NavCancel {
+  std::string robot_id;
+  std::string goal_id;  // "" = whatever is pursued
+  std::string reason;
+};
+
+// Blocked was called Failed before (same wire value).
+enum class GoalState { Accepted, Active, Reached, Blocked, Preempted, Rejected, Cancelled };
 
 struct GoalStatus {
   std::string robot_id;
@@ -21,6 +29,16 @@ struct GoalStatus {
   std::string reason;
   int64_t tick = 0;
   double distance_to_goal = 0.0;
+};
+
+struct MissionStatus {
+  std::string robot_id;
+  std::string mission;
+  std::string state;
+  std::string event;
+  std::string reason;
+  bool finished = false;
+  int64_t tick = 0;
 };
 
 const char* to_string(GoalState s);

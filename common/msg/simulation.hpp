@@ -41,6 +41,16 @@ struct SimulatorStatus {
   uint64_t commands_rejected = 0;
   uint64_t participants_dropped = 0;
   double mean_step_us = 0.0;
+  uint64_t team_messages_delivered = 0;
+  uint64_t team_messages_dropped_no_route = 0;
+  uint64_t team_messages_dropped_lost = 0;
+  uint64_t team_messages_dropped_invalid = 0;
+};
+
+struct DoorCommand {
+  std::string door_id;
+  double angle = 0.0;
+  std::string source;
 };
 
 const char* to_string(RequestStatus s);

@@ -99,6 +99,114 @@ TEST(ConversionsTest, GoalStatusRoundTrip) {
   expect_round_trip(test::make_goal_status(Variant::Empty));
 }
 
+TEST(ConversionsTest, NavCancelRoundTrip) {
+  expect_round_trip(test::make_nav_cancel(Variant::Full));
+  expect_round_trip(test::make_nav_cancel(Variant::Empty));
+}
+
+TEST(ConversionsTest, MissionStatusRoundTrip) {
+  expect_round_trip(test::make_mission_status(Variant::Full));
+  expect_round_trip(test::make_mission_status(Variant::Empty));
+}
+
+TEST(ConversionsTest, WorldV2TypesRoundTrip) {
+  for (const Variant v : {Variant::Full, Variant::Empty}) {
+    expect_round_trip(test::make_range_scan(v));
+    expect_round_trip(test::make_pose_estimate(v));
+    expect_round_trip(test::make_door_observation(v));
+    expect_round_trip(test::make_door_state(v));
+    expect_round_trip(test::make_radio_link(v));
+    expect_round_trip(test::make_team_connectivity(v));
+    expect_round_trip(test::make_team_message(v));
+    expect_round_trip(test::make_team_delivery(v));
+    expect_round_trip(test::make_door_command(v));
+  }
+}
+
+TEST(ConversionsTest, WorldV2TypesToCFields) {
+  {
+    autonomy_RangeScan c{};
+    Arena arena;
+    const auto v = test::make_range_scan(Variant::Full);
+    DdsType<msg::RangeScan>::to_c(v, c, arena);
+    EXPECT_EQ(str(c.robot_id), test::kUtf8A);
+    EXPECT_EQ(c.tick, 808);
+    EXPECT_EQ(c.angle_min, -1.5);
+    EXPECT_EQ(c.angle_increment, 0.0625);
+    EXPECT_EQ(c.max_range, 7.5);
+    ASSERT_EQ(c.ranges._length, 5u);
+    EXPECT_EQ(c.ranges._buffer[2], 1.25f);
+  }
+  {
+    autonomy_DoorObservation c{};
+    Arena arena;
+    const auto value = test::make_door_observation(Variant::Full);  // outlives c, which points into it
+    DdsType<msg::DoorObservation>::to_c(value, c, arena);
+    ASSERT_EQ(c.doors._length, 3u);
+    EXPECT_EQ(str(c.doors._buffer[0].door_id), test::kUtf8C);
+    EXPECT_EQ(c.doors._buffer[0].angle_estimate, 1.25);
+    EXPECT_EQ(c.doors._buffer[0].distance, 2.5);
+    EXPECT_EQ(c.doors._buffer[0].bearing, -0.75);
+  }
+  {
+    autonomy_DoorState c{};
+    Arena arena;
+    const auto value = test::make_door_state(Variant::Full);  // outlives c, which points into it
+    DdsType<msg::DoorState>::to_c(value, c, arena);
+    EXPECT_EQ(c.angle, 0.625);
+    EXPECT_EQ(c.target_angle, 1.5);
+  }
+  {
+    autonomy_RadioLink c{};
+    Arena arena;
+    const auto value = test::make_radio_link(Variant::Full);  // outlives c, which points into it
+    DdsType<msg::RadioLink>::to_c(value, c, arena);
+    EXPECT_EQ(str(c.robot_a), test::kUtf8A);
+    EXPECT_EQ(str(c.robot_b), test::kUtf8B);
+    EXPECT_EQ(c.signal_dbm, -71.25);
+    EXPECT_EQ(c.margin_db, 18.75);
+  }
+  {
+    autonomy_TeamConnectivity c{};
+    Arena arena;
+    const auto value = test::make_team_connectivity(Variant::Full);  // outlives c, which points into it
+    DdsType<msg::TeamConnectivity>::to_c(value, c, arena);
+    ASSERT_EQ(c.components._length, 3u);
+    ASSERT_EQ(c.components._buffer[0].robots._length, 2u);
+    EXPECT_EQ(str(c.components._buffer[0].robots._buffer[1]), "r2");
+    EXPECT_EQ(c.components._buffer[1].robots._length, 0u);
+  }
+  {
+    autonomy_TeamDelivery c{};
+    Arena arena;
+    const auto value = test::make_team_delivery(Variant::Full);  // outlives c, which points into it
+    DdsType<msg::TeamDelivery>::to_c(value, c, arena);
+    EXPECT_EQ(str(c.recipient), test::kUtf8B);
+    EXPECT_EQ(str(c.from), test::kUtf8A);
+    EXPECT_EQ(str(c.to), "*");
+    EXPECT_EQ(c.sent_time_ns, 900'000'000'001);
+    EXPECT_EQ(c.delivered_time_ns, 900'003'000'002);
+    EXPECT_EQ(c.hops, 3u);
+  }
+  {
+    autonomy_DoorCommand c{};
+    Arena arena;
+    const auto value = test::make_door_command(Variant::Full);  // outlives c, which points into it
+    DdsType<msg::DoorCommand>::to_c(value, c, arena);
+    EXPECT_EQ(str(c.door_id), test::kUtf8C);
+    EXPECT_EQ(c.angle, 1.375);
+  }
+}
+
+TEST(ConversionsTest, WorldV2KeysAreTheDocumentedOnes) {
+  EXPECT_EQ(DdsType<msg::RangeScan>::descriptor()->m_nkeys, 1u);
+  EXPECT_EQ(DdsType<msg::RadioLink>::descriptor()->m_nkeys, 2u);  // robot_a, robot_b
+  EXPECT_EQ(DdsType<msg::TeamConnectivity>::descriptor()->m_nkeys, 0u);
+  EXPECT_EQ(DdsType<msg::TeamDelivery>::descriptor()->m_nkeys, 1u);
+  EXPECT_STREQ(DdsType<msg::DoorState>::type_name(), "autonomy::DoorState");
+  EXPECT_STREQ(DdsType<msg::TeamDelivery>::type_name(), "autonomy::TeamDelivery");
+}
+
 // ---- to_c puts each value in the C field of the same name (a swap in both directions would
 // still round-trip) ----
 
@@ -120,7 +228,8 @@ TEST(ConversionsTest, ClockTypesToCFields) {
   {
     autonomy_SimClock c{};
     Arena arena;
-    DdsType<msg::SimClock>::to_c(test::make_sim_clock(Variant::Full), c, arena);
+    const auto value = test::make_sim_clock(Variant::Full);  // outlives c, which points into it
+    DdsType<msg::SimClock>::to_c(value, c, arena);
     EXPECT_EQ(c.tick, 7'000'000'001);
     EXPECT_EQ(c.sim_time_ns, 123'456'789'012);
     EXPECT_EQ(c.step_ns, 20'000'001);
@@ -131,14 +240,16 @@ TEST(ConversionsTest, ClockTypesToCFields) {
     autonomy_LockstepRegistration c{};
     c.active = true;
     Arena arena;
-    DdsType<msg::LockstepRegistration>::to_c(test::make_registration(Variant::Full), c, arena);
+    const auto value = test::make_registration(Variant::Full);  // outlives c, which points into it
+    DdsType<msg::LockstepRegistration>::to_c(value, c, arena);
     EXPECT_EQ(str(c.participant), test::kUtf8A);
     EXPECT_FALSE(c.active);
   }
   {
     autonomy_TickAck c{};
     Arena arena;
-    DdsType<msg::TickAck>::to_c(test::make_tick_ack(Variant::Full), c, arena);
+    const auto value = test::make_tick_ack(Variant::Full);  // outlives c, which points into it
+    DdsType<msg::TickAck>::to_c(value, c, arena);
     EXPECT_EQ(str(c.participant), test::kUtf8B);
     EXPECT_EQ(c.tick, -5'000'000'003);
     EXPECT_EQ(c.commands_sent, 4'000'000'000u);
@@ -149,7 +260,8 @@ TEST(ConversionsTest, RobotTypesToCFields) {
   {
     autonomy_RobotState c{};
     Arena arena;
-    DdsType<msg::RobotState>::to_c(test::make_robot_state(Variant::Full), c, arena);
+    const auto value = test::make_robot_state(Variant::Full);  // outlives c, which points into it
+    DdsType<msg::RobotState>::to_c(value, c, arena);
     EXPECT_EQ(str(c.robot_id), test::kUtf8A);
     EXPECT_EQ(c.tick, 101);
     EXPECT_EQ(c.sim_time_ns, 202'000'000'003);
@@ -168,7 +280,8 @@ TEST(ConversionsTest, RobotTypesToCFields) {
   {
     autonomy_VelocityCommand c{};
     Arena arena;
-    DdsType<msg::VelocityCommand>::to_c(test::make_velocity_command(Variant::Full), c, arena);
+    const auto value = test::make_velocity_command(Variant::Full);  // outlives c, which points into it
+    DdsType<msg::VelocityCommand>::to_c(value, c, arena);
     EXPECT_EQ(str(c.robot_id), test::kUtf8A);
     EXPECT_EQ(str(c.source), test::kUtf8B);
     EXPECT_EQ(c.tick, 303);
@@ -179,7 +292,8 @@ TEST(ConversionsTest, RobotTypesToCFields) {
   {
     autonomy_CommandRejection c{};
     Arena arena;
-    DdsType<msg::CommandRejection>::to_c(test::make_command_rejection(Variant::Full), c, arena);
+    const auto value = test::make_command_rejection(Variant::Full);  // outlives c, which points into it
+    DdsType<msg::CommandRejection>::to_c(value, c, arena);
     EXPECT_EQ(str(c.robot_id), test::kUtf8A);
     EXPECT_EQ(str(c.source), test::kUtf8B);
     EXPECT_EQ(c.tick, 404);
@@ -191,7 +305,8 @@ TEST(ConversionsTest, SimulationTypesToCFields) {
   {
     autonomy_SpawnRequest c{};
     Arena arena;
-    DdsType<msg::SpawnRequest>::to_c(test::make_spawn_request(Variant::Full), c, arena);
+    const auto value = test::make_spawn_request(Variant::Full);  // outlives c, which points into it
+    DdsType<msg::SpawnRequest>::to_c(value, c, arena);
     EXPECT_EQ(str(c.request_id), test::kUtf8A);
     EXPECT_EQ(str(c.requester), test::kUtf8B);
     EXPECT_EQ(str(c.robot_id), test::kUtf8C);
@@ -203,7 +318,8 @@ TEST(ConversionsTest, SimulationTypesToCFields) {
   {
     autonomy_SpawnReply c{};
     Arena arena;
-    DdsType<msg::SpawnReply>::to_c(test::make_spawn_reply(Variant::Full), c, arena);
+    const auto value = test::make_spawn_reply(Variant::Full);  // outlives c, which points into it
+    DdsType<msg::SpawnReply>::to_c(value, c, arena);
     EXPECT_EQ(str(c.request_id), test::kUtf8A);
     EXPECT_EQ(str(c.robot_id), test::kUtf8B);
     EXPECT_EQ(c.status, autonomy_REQUEST_ACCEPTED);
@@ -212,7 +328,8 @@ TEST(ConversionsTest, SimulationTypesToCFields) {
   {
     autonomy_WorldMap c{};
     Arena arena;
-    DdsType<msg::WorldMap>::to_c(test::make_world_map(Variant::Full), c, arena);
+    const auto value = test::make_world_map(Variant::Full);  // outlives c, which points into it
+    DdsType<msg::WorldMap>::to_c(value, c, arena);
     EXPECT_EQ(str(c.name), test::kUtf8C);
     EXPECT_EQ(c.width, 40.5);
     EXPECT_EQ(c.height, 30.25);
@@ -230,14 +347,16 @@ TEST(ConversionsTest, SimulationTypesToCFields) {
   {
     autonomy_WorldMap c{};
     Arena arena;
-    DdsType<msg::WorldMap>::to_c(test::make_world_map(Variant::Empty), c, arena);
+    const auto value = test::make_world_map(Variant::Empty);  // outlives c, which points into it
+    DdsType<msg::WorldMap>::to_c(value, c, arena);
     EXPECT_EQ(str(c.name), "");
     EXPECT_EQ(c.obstacles._length, 0u);
   }
   {
     autonomy_SimulatorStatus c{};
     Arena arena;
-    DdsType<msg::SimulatorStatus>::to_c(test::make_sim_status(Variant::Full), c, arena);
+    const auto value = test::make_sim_status(Variant::Full);  // outlives c, which points into it
+    DdsType<msg::SimulatorStatus>::to_c(value, c, arena);
     EXPECT_EQ(c.tick, 505);
     EXPECT_EQ(c.sim_time_ns, 606'000'000'007);
     EXPECT_EQ(c.robots, 3u);
@@ -259,17 +378,20 @@ TEST(ConversionsTest, NavigationTypesToCFields) {
   {
     autonomy_NavGoal c{};
     Arena arena;
-    DdsType<msg::NavGoal>::to_c(test::make_nav_goal(Variant::Full), c, arena);
+    const auto value = test::make_nav_goal(Variant::Full);  // outlives c, which points into it
+    DdsType<msg::NavGoal>::to_c(value, c, arena);
     EXPECT_EQ(str(c.robot_id), test::kUtf8A);
     EXPECT_EQ(str(c.goal_id), test::kUtf8B);
     EXPECT_EQ(c.x, 9.5);
     EXPECT_EQ(c.y, -8.25);
     EXPECT_EQ(c.tolerance, 0.125);
+    EXPECT_EQ(str(c.constraint_set), test::kUtf8C);
   }
   {
     autonomy_GoalStatus c{};
     Arena arena;
-    DdsType<msg::GoalStatus>::to_c(test::make_goal_status(Variant::Full), c, arena);
+    const auto value = test::make_goal_status(Variant::Full);  // outlives c, which points into it
+    DdsType<msg::GoalStatus>::to_c(value, c, arena);
     EXPECT_EQ(str(c.robot_id), test::kUtf8A);
     EXPECT_EQ(str(c.goal_id), test::kUtf8B);
     EXPECT_EQ(c.state, autonomy_GOAL_PREEMPTED);
@@ -346,9 +468,10 @@ TEST(ConversionsTest, GoalStateMapsByName) {
   expect_enum_maps(v, f, cf, GoalState::Accepted, autonomy_GOAL_ACCEPTED);
   expect_enum_maps(v, f, cf, GoalState::Active, autonomy_GOAL_ACTIVE);
   expect_enum_maps(v, f, cf, GoalState::Reached, autonomy_GOAL_REACHED);
-  expect_enum_maps(v, f, cf, GoalState::Failed, autonomy_GOAL_FAILED);
+  expect_enum_maps(v, f, cf, GoalState::Blocked, autonomy_GOAL_BLOCKED);
   expect_enum_maps(v, f, cf, GoalState::Preempted, autonomy_GOAL_PREEMPTED);
   expect_enum_maps(v, f, cf, GoalState::Rejected, autonomy_GOAL_REJECTED);
+  expect_enum_maps(v, f, cf, GoalState::Cancelled, autonomy_GOAL_CANCELLED);
 }
 
 // ---- type names and descriptors ----

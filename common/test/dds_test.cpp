@@ -236,6 +236,28 @@ TEST_F(DdsTest, EveryMessageSurvivesTheWire) {
   expect_wire_round_trip(p, topics::nav_goal, test::make_nav_goal(Variant::Full), test::make_nav_goal(Variant::Empty));
   expect_wire_round_trip(p, topics::goal_status, test::make_goal_status(Variant::Full),
                          test::make_goal_status(Variant::Empty));
+  expect_wire_round_trip(p, topics::nav_cancel, test::make_nav_cancel(Variant::Full),
+                         test::make_nav_cancel(Variant::Empty));
+  expect_wire_round_trip(p, topics::mission_status, test::make_mission_status(Variant::Full),
+                         test::make_mission_status(Variant::Empty));
+  expect_wire_round_trip(p, topics::range_scan, test::make_range_scan(Variant::Full),
+                         test::make_range_scan(Variant::Empty));
+  expect_wire_round_trip(p, topics::pose_estimate, test::make_pose_estimate(Variant::Full),
+                         test::make_pose_estimate(Variant::Empty));
+  expect_wire_round_trip(p, topics::door_observation, test::make_door_observation(Variant::Full),
+                         test::make_door_observation(Variant::Empty));
+  expect_wire_round_trip(p, topics::truth_door, test::make_door_state(Variant::Full),
+                         test::make_door_state(Variant::Empty));
+  expect_wire_round_trip(p, topics::radio_link, test::make_radio_link(Variant::Full),
+                         test::make_radio_link(Variant::Empty));
+  expect_wire_round_trip(p, topics::radio_team, test::make_team_connectivity(Variant::Full),
+                         test::make_team_connectivity(Variant::Empty));
+  expect_wire_round_trip(p, topics::team_outbox, test::make_team_message(Variant::Full),
+                         test::make_team_message(Variant::Empty));
+  expect_wire_round_trip(p, topics::team_inbox, test::make_team_delivery(Variant::Full),
+                         test::make_team_delivery(Variant::Empty));
+  expect_wire_round_trip(p, topics::door_command, test::make_door_command(Variant::Full),
+                         test::make_door_command(Variant::Empty));
 }
 
 // A reader of another QoS class: a volatile reader on a state topic still gets live samples,

@@ -5,6 +5,9 @@
 #include "common/msg/navigation.hpp"
 #include "common/msg/robot.hpp"
 #include "common/msg/simulation.hpp"
+#include "common/msg/perception.hpp"
+#include "common/msg/radio.hpp"
+#include "common/msg/truth.hpp"
 #include "common/msg/system.hpp"
 
 #include <array>
@@ -145,6 +148,10 @@ inline msg::SimulatorStatus make_sim_status(Variant v) {
   m.commands_rejected = 11;
   m.participants_dropped = 12;
   m.mean_step_us = 45.5;
+  m.team_messages_delivered = 13;
+  m.team_messages_dropped_no_route = 14;
+  m.team_messages_dropped_lost = 15;
+  m.team_messages_dropped_invalid = 16;
   return m;
 }
 
@@ -155,6 +162,27 @@ inline msg::NavGoal make_nav_goal(Variant v) {
   m.x = 9.5;
   m.y = -8.25;
   m.tolerance = 0.125;
+  m.constraint_set = s(v, kUtf8C);
+  return m;
+}
+
+inline msg::NavCancel make_nav_cancel(Variant v) {
+  msg::NavCancel m;
+  m.robot_id = s(v, kUtf8A);
+  m.goal_id = s(v, kUtf8B);
+  m.reason = s(v, kUtf8C);
+  return m;
+}
+
+inline msg::MissionStatus make_mission_status(Variant v) {
+  msg::MissionStatus m;
+  m.robot_id = s(v, kUtf8A);
+  m.mission = s(v, kUtf8B);
+  m.state = s(v, kUtf8C);
+  m.event = s(v, kUtf8A);
+  m.reason = s(v, kUtf8B);
+  m.finished = v == Variant::Full;
+  m.tick = 808;
   return m;
 }
 
@@ -166,6 +194,97 @@ inline msg::GoalStatus make_goal_status(Variant v) {
   m.reason = s(v, kUtf8C);
   m.tick = 707;
   m.distance_to_goal = 6.125;
+  return m;
+}
+
+// --- Simulator world v2: perception, ground truth, radio, team messages, door commands ---
+
+inline msg::RangeScan make_range_scan(Variant v) {
+  msg::RangeScan m;
+  m.robot_id = s(v, kUtf8A);
+  m.tick = 808;
+  m.angle_min = -1.5;
+  m.angle_increment = 0.0625;
+  m.max_range = 7.5;
+  if (v == Variant::Full) m.ranges = {0.5f, 7.5f, 1.25f, 0.0f, 3.75f};
+  return m;
+}
+
+inline msg::PoseEstimate make_pose_estimate(Variant v) {
+  msg::PoseEstimate m;
+  m.robot_id = s(v, kUtf8B);
+  m.tick = 809;
+  m.x = 4.125;
+  m.y = -3.5;
+  m.theta = 2.75;
+  return m;
+}
+
+inline msg::DoorObservation make_door_observation(Variant v) {
+  msg::DoorObservation m;
+  m.robot_id = s(v, kUtf8A);
+  m.tick = 810;
+  if (v == Variant::Full) m.doors = {{kUtf8C, 1.25, 2.5, -0.75}, {"", 0.0, 3.5, 3.0}, {"d-3", 0.5, 0.25, 0.125}};
+  return m;
+}
+
+inline msg::DoorState make_door_state(Variant v) {
+  msg::DoorState m;
+  m.door_id = s(v, kUtf8C);
+  m.tick = 811;
+  m.angle = 0.625;
+  m.target_angle = 1.5;
+  m.closed = true;
+  m.blocked = true;
+  return m;
+}
+
+inline msg::RadioLink make_radio_link(Variant v) {
+  msg::RadioLink m;
+  m.robot_a = s(v, kUtf8A);
+  m.robot_b = s(v, kUtf8B);
+  m.tick = 812;
+  m.signal_dbm = -71.25;
+  m.margin_db = 18.75;
+  m.connected = true;
+  return m;
+}
+
+inline msg::TeamConnectivity make_team_connectivity(Variant v) {
+  msg::TeamConnectivity m;
+  m.tick = 813;
+  if (v == Variant::Full) m.components = {{{kUtf8A, "r2"}}, {{}}, {{kUtf8B}}};
+  m.fully_connected = false;  // default is true
+  return m;
+}
+
+inline msg::TeamMessage make_team_message(Variant v) {
+  msg::TeamMessage m;
+  m.from = s(v, kUtf8A);
+  m.to = s(v, kUtf8B);
+  m.message_id = s(v, "m-17");
+  m.payload = s(v, kUtf8C);
+  return m;
+}
+
+inline msg::TeamDelivery make_team_delivery(Variant v) {
+  msg::TeamDelivery m;
+  m.recipient = s(v, kUtf8B);
+  m.from = s(v, kUtf8A);
+  m.to = s(v, "*");
+  m.message_id = s(v, "m-18");
+  m.payload = s(v, kUtf8C);
+  m.sent_time_ns = 900'000'000'001;
+  m.delivered_time_ns = 900'003'000'002;
+  m.hops = 3;
+  return m;
+}
+
+inline msg::DoorCommand make_door_command(Variant v) {
+  msg::DoorCommand m;
+  m.door_id = s(v, kUtf8C);
+  m.angle = 1.375;
+  m.source = s(v, kUtf8B);
   return m;
 }
 
@@ -199,12 +318,47 @@ inline auto fields(const msg::WorldMap& m) {
 }
 inline auto fields(const msg::SimulatorStatus& m) {
   return std::make_tuple(m.tick, m.sim_time_ns, m.robots, m.lockstep_participants, m.commands_applied,
-                         m.commands_rejected, m.participants_dropped, m.mean_step_us);
+                         m.commands_rejected, m.participants_dropped, m.mean_step_us, m.team_messages_delivered,
+                         m.team_messages_dropped_no_route, m.team_messages_dropped_lost,
+                         m.team_messages_dropped_invalid);
 }
-inline auto fields(const msg::NavGoal& m) { return std::make_tuple(m.robot_id, m.goal_id, m.x, m.y, m.tolerance); }
+inline auto fields(const msg::NavGoal& m) {
+  return std::make_tuple(m.robot_id, m.goal_id, m.x, m.y, m.tolerance, m.constraint_set);
+}
+inline auto fields(const msg::NavCancel& m) { return std::make_tuple(m.robot_id, m.goal_id, m.reason); }
+inline auto fields(const msg::MissionStatus& m) {
+  return std::make_tuple(m.robot_id, m.mission, m.state, m.event, m.reason, m.finished, m.tick);
+}
 inline auto fields(const msg::GoalStatus& m) {
   return std::make_tuple(m.robot_id, m.goal_id, static_cast<int>(m.state), m.reason, m.tick, m.distance_to_goal);
 }
+
+inline auto fields(const msg::RangeScan& m) {
+  return std::make_tuple(m.robot_id, m.tick, m.angle_min, m.angle_increment, m.max_range, m.ranges);
+}
+inline auto fields(const msg::PoseEstimate& m) { return std::make_tuple(m.robot_id, m.tick, m.x, m.y, m.theta); }
+inline auto fields(const msg::DoorObservation& m) {
+  std::vector<std::tuple<std::string, double, double, double>> doors;
+  for (const auto& d : m.doors) doors.emplace_back(d.door_id, d.angle_estimate, d.distance, d.bearing);
+  return std::make_tuple(m.robot_id, m.tick, doors);
+}
+inline auto fields(const msg::DoorState& m) {
+  return std::make_tuple(m.door_id, m.tick, m.angle, m.target_angle, m.closed, m.blocked);
+}
+inline auto fields(const msg::RadioLink& m) {
+  return std::make_tuple(m.robot_a, m.robot_b, m.tick, m.signal_dbm, m.margin_db, m.connected);
+}
+inline auto fields(const msg::TeamConnectivity& m) {
+  std::vector<std::vector<std::string>> components;
+  for (const auto& c : m.components) components.push_back(c.robots);
+  return std::make_tuple(m.tick, components, m.fully_connected);
+}
+inline auto fields(const msg::TeamMessage& m) { return std::make_tuple(m.from, m.to, m.message_id, m.payload); }
+inline auto fields(const msg::TeamDelivery& m) {
+  return std::make_tuple(m.recipient, m.from, m.to, m.message_id, m.payload, m.sent_time_ns, m.delivered_time_ns,
+                         m.hops);
+}
+inline auto fields(const msg::DoorCommand& m) { return std::make_tuple(m.door_id, m.angle, m.source); }
 
 #ifdef AUTONOMY_LOOPBACK_URI
 // The loopback Cyclone profile (deploy/dds/loopback.xml); call before creating a participant.

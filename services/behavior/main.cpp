@@ -1,7 +1,10 @@
-// The behavior controller process: drives one robot (--robot ID) to the goals it receives.
+// The behavior controller process: drives one robot (--robot ID) to the goals it receives, or
+// runs a mission for it (--mission FILE).
+#include "services/behavior/core/mission/mission_loader.hpp"
 #include "services/behavior/dds/behavior_node.hpp"
 
 #include <memory>
+#include <stdexcept>
 
 using namespace autonomy;
 
@@ -9,6 +12,10 @@ int main(int argc, char** argv) {
   behavior::BehaviorNodeOptions options;
   std::vector<double> start;
   std::vector<double> goal;
+  std::string goal_constraints;
+  std::string plans_file;
+  std::string layers_file;
+  std::string mission_file;
   return service::run_service(
       argc, argv, "behavior", "Behavior controller for one robot: goals in, velocity commands out",
       service::InstanceFlag::Robot,
@@ -16,18 +23,51 @@ int main(int argc, char** argv) {
         app.add_option("--start", start, "Spawn pose X Y [THETA] (default: the scenario's start for this robot)")
             ->expected(2, 3);
         app.add_option("--goal", goal, "Goal X Y to pursue as soon as the robot is ready")->expected(2);
+        app.add_option("--constraint", goal_constraints, "Constraint set of --goal (e.g. comm_attenuation)");
         app.add_option("--resolution", options.grid_resolution_m, "Planning grid resolution in m")
             ->check(CLI::Range(0.01, 5.0))
             ->capture_default_str();
         app.add_option("--stall-timeout", options.tracker.stall_timeout_s,
-                       "Seconds without progress before a goal fails")
+                       "Seconds without progress before a goal is blocked")
             ->check(CLI::PositiveNumber)
             ->capture_default_str();
+        app.add_option("--collision-timeout", options.tracker.collision_timeout_s,
+                       "Seconds continuously in collision before a goal is blocked (0: never)")
+            ->check(CLI::NonNegativeNumber)
+            ->capture_default_str();
+        app.add_option("--plans", plans_file,
+                       "Plan resource file (plan_tool build): stored plans used when goal and constraint set match");
+        app.add_option("--layers", layers_file,
+                       "Mission file whose constraint layers goals may name in constraint_set");
+        app.add_option("--mission", mission_file, "Run this mission (idl/mission.proto text) instead of taking goals");
       },
       [&](service::Service& service) {
         options.robot_id = service.options().instance;
         if (!start.empty()) options.start = geometry::Pose2{start[0], start[1], start.size() > 2 ? start[2] : 0.0};
-        if (!goal.empty()) options.initial_goal = msg::NavGoal{options.robot_id, "cli-goal", goal[0], goal[1], 0.0};
+        if (!goal.empty())
+          options.initial_goal = msg::NavGoal{options.robot_id, "cli-goal", goal[0], goal[1], 0.0, goal_constraints};
+        if (!plans_file.empty()) {
+          auto loaded = behavior::load_plan_resource(plans_file);
+          if (!loaded.ok()) throw std::runtime_error(loaded.error);
+          spdlog::info("{}: {} stored plans", plans_file, loaded.resource->plans.size());
+          options.plans = std::move(loaded.resource);
+        }
+        if (!layers_file.empty()) {
+          auto loaded = behavior::load_mission_file(layers_file);
+          if (!loaded.ok()) throw std::runtime_error(loaded.error_text());
+          for (const auto& l : loaded.mission->layers) options.layers[l.name] = l.areas;
+        }
+        if (!mission_file.empty()) {
+          auto loaded = behavior::load_mission_file(mission_file);
+          if (!loaded.ok()) throw std::runtime_error("mission file has errors:\n" + loaded.error_text());
+          if (!loaded.mission->robot.empty() && loaded.mission->robot != options.robot_id) {
+            throw std::runtime_error(mission_file + ": the mission is for robot " + loaded.mission->robot +
+                                     ", not " + options.robot_id);
+          }
+          spdlog::info("mission '{}' from {}: {} states, {} plan sets", loaded.mission->name, mission_file,
+                       loaded.mission->states.size(), loaded.mission->plan_sets.size());
+          options.mission = std::move(loaded.mission);
+        }
         return std::make_unique<behavior::BehaviorNode>(service, options);
       });
 }

@@ -1,11 +1,13 @@
 #include "simulator/dds/simulator_node.hpp"
 
+#include "simulator/dds/radio_setup.hpp"
 #include "simulator/report/run_svg.hpp"
 
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <stdexcept>
 
 namespace autonomy::sim {
@@ -38,13 +40,42 @@ VelocityCommand from_msg(const msg::VelocityCommand& c) { return {c.robot_id, c.
 
 int64_t to_ns(double seconds) { return static_cast<int64_t>(std::llround(seconds * 1e9)); }
 
+// A link sample is written when the pair is new, when connected changes, or when the signal moved
+// by more than this since the last sample of the pair.
+constexpr double kLinkSignalChangeDb = 1.0;
+
+bool has_range_sensor(const RobotSpec& spec) {
+  return spec.sensors.range.rays > 0 && spec.sensors.range.max_range_m > 0.0;
+}
+bool has_door_sensor(const RobotSpec& spec) { return spec.sensors.doors.range_m > 0.0; }
+// SensorSpec has no presence flag for the pose sensor: a robot has one when its pose sensor is
+// noisy or it has any other sensor (a robot that senses localises itself).
+bool has_pose_sensor(const RobotSpec& spec) {
+  return spec.sensors.pose.position_noise_m > 0.0 || spec.sensors.pose.heading_noise_rad > 0.0 ||
+         has_range_sensor(spec) || has_door_sensor(spec);
+}
+
+msg::DoorState to_msg(const DoorStatus& d, int64_t tick) {
+  return {d.id, tick, d.angle, d.target_angle, d.closed(), d.blocked};
+}
+
+bool same_door_state(const msg::DoorState& a, const msg::DoorState& b) {
+  return a.angle == b.angle && a.target_angle == b.target_angle && a.blocked == b.blocked;
+}
+
+// Separate from the world's streams (door schedules, sensor noise), so sending messages does not
+// change what robots sense.
+constexpr uint64_t kDeliveryStreamSalt = 0x7465616d6d736773ull;  // "teammsgs"
+
 }  // namespace
 
-SimulatorNode::SimulatorNode(service::Service& service, World world, SimulatorRunOptions options)
+SimulatorNode::SimulatorNode(service::Service& service, Scenario scenario, SimulatorRunOptions options)
     : service_(service),
-      world_(std::move(world)),
+      scenario_(std::move(scenario)),
+      world_(scenario_.world),
       options_(std::move(options)),
       last_advance_(std::chrono::steady_clock::now()),
+      radio_(make_radio_model(scenario_)),
       clock_topic_(service.participant(), dds::topics::clock),
       state_topic_(service.participant(), dds::topics::robot_state),
       cmd_topic_(service.participant(), dds::topics::cmd_vel),
@@ -55,16 +86,43 @@ SimulatorNode::SimulatorNode(service::Service& service, World world, SimulatorRu
       spawn_reply_topic_(service.participant(), dds::topics::spawn_reply),
       map_topic_(service.participant(), dds::topics::world_map),
       status_topic_(service.participant(), dds::topics::sim_status),
+      scan_topic_(service.participant(), dds::topics::range_scan),
+      pose_topic_(service.participant(), dds::topics::pose_estimate),
+      door_observation_topic_(service.participant(), dds::topics::door_observation),
+      door_truth_topic_(service.participant(), dds::topics::truth_door),
+      link_topic_(service.participant(), dds::topics::radio_link),
+      team_topic_(service.participant(), dds::topics::radio_team),
+      outbox_topic_(service.participant(), dds::topics::team_outbox),
+      inbox_topic_(service.participant(), dds::topics::team_inbox),
+      door_command_topic_(service.participant(), dds::topics::door_command),
+      goal_status_topic_(service.participant(), dds::topics::goal_status),
       clock_writer_(service.participant(), clock_topic_),
       state_writer_(service.participant(), state_topic_),
       rejection_writer_(service.participant(), rejection_topic_),
       spawn_reply_writer_(service.participant(), spawn_reply_topic_),
       map_writer_(service.participant(), map_topic_),
       status_writer_(service.participant(), status_topic_),
+      scan_writer_(service.participant(), scan_topic_),
+      pose_writer_(service.participant(), pose_topic_),
+      door_observation_writer_(service.participant(), door_observation_topic_),
+      door_truth_writer_(service.participant(), door_truth_topic_),
+      link_writer_(service.participant(), link_topic_),
+      team_writer_(service.participant(), team_topic_),
+      inbox_writer_(service.participant(), inbox_topic_),
       cmd_reader_(service.participant(), cmd_topic_),
       ack_reader_(service.participant(), ack_topic_),
       registration_reader_(service.participant(), registration_topic_),
-      spawn_request_reader_(service.participant(), spawn_request_topic_) {
+      spawn_request_reader_(service.participant(), spawn_request_topic_),
+      door_command_reader_(service.participant(), door_command_topic_),
+      outbox_reader_(service.participant(), outbox_topic_),
+      goal_status_reader_(service.participant(), goal_status_topic_) {
+  if (options_.radio_period_ticks < 1) throw std::invalid_argument("radio period must be at least 1 tick");
+  delivery_rng_.seed(options_.settings.seed ^ kDeliveryStreamSalt);
+  if (!options_.metrics_prefix.empty()) {
+    const WorldSpec& w = world_.spec();
+    metrics_.emplace(CoverageSettings{{0.0, 0.0, w.width, w.height}, 1.0, 3.0},
+                     [this](const geometry::Vec2& a, const geometry::Vec2& b) { return world_.line_of_sight(a, b); });
+  }
   if (!options_.trajectory_csv.empty()) {
     trajectory_.open(options_.trajectory_csv);
     if (!trajectory_) throw std::runtime_error("cannot write trajectory file " + options_.trajectory_csv);
@@ -79,13 +137,18 @@ SimulatorNode::SimulatorNode(service::Service& service, World world, SimulatorRu
   loop.on_samples<msg::TickAck>(ack_reader_, [this](auto s) { on_acks(std::move(s)); });
   loop.on_samples<msg::LockstepRegistration>(registration_reader_, [this](auto s) { on_registrations(std::move(s)); });
   loop.on_samples<msg::SpawnRequest>(spawn_request_reader_, [this](auto s) { on_spawn_requests(std::move(s)); });
+  loop.on_samples<msg::DoorCommand>(door_command_reader_, [this](auto s) { on_door_commands(std::move(s)); });
+  loop.on_samples<msg::TeamMessage>(outbox_reader_, [this](auto s) { on_outbox(std::move(s)); });
+  loop.on_samples<msg::GoalStatus>(goal_status_reader_, [this](auto s) { on_goal_status(std::move(s)); });
   loop.every(kHousekeepingPeriod, [this] { on_timer(); });
   loop.every(kStatusPeriod, [this] { publish_status(); });
 
   open_tick();
-  spdlog::info("world '{}' {}x{} m, {} obstacles, {} robots, {} mode, step {} s", spec.name, spec.width, spec.height,
-               spec.obstacles.size(), world_.robots().size(), lockstep() ? "lockstep" : "paced",
-               options_.settings.step_s);
+  spdlog::info("world '{}' {}x{} m, {} obstacles, {} polygons, {} doors, {} robots, {} mode, step {} s", spec.name,
+               spec.width, spec.height, spec.obstacles.size(), spec.polygons.size(), spec.doors.size(),
+               world_.robots().size(), lockstep() ? "lockstep" : "paced", options_.settings.step_s);
+  spdlog::info("radio: {} attenuators ({} areas), link table every {} tick(s)", radio_.attenuators().size(),
+               scenario_.radio.areas.size(), options_.radio_period_ticks);
   service.set_ready();
 }
 
@@ -93,8 +156,11 @@ SimulatorNode::~SimulatorNode() {
   try {
     publish_status();
     write_picture();
+    write_metrics();
     spdlog::info("stopped at tick {}: {} commands applied, {} rejected, {} participants dropped", tick_,
                  commands_applied_, commands_rejected_, participants_dropped_);
+    spdlog::info("team messages: {} delivered, dropped {} without route, {} lost, {} invalid", messages_delivered_,
+                 messages_no_route_, messages_lost_, messages_invalid_);
   } catch (const std::exception& e) {
     spdlog::warn("final status not published: {}", e.what());
   }
@@ -237,7 +303,10 @@ void SimulatorNode::handle_spawns() {
                    r.requester, tick_);
       // The robot is part of the current tick from now on: its controller must be able to act on
       // this tick's state before the world may step.
-      if (!result.already_present) publish_robot_state(*world_.robot(r.robot_id));
+      if (!result.already_present) {
+        publish_robot_state(*world_.robot(r.robot_id));
+        radio_dirty_ = true;
+      }
     }
     else
       spdlog::warn("spawn of robot '{}' for {} rejected: {}", r.robot_id, r.requester, result.reason);
@@ -249,7 +318,13 @@ void SimulatorNode::handle_spawns() {
 
 void SimulatorNode::open_tick() {
   const int64_t now_ns = to_ns(static_cast<double>(tick_) * options_.settings.step_s);
-  for (const auto& r : world_.robots()) publish_robot_state(r);
+  const std::vector<RobotStatus> robots = world_.robots();
+  if (radio_dirty_ || tick_ % options_.radio_period_ticks == 0) update_radio();
+  deliver_due_messages();
+  for (const auto& r : robots) publish_robot_state(r);
+  publish_perception(robots);
+  publish_door_changes();
+  if (tick_ > 0) record_metrics(robots);
   const double now_s = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
   barrier_.begin_tick(tick_, now_s);
   clock_writer_.write({tick_, now_ns, to_ns(options_.settings.step_s),
@@ -259,7 +334,7 @@ void SimulatorNode::open_tick() {
 void SimulatorNode::publish_robot_state(const RobotStatus& r) {
   const int64_t now_ns = to_ns(static_cast<double>(tick_) * options_.settings.step_s);
   state_writer_.write(to_msg(r, tick_, now_ns));
-  if (!options_.picture_svg.empty()) paths_.record(r.id, r.pose.position());
+  if (!options_.picture_svg.empty()) paths_.record(r.id, r.pose.position(), connected_to_teammate(r.id));
   if (trajectory_.is_open())
     trajectory_ << tick_ << ',' << static_cast<double>(now_ns) * 1e-9 << ',' << r.id << ',' << r.pose.x << ','
                 << r.pose.y << ',' << r.pose.theta << '\n';
@@ -271,6 +346,12 @@ void SimulatorNode::write_picture() const {
   picture.world = &world_.spec();
   picture.paths = paths_.paths();
   picture.final_robots = world_.robots();
+  picture.path_connected = paths_.connected_flags();
+  for (const auto& p : world_.spec().polygons) picture.polygon_obstacles.push_back(p.vertices);
+  for (const auto& d : world_.doors()) picture.doors.push_back({d.leaf.hinge, d.leaf.tip, !d.closed(), d.id});
+  for (const auto& a : scenario_.radio.areas) picture.attenuating_areas.push_back({a.vertices, a.name});
+  for (const auto& p : scenario_.places) picture.places.push_back({p.name, p.position, 0.3});
+  for (const auto& w : scenario_.waypoints) picture.places.push_back({w.name, w.position, 0.0});
   picture.caption = world_.spec().name + ", tick " + std::to_string(tick_) + " (" +
                     std::to_string(static_cast<int>(world_.time_s())) + " s simulated)";
   std::ofstream out(options_.picture_svg);
@@ -289,7 +370,222 @@ void SimulatorNode::publish_status() {
   s.commands_rejected = commands_rejected_;
   s.participants_dropped = participants_dropped_;
   s.mean_step_us = tick_ > 0 ? step_compute_us_total_ / static_cast<double>(tick_) : 0.0;
+  s.team_messages_delivered = messages_delivered_;
+  s.team_messages_dropped_no_route = messages_no_route_;
+  s.team_messages_dropped_lost = messages_lost_;
+  s.team_messages_dropped_invalid = messages_invalid_;
   status_writer_.write(s);
+}
+
+// --- Door commands -----------------------------------------------------------------------------
+
+void SimulatorNode::on_door_commands(std::vector<dds::Sample<msg::DoorCommand>> samples) {
+  for (const auto& s : samples) {
+    if (!s.valid) continue;
+    const msg::DoorCommand& c = s.value;
+    const CommandResult result = world_.set_door(c.door_id, c.angle);
+    if (result.accepted) {
+      spdlog::info("door '{}' told to take angle {} by '{}' at tick {}", c.door_id, c.angle, c.source, tick_);
+      continue;
+    }
+    ++commands_rejected_;
+    const std::string reason = "door '" + c.door_id + "': " + result.reason;
+    spdlog::warn("rejected door command from '{}' at tick {}: {}", c.source, tick_, reason);
+    rejection_writer_.write({"", c.source, tick_, reason});
+  }
+}
+
+// --- Goal status (for the metrics' "finished") ------------------------------------------------
+
+void SimulatorNode::on_goal_status(std::vector<dds::Sample<msg::GoalStatus>> samples) {
+  for (const auto& s : samples)
+    if (s.valid) goal_reached_[s.value.robot_id] = s.value.state == msg::GoalState::Reached;
+}
+
+// --- Radio ------------------------------------------------------------------------------------
+
+void SimulatorNode::update_radio() {
+  radio_dirty_ = false;
+  const std::vector<RobotStatus> robots = world_.robots();  // sorted by id: the table's indices
+  radio_ids_.clear();
+  std::vector<geometry::Vec2> positions;
+  for (const auto& r : robots) {
+    radio_ids_.push_back(r.id);
+    positions.push_back(r.pose.position());
+  }
+  radio_.update(positions, links_);
+  connectivity_.emplace(links_);
+
+  for (size_t i = 0; i < radio_ids_.size(); ++i) {
+    for (size_t j = i + 1; j < radio_ids_.size(); ++j) {
+      const radio::LinkQuality& q = links_.at(i, j);
+      const auto key = std::make_pair(radio_ids_[i], radio_ids_[j]);
+      auto it = published_links_.find(key);
+      if (it != published_links_.end() && it->second.connected == q.connected &&
+          std::abs(it->second.signal_dbm - q.signal_dbm) <= kLinkSignalChangeDb)
+        continue;
+      msg::RadioLink link{key.first, key.second, tick_, q.signal_dbm, q.margin_db, q.connected};
+      if (it != published_links_.end() && it->second.connected != q.connected)
+        spdlog::info("radio link {}-{} {} at tick {} ({:.1f} dBm, margin {:.1f} dB)", key.first, key.second,
+                     q.connected ? "connected" : "lost", tick_, q.signal_dbm, q.margin_db);
+      link_writer_.write(link);
+      published_links_[key] = std::move(link);
+    }
+  }
+
+  std::vector<std::vector<std::string>> components;
+  for (const auto& c : connectivity_->components()) {
+    std::vector<std::string> ids;
+    for (size_t i : c) ids.push_back(radio_ids_[i]);
+    components.push_back(std::move(ids));
+  }
+  if (!published_components_ || *published_components_ != components) {
+    msg::TeamConnectivity team;
+    team.tick = tick_;
+    for (const auto& c : components) team.components.push_back({c});
+    team.fully_connected = connectivity_->fully_connected();
+    team_writer_.write(team);
+    published_components_ = std::move(components);
+  }
+}
+
+bool SimulatorNode::connected_to_teammate(const std::string& robot) const {
+  if (!connectivity_) return false;
+  const auto it = std::lower_bound(radio_ids_.begin(), radio_ids_.end(), robot);
+  if (it == radio_ids_.end() || *it != robot) return false;
+  return !connectivity_->neighbours(static_cast<size_t>(it - radio_ids_.begin())).empty();
+}
+
+void SimulatorNode::on_outbox(std::vector<dds::Sample<msg::TeamMessage>> samples) {
+  if (radio_dirty_) update_radio();
+  const double now_s = static_cast<double>(tick_) * options_.settings.step_s;
+  const auto index_of = [this](const std::string& id) -> std::optional<size_t> {
+    const auto it = std::lower_bound(radio_ids_.begin(), radio_ids_.end(), id);
+    if (it == radio_ids_.end() || *it != id) return std::nullopt;
+    return static_cast<size_t>(it - radio_ids_.begin());
+  };
+  for (auto& s : samples) {
+    if (!s.valid) continue;
+    const msg::TeamMessage& m = s.value;
+    const auto from = index_of(m.from);
+    std::vector<size_t> recipients;
+    if (m.to == msg::kBroadcast) {
+      for (size_t i = 0; i < radio_ids_.size(); ++i)
+        if (!from || i != *from) recipients.push_back(i);
+    } else if (const auto to = index_of(m.to); to && (!from || *to != *from)) {
+      recipients.push_back(*to);
+    }
+    if (!from || recipients.empty()) {
+      ++messages_invalid_;
+      spdlog::debug("team message '{}' from '{}' to '{}' dropped: {}", m.message_id, m.from, m.to,
+                    !from ? "unknown sender" : "unknown recipient");
+      continue;
+    }
+    for (size_t to : recipients) {
+      const auto route = connectivity_->route(*from, to);
+      if (!route) {
+        ++messages_no_route_;
+        spdlog::debug("team message '{}' from {} to {} dropped at tick {}: no route", m.message_id, m.from,
+                      radio_ids_[to], tick_);
+        continue;
+      }
+      const radio::DeliveryDecision d =
+          radio::decide(radio_.parameters().delivery, radio::route_links(links_, *route), now_s, delivery_rng_);
+      if (!d.delivered()) {
+        ++(d.outcome == radio::DeliveryOutcome::kLost ? messages_lost_ : messages_no_route_);
+        spdlog::debug("team message '{}' from {} to {} dropped at tick {}: {}", m.message_id, m.from, radio_ids_[to],
+                      tick_, d.outcome == radio::DeliveryOutcome::kLost ? "lost on a weak hop" : "no route");
+        continue;
+      }
+      relay_.push(d.deliver_at_s, msg::TeamDelivery{radio_ids_[to], m.from, m.to, m.message_id, m.payload,
+                                                    to_ns(now_s), to_ns(d.deliver_at_s),
+                                                    static_cast<uint32_t>(route->size() - 1)});
+    }
+  }
+}
+
+void SimulatorNode::deliver_due_messages() {
+  const double now_s = static_cast<double>(tick_) * options_.settings.step_s;
+  for (auto& due : relay_.take_due(now_s)) {
+    ++messages_delivered_;
+    inbox_writer_.write(due.payload);
+  }
+}
+
+// --- Perception and ground truth ----------------------------------------------------------------
+
+void SimulatorNode::publish_perception(const std::vector<RobotStatus>& robots) {
+  for (const auto& r : robots) {
+    const auto spec = world_.robot_spec(r.id);
+    if (!spec) continue;
+    if (has_range_sensor(*spec)) {
+      if (auto scan = world_.sense(r.id)) {
+        msg::RangeScan m;
+        m.robot_id = r.id;
+        m.tick = tick_;
+        m.angle_min = scan->angle_min;
+        m.angle_increment = scan->angle_increment;
+        m.max_range = scan->max_range_m;
+        m.ranges = std::move(scan->ranges);
+        scan_writer_.write(m);
+      }
+    }
+    if (has_door_sensor(*spec)) {
+      const auto seen = world_.observe_doors(r.id);
+      if (!seen.empty()) {
+        msg::DoorObservation m;
+        m.robot_id = r.id;
+        m.tick = tick_;
+        for (const auto& o : seen) m.doors.push_back({o.door_id, o.angle_estimate, o.distance_m, o.bearing_rad});
+        door_observation_writer_.write(m);
+      }
+    }
+    if (has_pose_sensor(*spec)) {
+      if (const auto pose = world_.observe_pose(r.id))
+        pose_writer_.write({r.id, tick_, pose->x, pose->y, pose->theta});
+    }
+  }
+}
+
+void SimulatorNode::publish_door_changes() {
+  const std::vector<DoorStatus> doors = world_.doors();
+  published_doors_.resize(doors.size());
+  for (size_t i = 0; i < doors.size(); ++i) {
+    msg::DoorState now = to_msg(doors[i], tick_);
+    if (published_doors_[i] && same_door_state(*published_doors_[i], now)) continue;
+    if (published_doors_[i] && published_doors_[i]->closed != now.closed)
+      spdlog::info("door '{}' {} at tick {}", now.door_id, now.closed ? "closed" : "open", tick_);
+    door_truth_writer_.write(now);
+    published_doors_[i] = std::move(now);
+  }
+}
+
+// --- Metrics ----------------------------------------------------------------------------------
+
+void SimulatorNode::record_metrics(const std::vector<RobotStatus>& robots) {
+  if (!metrics_) return;
+  TickSample sample;
+  sample.dt_s = options_.settings.step_s;
+  for (const auto& r : robots) {
+    const auto reached = goal_reached_.find(r.id);
+    sample.robots.push_back({r.id, r.pose.position(), reached != goal_reached_.end() && reached->second,
+                             connected_to_teammate(r.id)});
+  }
+  sample.team_fully_connected = !connectivity_ || connectivity_->fully_connected();
+  metrics_->add(sample);
+}
+
+void SimulatorNode::write_metrics() const {
+  if (!metrics_) return;
+  const RunMetricsReport report = metrics_->report();
+  for (const auto& [suffix, text] : {std::pair<std::string, std::string>{".csv", metrics_csv(report)},
+                                     std::pair<std::string, std::string>{".json", metrics_json(report)}}) {
+    const std::string path = options_.metrics_prefix + suffix;
+    std::ofstream out(path);
+    out << text;
+    if (!out) throw std::runtime_error("cannot write " + path);
+  }
+  spdlog::info("metrics of the run written to {}.csv and {}.json", options_.metrics_prefix, options_.metrics_prefix);
 }
 
 }  // namespace autonomy::sim

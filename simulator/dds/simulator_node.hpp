@@ -6,12 +6,23 @@
 // barrier or (paced) for the wall-clock period; apply the commands stamped k in a fixed order
 // (robot id, then source, then arrival), step the world, tick k+1. A robot spawned during tick k
 // has its state published for tick k at once, so its controller can act on k before the step.
+//
+// What a tick publishes before its clock, in this order: radio links and team connectivity that
+// changed (every radio_period_ticks), team messages due by now (autonomy/team/inbox), robot states
+// (ground truth), perception of robots with sensors (range scan, pose estimate, door
+// observations), door ground truth that changed. Team messages from autonomy/team/outbox are
+// decided (route, loss, delay) when they arrive, with the radio of the current tick.
 #include "common/dds/reader.hpp"
 #include "common/dds/topics.hpp"
 #include "common/dds/writer.hpp"
 #include "common/service/service.hpp"
 #include "simulator/core/lockstep_barrier.hpp"
 #include "simulator/core/world.hpp"
+#include "simulator/radio/connectivity.hpp"
+#include "simulator/radio/message_relay.hpp"
+#include "simulator/radio/radio_model.hpp"
+#include "simulator/report/run_metrics.hpp"
+#include "simulator/scenario/scenario_loader.hpp"
 #include "simulator/report/trajectory_recorder.hpp"
 #include "simulator/scenario/simulation_settings.hpp"
 
@@ -20,6 +31,8 @@
 #include <fstream>
 #include <map>
 #include <optional>
+#include <random>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -33,11 +46,16 @@ struct SimulatorRunOptions {
   std::optional<int64_t> max_ticks;  // stop the service after this tick
   std::string trajectory_csv;         // tick,time_s,robot,x,y,theta per robot per tick, if set
   std::string picture_svg;            // an SVG picture of the run written at exit, if set
+  // Metrics (simulator/report/run_metrics.hpp) written at exit to PREFIX.csv and PREFIX.json.
+  std::string metrics_prefix;
+  // The radio link table is recomputed every this many ticks (and when robots join).
+  int radio_period_ticks = 1;
 };
 
 class SimulatorNode {
  public:
-  SimulatorNode(service::Service& service, World world, SimulatorRunOptions options);
+  // The world is built from scenario.world; its radio settings, places and areas are used too.
+  SimulatorNode(service::Service& service, Scenario scenario, SimulatorRunOptions options);
   ~SimulatorNode();
 
  private:
@@ -45,6 +63,9 @@ class SimulatorNode {
   void on_acks(std::vector<dds::Sample<msg::TickAck>> samples);
   void on_registrations(std::vector<dds::Sample<msg::LockstepRegistration>> samples);
   void on_spawn_requests(std::vector<dds::Sample<msg::SpawnRequest>> samples);
+  void on_door_commands(std::vector<dds::Sample<msg::DoorCommand>> samples);
+  void on_outbox(std::vector<dds::Sample<msg::TeamMessage>> samples);
+  void on_goal_status(std::vector<dds::Sample<msg::GoalStatus>> samples);
   void on_timer();
 
   bool lockstep() const { return options_.settings.mode == ClockMode::Lockstep; }
@@ -55,11 +76,20 @@ class SimulatorNode {
   void handle_spawns();
   void open_tick();  // publishes state and clock of tick_, starts the barrier's tick
   void publish_robot_state(const RobotStatus& robot);
+  // The radio of the current positions: link table, connectivity; publishes what changed.
+  void update_radio();
+  void deliver_due_messages();
+  void publish_perception(const std::vector<RobotStatus>& robots);
+  void publish_door_changes();
+  void record_metrics(const std::vector<RobotStatus>& robots);
+  bool connected_to_teammate(const std::string& robot) const;
+  void write_metrics() const;
   void publish_status();
   void write_picture() const;
   void reject(const msg::VelocityCommand& command, const std::string& reason);
 
   service::Service& service_;
+  Scenario scenario_;
   World world_;
   SimulatorRunOptions options_;
   LockstepBarrier barrier_;
@@ -78,6 +108,25 @@ class SimulatorNode {
   TrajectoryRecorder paths_;
   bool finished_ = false;
 
+  // Radio: robots in id order are the table's indices.
+  radio::RadioModel radio_;
+  radio::LinkTable links_;
+  std::vector<std::string> radio_ids_;
+  std::optional<radio::Connectivity> connectivity_;
+  bool radio_dirty_ = true;  // robots joined since the last update
+  std::map<std::pair<std::string, std::string>, msg::RadioLink> published_links_;
+  std::optional<std::vector<std::vector<std::string>>> published_components_;
+  std::mt19937_64 delivery_rng_;
+  radio::MessageRelay<msg::TeamDelivery> relay_;
+  uint64_t messages_delivered_ = 0;
+  uint64_t messages_no_route_ = 0;
+  uint64_t messages_lost_ = 0;
+  uint64_t messages_invalid_ = 0;
+
+  std::vector<std::optional<msg::DoorState>> published_doors_;  // parallel to world_.doors()
+  std::optional<RunMetrics> metrics_;
+  std::map<std::string, bool> goal_reached_;  // from autonomy/nav/goal_status
+
   dds::Topic<msg::SimClock> clock_topic_;
   dds::Topic<msg::RobotState> state_topic_;
   dds::Topic<msg::VelocityCommand> cmd_topic_;
@@ -88,16 +137,36 @@ class SimulatorNode {
   dds::Topic<msg::SpawnReply> spawn_reply_topic_;
   dds::Topic<msg::WorldMap> map_topic_;
   dds::Topic<msg::SimulatorStatus> status_topic_;
+  dds::Topic<msg::RangeScan> scan_topic_;
+  dds::Topic<msg::PoseEstimate> pose_topic_;
+  dds::Topic<msg::DoorObservation> door_observation_topic_;
+  dds::Topic<msg::DoorState> door_truth_topic_;
+  dds::Topic<msg::RadioLink> link_topic_;
+  dds::Topic<msg::TeamConnectivity> team_topic_;
+  dds::Topic<msg::TeamMessage> outbox_topic_;
+  dds::Topic<msg::TeamDelivery> inbox_topic_;
+  dds::Topic<msg::DoorCommand> door_command_topic_;
+  dds::Topic<msg::GoalStatus> goal_status_topic_;
   dds::Writer<msg::SimClock> clock_writer_;
   dds::Writer<msg::RobotState> state_writer_;
   dds::Writer<msg::CommandRejection> rejection_writer_;
   dds::Writer<msg::SpawnReply> spawn_reply_writer_;
   dds::Writer<msg::WorldMap> map_writer_;
   dds::Writer<msg::SimulatorStatus> status_writer_;
+  dds::Writer<msg::RangeScan> scan_writer_;
+  dds::Writer<msg::PoseEstimate> pose_writer_;
+  dds::Writer<msg::DoorObservation> door_observation_writer_;
+  dds::Writer<msg::DoorState> door_truth_writer_;
+  dds::Writer<msg::RadioLink> link_writer_;
+  dds::Writer<msg::TeamConnectivity> team_writer_;
+  dds::Writer<msg::TeamDelivery> inbox_writer_;
   dds::Reader<msg::VelocityCommand> cmd_reader_;
   dds::Reader<msg::TickAck> ack_reader_;
   dds::Reader<msg::LockstepRegistration> registration_reader_;
   dds::Reader<msg::SpawnRequest> spawn_request_reader_;
+  dds::Reader<msg::DoorCommand> door_command_reader_;
+  dds::Reader<msg::TeamMessage> outbox_reader_;
+  dds::Reader<msg::GoalStatus> goal_status_reader_;
 };
 
 }  // namespace autonomy::sim

@@ -10,6 +10,9 @@
 #include "common/msg/navigation.hpp"
 #include "common/msg/robot.hpp"
 #include "common/msg/simulation.hpp"
+#include "common/msg/perception.hpp"
+#include "common/msg/radio.hpp"
+#include "common/msg/truth.hpp"
 #include "common/msg/system.hpp"
 
 namespace autonomy::json {
@@ -38,7 +41,8 @@ struct EnumValues<msg::RequestStatus> {
 template <>
 struct EnumValues<msg::GoalState> {
   static constexpr std::array values{msg::GoalState::Accepted, msg::GoalState::Active,    msg::GoalState::Reached,
-                                     msg::GoalState::Failed,   msg::GoalState::Preempted, msg::GoalState::Rejected};
+                                     msg::GoalState::Blocked,  msg::GoalState::Preempted, msg::GoalState::Rejected,
+                                     msg::GoalState::Cancelled};
 };
 
 // visit(v, m) calls v.key(name, member) for key fields and v.field(name, member) for the others;
@@ -207,6 +211,10 @@ struct Fields<msg::SimulatorStatus> {
     v.field("commands_rejected", m.commands_rejected);
     v.field("participants_dropped", m.participants_dropped);
     v.field("mean_step_us", m.mean_step_us);
+    v.field("team_messages_delivered", m.team_messages_delivered);
+    v.field("team_messages_dropped_no_route", m.team_messages_dropped_no_route);
+    v.field("team_messages_dropped_lost", m.team_messages_dropped_lost);
+    v.field("team_messages_dropped_invalid", m.team_messages_dropped_invalid);
   }
 };
 
@@ -220,6 +228,33 @@ struct Fields<msg::NavGoal> {
     v.field("x", m.x);
     v.field("y", m.y);
     v.field("tolerance", m.tolerance);
+    v.field("constraint_set", m.constraint_set);
+  }
+};
+
+template <>
+struct Fields<msg::NavCancel> {
+  static constexpr const char* name = "NavCancel";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.key("robot_id", m.robot_id);
+    v.field("goal_id", m.goal_id);
+    v.field("reason", m.reason);
+  }
+};
+
+template <>
+struct Fields<msg::MissionStatus> {
+  static constexpr const char* name = "MissionStatus";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.key("robot_id", m.robot_id);
+    v.field("mission", m.mission);
+    v.field("state", m.state);
+    v.field("event", m.event);
+    v.field("reason", m.reason);
+    v.field("finished", m.finished);
+    v.field("tick", m.tick);
   }
 };
 
@@ -234,6 +269,145 @@ struct Fields<msg::GoalStatus> {
     v.field("reason", m.reason);
     v.field("tick", m.tick);
     v.field("distance_to_goal", m.distance_to_goal);
+  }
+};
+
+// --- Simulator world v2: perception, ground truth, radio, team messages, door commands ---------
+
+template <>
+struct Fields<msg::RangeScan> {
+  static constexpr const char* name = "RangeScan";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.key("robot_id", m.robot_id);
+    v.field("tick", m.tick);
+    v.field("angle_min", m.angle_min);
+    v.field("angle_increment", m.angle_increment);
+    v.field("max_range", m.max_range);
+    v.field("ranges", m.ranges);
+  }
+};
+
+template <>
+struct Fields<msg::PoseEstimate> {
+  static constexpr const char* name = "PoseEstimate";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.key("robot_id", m.robot_id);
+    v.field("tick", m.tick);
+    v.field("x", m.x);
+    v.field("y", m.y);
+    v.field("theta", m.theta);
+  }
+};
+
+template <>
+struct Fields<msg::DoorSighting> {
+  static constexpr const char* name = "DoorSighting";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("door_id", m.door_id);
+    v.field("angle_estimate", m.angle_estimate);
+    v.field("distance", m.distance);
+    v.field("bearing", m.bearing);
+  }
+};
+
+template <>
+struct Fields<msg::DoorObservation> {
+  static constexpr const char* name = "DoorObservation";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.key("robot_id", m.robot_id);
+    v.field("tick", m.tick);
+    v.field("doors", m.doors);
+  }
+};
+
+template <>
+struct Fields<msg::DoorState> {
+  static constexpr const char* name = "DoorState";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.key("door_id", m.door_id);
+    v.field("tick", m.tick);
+    v.field("angle", m.angle);
+    v.field("target_angle", m.target_angle);
+    v.field("closed", m.closed);
+    v.field("blocked", m.blocked);
+  }
+};
+
+template <>
+struct Fields<msg::RadioLink> {
+  static constexpr const char* name = "RadioLink";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.key("robot_a", m.robot_a);
+    v.key("robot_b", m.robot_b);
+    v.field("tick", m.tick);
+    v.field("signal_dbm", m.signal_dbm);
+    v.field("margin_db", m.margin_db);
+    v.field("connected", m.connected);
+  }
+};
+
+template <>
+struct Fields<msg::TeamComponent> {
+  static constexpr const char* name = "TeamComponent";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("robots", m.robots);
+  }
+};
+
+template <>
+struct Fields<msg::TeamConnectivity> {
+  static constexpr const char* name = "TeamConnectivity";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("tick", m.tick);
+    v.field("components", m.components);
+    v.field("fully_connected", m.fully_connected);
+  }
+};
+
+template <>
+struct Fields<msg::TeamMessage> {
+  static constexpr const char* name = "TeamMessage";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.key("from", m.from);
+    v.field("to", m.to);
+    v.field("message_id", m.message_id);
+    v.field("payload", m.payload);
+  }
+};
+
+template <>
+struct Fields<msg::TeamDelivery> {
+  static constexpr const char* name = "TeamDelivery";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.key("recipient", m.recipient);
+    v.field("from", m.from);
+    v.field("to", m.to);
+    v.field("message_id", m.message_id);
+    v.field("payload", m.payload);
+    v.field("sent_time_ns", m.sent_time_ns);
+    v.field("delivered_time_ns", m.delivered_time_ns);
+    v.field("hops", m.hops);
+  }
+};
+
+template <>
+struct Fields<msg::DoorCommand> {
+  static constexpr const char* name = "DoorCommand";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.key("door_id", m.door_id);
+    v.field("angle", m.angle);
+    v.field("source", m.source);
   }
 };
 

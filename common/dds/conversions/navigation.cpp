@@ -8,10 +8,21 @@ void DdsType<msg::NavGoal>::to_c(const msg::NavGoal& v, C& out, Arena&) {
   out.x = v.x;
   out.y = v.y;
   out.tolerance = v.tolerance;
+  out.constraint_set = c_str(v.constraint_set);
 }
 
 msg::NavGoal DdsType<msg::NavGoal>::from_c(const C& in) {
-  return {from_c_str(in.robot_id), from_c_str(in.goal_id), in.x, in.y, in.tolerance};
+  return {from_c_str(in.robot_id), from_c_str(in.goal_id), in.x, in.y, in.tolerance, from_c_str(in.constraint_set)};
+}
+
+void DdsType<msg::NavCancel>::to_c(const msg::NavCancel& v, C& out, Arena&) {
+  out.robot_id = c_str(v.robot_id);
+  out.goal_id = c_str(v.goal_id);
+  out.reason = c_str(v.reason);
+}
+
+msg::NavCancel DdsType<msg::NavCancel>::from_c(const C& in) {
+  return {from_c_str(in.robot_id), from_c_str(in.goal_id), from_c_str(in.reason)};
 }
 
 void DdsType<msg::GoalStatus>::to_c(const msg::GoalStatus& v, C& out, Arena&) {
@@ -26,6 +37,21 @@ void DdsType<msg::GoalStatus>::to_c(const msg::GoalStatus& v, C& out, Arena&) {
 msg::GoalStatus DdsType<msg::GoalStatus>::from_c(const C& in) {
   return {from_c_str(in.robot_id), from_c_str(in.goal_id), static_cast<msg::GoalState>(in.state),
           from_c_str(in.reason), in.tick, in.distance_to_goal};
+}
+
+void DdsType<msg::MissionStatus>::to_c(const msg::MissionStatus& v, C& out, Arena&) {
+  out.robot_id = c_str(v.robot_id);
+  out.mission = c_str(v.mission);
+  out.state = c_str(v.state);
+  out.event = c_str(v.event);
+  out.reason = c_str(v.reason);
+  out.finished = v.finished;
+  out.tick = v.tick;
+}
+
+msg::MissionStatus DdsType<msg::MissionStatus>::from_c(const C& in) {
+  return {from_c_str(in.robot_id), from_c_str(in.mission), from_c_str(in.state), from_c_str(in.event),
+          from_c_str(in.reason), in.finished, in.tick};
 }
 
 }  // namespace autonomy::dds

@@ -67,6 +67,10 @@ void DdsType<msg::SimulatorStatus>::to_c(const msg::SimulatorStatus& v, C& out, 
   out.commands_rejected = v.commands_rejected;
   out.participants_dropped = v.participants_dropped;
   out.mean_step_us = v.mean_step_us;
+  out.team_messages_delivered = v.team_messages_delivered;
+  out.team_messages_dropped_no_route = v.team_messages_dropped_no_route;
+  out.team_messages_dropped_lost = v.team_messages_dropped_lost;
+  out.team_messages_dropped_invalid = v.team_messages_dropped_invalid;
 }
 
 msg::SimulatorStatus DdsType<msg::SimulatorStatus>::from_c(const C& in) {
@@ -80,7 +84,21 @@ msg::SimulatorStatus DdsType<msg::SimulatorStatus>::from_c(const C& in) {
   v.commands_rejected = in.commands_rejected;
   v.participants_dropped = in.participants_dropped;
   v.mean_step_us = in.mean_step_us;
+  v.team_messages_delivered = in.team_messages_delivered;
+  v.team_messages_dropped_no_route = in.team_messages_dropped_no_route;
+  v.team_messages_dropped_lost = in.team_messages_dropped_lost;
+  v.team_messages_dropped_invalid = in.team_messages_dropped_invalid;
   return v;
+}
+
+void DdsType<msg::DoorCommand>::to_c(const msg::DoorCommand& v, C& out, Arena&) {
+  out.door_id = c_str(v.door_id);
+  out.angle = v.angle;
+  out.source = c_str(v.source);
+}
+
+msg::DoorCommand DdsType<msg::DoorCommand>::from_c(const C& in) {
+  return {from_c_str(in.door_id), in.angle, from_c_str(in.source)};
 }
 
 }  // namespace autonomy::dds

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace autonomy::behavior {
@@ -36,6 +38,17 @@ CostToGoField::CostToGoField(const OccupancyGrid& grid, const geometry::Vec2& go
       grid::compute_cost_to_go(raster, goal_cell_ ? to_grid(*goal_cell_) : grid::Cell{-1, -1});
   has_route_anywhere_ = result.ok();
   field_ = std::move(result.field);
+}
+
+CostToGoField::CostToGoField(const GridGeometry& geometry, const geometry::Vec2& goal, std::vector<float> costs)
+    : geometry_(geometry), goal_(goal), goal_cell_(geometry_.cell_at(goal)) {
+  if (costs.size() != geometry_.cell_count()) {
+    throw std::invalid_argument("stored field has " + std::to_string(costs.size()) + " costs for " +
+                                std::to_string(geometry_.cell_count()) + " cells");
+  }
+  const grid::Cell g = goal_cell_ ? to_grid(*goal_cell_) : grid::Cell{-1, -1};
+  field_ = grid::CostField(geometry_.cols(), geometry_.rows(), geometry_.resolution_m(), g, std::move(costs));
+  has_route_anywhere_ = goal_cell_ && std::isfinite(field_.cost(g));
 }
 
 float CostToGoField::cost(GridCell c) const { return field_.cost(to_grid(c)); }

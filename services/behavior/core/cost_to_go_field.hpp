@@ -26,6 +26,9 @@ class CostToGoField {
   // Computes the field towards `goal` (world coordinates). A goal outside the grid or in a blocked
   // cell yields a field that is +infinity everywhere (has_route_anywhere() == false).
   CostToGoField(const OccupancyGrid& grid, const geometry::Vec2& goal);
+  // A field computed before (a plan resource file): `costs` row-major over `geometry`, +inf where
+  // unreachable. Throws std::invalid_argument when the sizes differ.
+  CostToGoField(const GridGeometry& geometry, const geometry::Vec2& goal, std::vector<float> costs);
 
   const GridGeometry& geometry() const { return geometry_; }
   const geometry::Vec2& goal() const { return goal_; }

@@ -7,9 +7,10 @@ const char* to_string(GoalState state) {
     case GoalState::Accepted: return "accepted";
     case GoalState::Active: return "active";
     case GoalState::Reached: return "reached";
-    case GoalState::Failed: return "failed";
+    case GoalState::Blocked: return "blocked";
     case GoalState::Preempted: return "preempted";
     case GoalState::Rejected: return "rejected";
+    case GoalState::Cancelled: return "cancelled";
   }
   return "unknown";
 }

@@ -2,24 +2,26 @@
 // The life of one navigation goal as other services see it (autonomy::GoalStatus in
 // idl/navigation.idl). Legal transitions:
 //   set_goal: Rejected (terminal)  |  Accepted
-//   Accepted -> Active -> Reached | Failed | Preempted
-//   Accepted -> Failed (no route) | Preempted
+//   Accepted -> Active -> Reached | Blocked | Preempted | Cancelled
+//   Accepted -> Blocked (no route) | Preempted | Cancelled
+// Blocked was called Failed before (same place in the enum, same wire value): the goal cannot be
+// reached from where the robot is: no route on the plan, in collision or no progress for a while.
 #include <string>
 
 namespace autonomy::behavior {
 
-enum class GoalState { Accepted, Active, Reached, Failed, Preempted, Rejected };
+enum class GoalState { Accepted, Active, Reached, Blocked, Preempted, Rejected, Cancelled };
 
 // Lower-case name ("accepted", ...), for logs and reasons.
 const char* to_string(GoalState state);
 
-// Reached, Failed, Preempted and Rejected end a goal; nothing follows them for that goal id.
+// Reached, Blocked, Preempted, Rejected and Cancelled end a goal; nothing follows them for that goal id.
 inline bool is_terminal(GoalState s) { return s != GoalState::Accepted && s != GoalState::Active; }
 
 struct GoalStatus {
   std::string goal_id;
   GoalState state = GoalState::Accepted;
-  std::string reason;             // why it failed, was rejected or preempted; empty otherwise
+  std::string reason;             // why it was blocked, rejected, preempted or cancelled; else empty
   double distance_to_goal = 0.0;  // m, straight line from the last known pose; 0 when unknown
 
   bool operator==(const GoalStatus& o) const {

@@ -24,16 +24,16 @@ std::string format(const char* fmt, Args... args) {
 GoalTracker::GoalTracker(OccupancyGrid grid, GoalTrackerConfig config)
     : grid_(std::move(grid)), config_(config) {
   if (!positive_finite(config.default_tolerance_m) || !positive_finite(config.stall_timeout_s) ||
-      !positive_finite(config.min_progress_m) || !std::isfinite(config.route_search_radius_m) ||
+      !positive_finite(config.min_progress_m) || !std::isfinite(config.collision_timeout_s) ||
+      config.collision_timeout_s < 0.0 ||
+      !std::isfinite(config.route_search_radius_m) ||
       config.route_search_radius_m < 0.0) {
     throw std::invalid_argument("goal tracker parameters must be positive and finite");
   }
 }
 
-GoalReport GoalTracker::set_goal(const std::string& goal_id, double x, double y, double tolerance_m,
-                                 double now_s) {
-  GoalReport report;
-  const geometry::Vec2 goal(x, y);
+std::optional<std::string> GoalTracker::validate(const std::string& goal_id, double x, double y,
+                                                double tolerance_m) const {
   std::string rejection;
   if (goal_id.empty()) {
     rejection = "goal id is empty";
@@ -41,30 +41,69 @@ GoalReport GoalTracker::set_goal(const std::string& goal_id, double x, double y,
     rejection = "goal coordinates are not finite";
   } else if (std::isnan(tolerance_m) || std::isinf(tolerance_m)) {
     rejection = "goal tolerance is not finite";
-  } else if (!grid_.inside_world(goal)) {
+  } else if (!grid_.inside_world(geometry::Vec2(x, y))) {
     rejection = format("goal (%.2f, %.2f) is outside the world [0, %.2f] x [0, %.2f]", x, y,
                        grid_.width_m(), grid_.height_m());
   }
-  if (!rejection.empty()) {
-    report.changes.push_back(make_status(goal_id, GoalState::Rejected, std::move(rejection), goal));
-    // A rejected goal becomes "the latest goal" only when nothing is being pursued.
-    if (!pursued_) status_ = report.changes.back();
-    report.current = status_;
-    return report;
-  }
+  if (rejection.empty()) return std::nullopt;
+  return rejection;
+}
 
+GoalReport GoalTracker::rejected(const std::string& goal_id, const geometry::Vec2& goal, std::string reason) {
+  GoalReport report;
+  report.changes.push_back(make_status(goal_id, GoalState::Rejected, std::move(reason), goal));
+  // A rejected goal becomes "the latest goal" only when nothing is being pursued.
+  if (!pursued_) status_ = report.changes.back();
+  report.current = status_;
+  return report;
+}
+
+GoalReport GoalTracker::pursue(const std::string& goal_id, const geometry::Vec2& goal, double tolerance_m,
+                               double now_s, CostToGoField field) {
+  GoalReport report;
   if (pursued_) end_pursuit(GoalState::Preempted, "preempted by goal " + goal_id, report);
-
   const double tolerance = tolerance_m > 0.0 ? tolerance_m : config_.default_tolerance_m;
-  pursued_.emplace(Pursuit{goal_id, goal, tolerance, CostToGoField(grid_, goal),
-                           std::numeric_limits<double>::infinity(), now_s});
+  pursued_.emplace(Pursuit{goal_id, goal, tolerance, std::move(field),
+                           std::numeric_limits<double>::infinity(), now_s, std::nullopt});
   status_ = make_status(goal_id, GoalState::Accepted, "", goal);
   report.changes.push_back(*status_);
   report.current = status_;
   return report;
 }
 
-GoalReport GoalTracker::update(const geometry::Pose2& pose, double now_s) {
+GoalReport GoalTracker::set_goal(const std::string& goal_id, double x, double y, double tolerance_m,
+                                 double now_s) {
+  const geometry::Vec2 goal(x, y);
+  if (auto rejection = validate(goal_id, x, y, tolerance_m)) return rejected(goal_id, goal, std::move(*rejection));
+  return pursue(goal_id, goal, tolerance_m, now_s, CostToGoField(grid_, goal));
+}
+
+GoalReport GoalTracker::set_goal(const std::string& goal_id, double x, double y, double tolerance_m,
+                                 double now_s, CostToGoField field) {
+  const geometry::Vec2 goal(x, y);
+  if (auto rejection = validate(goal_id, x, y, tolerance_m)) return rejected(goal_id, goal, std::move(*rejection));
+  const GridGeometry& a = field.geometry();
+  const GridGeometry& b = grid_.geometry();
+  if (a.cols() != b.cols() || a.rows() != b.rows() || a.resolution_m() != b.resolution_m()) {
+    throw std::invalid_argument("goal field geometry differs from the tracker's grid");
+  }
+  return pursue(goal_id, goal, tolerance_m, now_s, std::move(field));
+}
+
+GoalReport GoalTracker::reject(const std::string& goal_id, double x, double y, std::string reason) {
+  return rejected(goal_id, geometry::Vec2(x, y), std::move(reason));
+}
+
+GoalReport GoalTracker::cancel(const std::string& goal_id, std::string reason) {
+  GoalReport report;
+  if (pursued_ && (goal_id.empty() || goal_id == pursued_->id)) {
+    end_pursuit(GoalState::Cancelled, reason.empty() ? std::string("cancelled") : std::move(reason), report);
+  }
+  report.current = status_;
+  return report;
+}
+
+GoalReport GoalTracker::update(const geometry::Pose2& pose, double now_s, bool in_collision) {
   GoalReport report;
   if (!std::isfinite(pose.x) || !std::isfinite(pose.y)) {
     report.current = status_;
@@ -84,7 +123,7 @@ GoalReport GoalTracker::update(const geometry::Pose2& pose, double now_s) {
   if (status_->state == GoalState::Accepted) {
     const double remaining = remaining_path_m(p, position);
     if (distance > p.tolerance_m && !std::isfinite(remaining)) {
-      end_pursuit(GoalState::Failed, format("no route to goal (%.2f, %.2f)", p.goal.x(), p.goal.y()),
+      end_pursuit(GoalState::Blocked, format("no route to goal (%.2f, %.2f)", p.goal.x(), p.goal.y()),
                   report);
       report.current = status_;
       return report;
@@ -102,13 +141,24 @@ GoalReport GoalTracker::update(const geometry::Pose2& pose, double now_s) {
     return report;
   }
 
+  if (!in_collision || config_.collision_timeout_s <= 0.0) {
+    p.collision_since_s.reset();
+  } else if (!p.collision_since_s) {
+    p.collision_since_s = now_s;
+  } else if (now_s - *p.collision_since_s >= config_.collision_timeout_s) {
+    end_pursuit(GoalState::Blocked,
+                format("in collision for %.1f s, %.1f m from goal", config_.collision_timeout_s, distance), report);
+    report.current = status_;
+    return report;
+  }
+
   const double remaining = remaining_path_m(p, position);
   if (remaining <= p.best_remaining_m - config_.min_progress_m ||
       (std::isinf(p.best_remaining_m) && std::isfinite(remaining))) {
     p.best_remaining_m = remaining;
     p.last_progress_s = now_s;
   } else if (now_s - p.last_progress_s >= config_.stall_timeout_s) {
-    end_pursuit(GoalState::Failed,
+    end_pursuit(GoalState::Blocked,
                 format("no progress for %.1f s, %.1f m from goal", config_.stall_timeout_s, distance),
                 report);
   }

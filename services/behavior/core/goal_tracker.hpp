@@ -14,7 +14,14 @@
 //  - A goal becomes Active on the first update() after set_goal(); it Fails right there instead when
 //    its cell is blocked or the robot's position has no route to it.
 //  - Progress is measured on the field's path cost, not the straight distance, so going around a
-//    wall counts as progress. No decrease of at least min_progress_m for stall_timeout_s -> Failed.
+//    wall counts as progress. No decrease of at least min_progress_m for stall_timeout_s -> Blocked.
+//  - A robot reported in collision (RobotState.in_collision) for collision_timeout_s without a
+//    break -> Blocked ("in collision for ..."): something (a closed door, a robot) is in the way.
+//    Off by default (0): then a door that stays closed ends the goal through the stall rule.
+//  - cancel() ends the pursued goal as Cancelled (only when the id matches, or for an empty id);
+//    the node then stops the robot. Cancelling a goal that is not pursued changes nothing.
+//  - A goal may come with its own field (a stored plan, a plan honouring constraint layers) instead
+//    of the one computed on grid(); it must share grid()'s geometry.
 #include "common/geometry/geometry.hpp"
 #include "services/behavior/core/cost_to_go_field.hpp"
 #include "services/behavior/core/goal_status.hpp"
@@ -33,6 +40,9 @@ struct GoalTrackerConfig {
   // How far from the robot a reachable cell may be for the robot to count as having a route; keep
   // it equal to GoToConfig::lookahead_m, the distance the controller will escape over.
   double route_search_radius_m = 1.0;
+  // Continuously in collision this long -> Blocked; 0 (default) disables it, so a robot held by a
+  // closed door keeps pushing until the door opens or stall_timeout_s ends the goal.
+  double collision_timeout_s = 0.0;
 };
 
 struct GoalReport {
@@ -48,9 +58,21 @@ class GoalTracker {
   // tolerance_m <= 0 means config.default_tolerance_m. Computes the field for a valid goal.
   [[nodiscard]] GoalReport set_goal(const std::string& goal_id, double x, double y,
                                     double tolerance_m, double now_s);
+  // The same with a ready field (stored or computed with constraint layers). Throws
+  // std::invalid_argument when its geometry differs from grid()'s.
+  [[nodiscard]] GoalReport set_goal(const std::string& goal_id, double x, double y,
+                                    double tolerance_m, double now_s, CostToGoField field);
 
-  // Feeds the robot's pose at now_s. A non-finite pose changes nothing.
-  [[nodiscard]] GoalReport update(const geometry::Pose2& pose, double now_s);
+  // Rejects a goal for a reason found outside the tracker (e.g. an unknown constraint set), with
+  // the same policy as a malformed goal: the pursued goal carries on.
+  [[nodiscard]] GoalReport reject(const std::string& goal_id, double x, double y, std::string reason);
+
+  // Cancels the pursued goal when goal_id is empty or names it: [Cancelled]. Otherwise no change.
+  [[nodiscard]] GoalReport cancel(const std::string& goal_id, std::string reason);
+
+  // Feeds the robot's pose at now_s. A non-finite pose changes nothing. in_collision: the
+  // simulator stopped the last commanded motion (RobotState.in_collision).
+  [[nodiscard]] GoalReport update(const geometry::Pose2& pose, double now_s, bool in_collision = false);
 
   // A goal is Accepted or Active: the node should drive the robot with field().
   bool active() const { return pursued_.has_value(); }
@@ -70,7 +92,13 @@ class GoalTracker {
     CostToGoField field;
     double best_remaining_m;  // least path cost seen so far (+inf before activation)
     double last_progress_s;   // when best_remaining_m last dropped by min_progress_m
+    std::optional<double> collision_since_s;  // start of the current run of collisions
   };
+
+  std::optional<std::string> validate(const std::string& goal_id, double x, double y, double tolerance_m) const;
+  GoalReport rejected(const std::string& goal_id, const geometry::Vec2& goal, std::string reason);
+  GoalReport pursue(const std::string& goal_id, const geometry::Vec2& goal, double tolerance_m,
+                    double now_s, CostToGoField field);
 
   GoalStatus make_status(const std::string& id, GoalState state, std::string reason,
                          const geometry::Vec2& goal) const;

@@ -1,8 +1,11 @@
 #include "services/behavior/dds/behavior_node.hpp"
 
+#include "services/behavior/core/mission/plan_library.hpp"
+
 #include <spdlog/spdlog.h>
 
 #include <cmath>
+#include <functional>
 #include <unistd.h>
 
 namespace autonomy::behavior {
@@ -16,12 +19,26 @@ msg::GoalState to_msg(GoalState s) {
     case GoalState::Accepted: return msg::GoalState::Accepted;
     case GoalState::Active: return msg::GoalState::Active;
     case GoalState::Reached: return msg::GoalState::Reached;
-    case GoalState::Failed: return msg::GoalState::Failed;
+    case GoalState::Blocked: return msg::GoalState::Blocked;
     case GoalState::Preempted: return msg::GoalState::Preempted;
     case GoalState::Rejected: return msg::GoalState::Rejected;
+    case GoalState::Cancelled: return msg::GoalState::Cancelled;
   }
-  return msg::GoalState::Failed;
+  return msg::GoalState::Blocked;
 }
+
+const char* event_name(MissionEvent::Kind k) {
+  switch (k) {
+    case MissionEvent::Kind::Started: return "started";
+    case MissionEvent::Kind::Transition: return "transition";
+    case MissionEvent::Kind::PlanChosen: return "plan_chosen";
+    case MissionEvent::Kind::NoViablePlan: return "no_viable_plan";
+    case MissionEvent::Kind::Finished: return "finished";
+  }
+  return "?";
+}
+
+WorldMap world_of(const msg::WorldMap& m) { return WorldMap{m.width, m.height, m.obstacles}; }
 
 }  // namespace
 
@@ -32,25 +49,67 @@ BehaviorNode::BehaviorNode(service::Service& service, BehaviorNodeOptions option
       state_topic_(service.participant(), dds::topics::robot_state),
       map_topic_(service.participant(), dds::topics::world_map),
       goal_topic_(service.participant(), dds::topics::nav_goal),
+      cancel_topic_(service.participant(), dds::topics::nav_cancel),
       goal_status_topic_(service.participant(), dds::topics::goal_status),
+      mission_status_topic_(service.participant(), dds::topics::mission_status),
       cmd_topic_(service.participant(), dds::topics::cmd_vel),
       spawn_request_topic_(service.participant(), dds::topics::spawn_request),
       spawn_reply_topic_(service.participant(), dds::topics::spawn_reply),
       state_reader_(service.participant(), state_topic_),
       map_reader_(service.participant(), map_topic_),
       goal_reader_(service.participant(), goal_topic_),
+      cancel_reader_(service.participant(), cancel_topic_),
       spawn_reply_reader_(service.participant(), spawn_reply_topic_),
       goal_status_writer_(service.participant(), goal_status_topic_),
+      mission_status_writer_(service.participant(), mission_status_topic_),
       cmd_writer_(service.participant(), cmd_topic_),
       spawn_request_writer_(service.participant(), spawn_request_topic_),
       lockstep_(service.participant(), service.loop(), participant_name_,
                 [this](const msg::SimClock& c) { on_tick(c); }) {
   spawn_request_id_ = options_.robot_id + "@" + std::to_string(getpid());
+  if (options_.mission) {
+    for (const ConstraintLayerSpec& l : options_.mission->layers) options_.layers[l.name] = l.areas;
+  }
   auto& loop = service.loop();
   loop.on_samples<msg::SpawnReply>(spawn_reply_reader_, [this](auto s) { on_spawn_replies(std::move(s)); });
   loop.on_samples<msg::RobotState>(state_reader_, [this](auto s) { on_states(std::move(s)); });
   loop.on_samples<msg::WorldMap>(map_reader_, [this](auto s) { on_map(std::move(s)); });
   loop.on_samples<msg::NavGoal>(goal_reader_, [this](auto s) { on_goals(std::move(s)); });
+  loop.on_samples<msg::NavCancel>(cancel_reader_, [this](auto s) { on_cancels(std::move(s)); });
+
+  if (options_.mission) {
+    const auto& p = service.participant();
+    pose_topic_ = std::make_unique<dds::Topic<msg::PoseEstimate>>(p, dds::topics::pose_estimate);
+    scan_topic_ = std::make_unique<dds::Topic<msg::RangeScan>>(p, dds::topics::range_scan);
+    link_topic_ = std::make_unique<dds::Topic<msg::RadioLink>>(p, dds::topics::radio_link);
+    inbox_topic_ = std::make_unique<dds::Topic<msg::TeamDelivery>>(p, dds::topics::team_inbox);
+    pose_reader_ = std::make_unique<dds::Reader<msg::PoseEstimate>>(p, *pose_topic_);
+    scan_reader_ = std::make_unique<dds::Reader<msg::RangeScan>>(p, *scan_topic_);
+    link_reader_ = std::make_unique<dds::Reader<msg::RadioLink>>(p, *link_topic_);
+    inbox_reader_ = std::make_unique<dds::Reader<msg::TeamDelivery>>(p, *inbox_topic_);
+    const std::string me = options_.robot_id;
+    loop.on_samples<msg::PoseEstimate>(*pose_reader_, [this, me](auto samples) {
+      for (auto& s : samples)
+        if (s.valid && s.value.robot_id == me && (!pose_estimate_ || s.value.tick >= pose_estimate_->tick))
+          pose_estimate_ = std::move(s.value);
+    });
+    loop.on_samples<msg::RangeScan>(*scan_reader_, [this, me](auto samples) {
+      for (auto& s : samples)
+        if (s.valid && s.value.robot_id == me && (!scan_ || s.value.tick >= scan_->tick)) scan_ = std::move(s.value);
+    });
+    loop.on_samples<msg::RadioLink>(*link_reader_, [this, me](auto samples) {
+      for (auto& s : samples) {
+        if (!s.valid) continue;
+        if (s.value.robot_a == me) link_connected_[s.value.robot_b] = s.value.connected;
+        if (s.value.robot_b == me) link_connected_[s.value.robot_a] = s.value.connected;
+      }
+    });
+    loop.on_samples<msg::TeamDelivery>(*inbox_reader_, [this, me](auto samples) {
+      for (auto& s : samples)
+        if (s.valid && s.value.recipient == me)
+          last_heard_s_[s.value.from] = static_cast<double>(s.value.delivered_time_ns) * 1e-9;
+    });
+  }
   // Requests are volatile: one written before the simulator's reader matched is lost, so the
   // request is repeated until a reply comes (the simulator treats repeats as re-attaches).
   loop.every(kSpawnRetryPeriod, [this] {
@@ -90,7 +149,11 @@ void BehaviorNode::on_spawn_replies(std::vector<dds::Sample<msg::SpawnReply>> sa
 
 void BehaviorNode::on_states(std::vector<dds::Sample<msg::RobotState>> samples) {
   for (auto& s : samples) {
-    if (!s.valid || s.value.robot_id != options_.robot_id) continue;
+    if (!s.valid) continue;
+    if (s.value.robot_id != options_.robot_id) {
+      if (options_.mission) teammate_states_[s.value.robot_id] = s.value;
+      continue;
+    }
     if (!state_ || s.value.tick >= state_->tick) state_ = std::move(s.value);
   }
   become_ready_when_possible();
@@ -104,12 +167,34 @@ void BehaviorNode::on_map(std::vector<dds::Sample<msg::WorldMap>> samples) {
 }
 
 void BehaviorNode::become_ready_when_possible() {
-  if (tracker_ || !spawned_ || !state_ || !map_) return;
+  if (ready() || !spawned_ || !state_ || !map_) return;
   const msg::RobotState& st = *state_;
-  WorldMap world{map_->width, map_->height, map_->obstacles};
+  const WorldMap world = world_of(*map_);
   // The grid keeps the robot's centre one resolution step further from obstacles than its
   // radius, so that rounding to cells never plans a path that grazes a wall.
-  OccupancyGrid grid(world, options_.grid_resolution_m, st.radius + options_.grid_resolution_m);
+  const double inflation = st.radius + options_.grid_resolution_m;
+  if (options_.mission) {
+    const auto t0 = std::chrono::steady_clock::now();
+    PlanLibrary plans;
+    try {
+      plans = build_plan_library(*options_.mission, world, options_.grid_resolution_m, inflation);
+    } catch (const std::exception& e) {
+      service_.fail("mission " + options_.mission->name + ": cannot build its plans on map '" + map_->name +
+                    "': " + e.what());
+      return;
+    }
+    MissionExecutorOptions eo;
+    eo.noise_seed = std::hash<std::string>{}(options_.robot_id);
+    executor_.emplace(*options_.mission, std::move(plans), eo);
+    spdlog::info("robot {} ready at ({:.2f}, {:.2f}) on map '{}', mission '{}' ({} plan sets built in {:.0f} ms)",
+                 options_.robot_id, st.x, st.y, map_->name, options_.mission->name,
+                 options_.mission->plan_sets.size(),
+                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    service_.set_ready();
+    control_pending_tick();
+    return;
+  }
+  OccupancyGrid grid(world, options_.grid_resolution_m, inflation);
   tracker_.emplace(std::move(grid), options_.tracker);
   controller_.emplace(st.kinematics == msg::Kinematics::Holonomic ? Kinematics::Holonomic : Kinematics::Unicycle,
                       MotionLimits{st.max_speed, st.max_omega}, options_.go_to);
@@ -126,17 +211,71 @@ void BehaviorNode::become_ready_when_possible() {
 void BehaviorNode::on_goals(std::vector<dds::Sample<msg::NavGoal>> samples) {
   for (const auto& s : samples) {
     if (!s.valid || s.value.robot_id != options_.robot_id) continue;
-    if (tracker_)
+    if (options_.mission) {
+      spdlog::warn("goal {} ignored: robot {} runs mission '{}'", s.value.goal_id, options_.robot_id,
+                   options_.mission->name);
+    } else if (tracker_) {
       accept_goal(s.value);
-    else
+    } else {
       queued_goal_ = s.value;  // the newest goal waits for the map and the robot
+    }
+  }
+}
+
+void BehaviorNode::on_cancels(std::vector<dds::Sample<msg::NavCancel>> samples) {
+  for (const auto& s : samples) {
+    if (!s.valid || s.value.robot_id != options_.robot_id) continue;
+    const std::string what = s.value.goal_id.empty() ? std::string("the current goal") : "goal " + s.value.goal_id;
+    if (options_.mission) {
+      spdlog::warn("cancel of {} ignored: robot {} runs a mission", what, options_.robot_id);
+      continue;
+    }
+    if (!tracker_) {
+      // Not ready yet: a queued goal it names never starts.
+      if (queued_goal_ && (s.value.goal_id.empty() || s.value.goal_id == queued_goal_->goal_id)) queued_goal_.reset();
+      continue;
+    }
+    const GoalReport report = tracker_->cancel(s.value.goal_id, s.value.reason);
+    if (report.changes.empty()) spdlog::info("cancel of {}: not being pursued, nothing to do", what);
+    publish(report);
   }
 }
 
 void BehaviorNode::accept_goal(const msg::NavGoal& goal) {
-  spdlog::info("goal {} for robot {}: ({:.2f}, {:.2f}) tolerance {}", goal.goal_id, goal.robot_id, goal.x, goal.y,
-               goal.tolerance);
-  publish(tracker_->set_goal(goal.goal_id, goal.x, goal.y, goal.tolerance, lockstep_.clock().now_s()));
+  spdlog::info("goal {} for robot {}: ({:.2f}, {:.2f}) tolerance {} constraints '{}'", goal.goal_id, goal.robot_id,
+               goal.x, goal.y, goal.tolerance, goal.constraint_set);
+  const double now_s = lockstep_.clock().now_s();
+  std::string error;
+  const auto set = parse_constraint_set(goal.constraint_set, &error);
+  if (!set) {
+    publish(tracker_->reject(goal.goal_id, goal.x, goal.y, error));
+    return;
+  }
+  const OccupancyGrid& grid = tracker_->grid();
+  const geometry::Vec2 target(goal.x, goal.y);
+  if (options_.plans) {
+    if (const StoredPlan* stored = options_.plans->match(target, set->name(), grid.geometry(), grid.inflation_radius_m())) {
+      if (!stored->map_name.empty() && map_ && stored->map_name != map_->name) {
+        spdlog::warn("stored plan '{}' was computed on map '{}', not '{}': computing instead", stored->name,
+                     stored->map_name, map_->name);
+      } else {
+        spdlog::info("goal {}: using stored plan '{}' ({})", goal.goal_id, stored->name, stored->constraint_set);
+        publish(tracker_->set_goal(goal.goal_id, goal.x, goal.y, goal.tolerance, now_s, stored->field()));
+        return;
+      }
+    }
+  }
+  if (set->layers.empty()) {
+    publish(tracker_->set_goal(goal.goal_id, goal.x, goal.y, goal.tolerance, now_s));
+    return;
+  }
+  const auto world = apply_constraints(world_of(*map_), *set, options_.layers, &error);
+  if (!world) {
+    publish(tracker_->reject(goal.goal_id, goal.x, goal.y, error));
+    return;
+  }
+  OccupancyGrid constrained(*world, grid.geometry().resolution_m(), grid.inflation_radius_m());
+  publish(tracker_->set_goal(goal.goal_id, goal.x, goal.y, goal.tolerance, now_s, CostToGoField(constrained, target)));
 }
 
 void BehaviorNode::on_tick(const msg::SimClock& clock) {
@@ -147,24 +286,88 @@ void BehaviorNode::on_tick(const msg::SimClock& clock) {
 }
 
 void BehaviorNode::control_pending_tick() {
-  if (!pending_tick_ || !tracker_ || !state_ || state_->tick < *pending_tick_) return;
+  if (!pending_tick_ || !ready() || !state_ || state_->tick < *pending_tick_) return;
   const int64_t tick = *pending_tick_;
   pending_tick_.reset();
+  const uint32_t sent = executor_ ? control_mission(tick) : control_goal(tick);
+  lockstep_.acknowledge(tick, sent);
+}
 
+uint32_t BehaviorNode::control_goal(int64_t tick) {
   const geometry::Pose2 pose{state_->x, state_->y, state_->theta};
   const double now_s = static_cast<double>(state_->sim_time_ns) * 1e-9;
-  publish(tracker_->update(pose, now_s));
+  publish(tracker_->update(pose, now_s, state_->in_collision));
 
-  uint32_t sent = 0;
   if (tracker_->active()) {
     const GoToDecision decision = controller_->command(pose, *tracker_->field(), tracker_->tolerance_m());
     send_command(decision.command, tick);
-    ++sent;
-  } else if (!stopped_robot_) {
-    send_command({}, tick);  // the goal ended: stop now rather than when the command expires
-    ++sent;
+    return 1;
   }
-  lockstep_.acknowledge(tick, sent);
+  if (!stopped_robot_) {
+    send_command({}, tick);  // the goal ended: stop now rather than when the command expires
+    return 1;
+  }
+  return 0;
+}
+
+Perception BehaviorNode::perceive() const {
+  const msg::RobotState& st = *state_;
+  Perception p;
+  p.time_s = static_cast<double>(st.sim_time_ns) * 1e-9;
+  p.pose = {st.x, st.y, st.theta};
+  // The robot's own estimate when its pose sensor publishes one for this tick (or the previous).
+  if (pose_estimate_ && pose_estimate_->tick >= st.tick - 1)
+    p.pose = {pose_estimate_->x, pose_estimate_->y, pose_estimate_->theta};
+  p.kinematics = st.kinematics == msg::Kinematics::Holonomic ? Kinematics::Holonomic : Kinematics::Unicycle;
+  p.velocity = p.kinematics == Kinematics::Holonomic
+                   ? geometry::Vec2(st.vx, st.vy)
+                   : geometry::Vec2(st.vx * std::cos(st.theta), st.vx * std::sin(st.theta));
+  p.limits = {st.max_speed, st.max_omega};
+  if (scan_) {
+    p.rays.reserve(scan_->ranges.size());
+    for (std::size_t i = 0; i < scan_->ranges.size(); ++i) {
+      p.rays.push_back({scan_->angle_min + static_cast<double>(i) * scan_->angle_increment,
+                        static_cast<double>(scan_->ranges[i]), scan_->max_range});
+    }
+  }
+  for (const std::string& id : options_.mission->teammates) {
+    TeammateState t;
+    t.id = id;
+    if (const auto link = link_connected_.find(id); link != link_connected_.end()) {
+      t.in_contact = link->second;
+    } else if (!last_heard_s_.empty()) {
+      const auto heard = last_heard_s_.find(id);
+      t.in_contact = heard != last_heard_s_.end() && p.time_s - heard->second <= options_.contact_freshness_s;
+    } else {
+      t.in_contact = true;  // no radio model running: everyone is in contact
+    }
+    if (const auto pos = last_known_position_.find(id); pos != last_known_position_.end()) t.position = pos->second;
+    p.teammates.push_back(std::move(t));
+  }
+  return p;
+}
+
+uint32_t BehaviorNode::control_mission(int64_t tick) {
+  // Teammates' positions are known while in contact (as if they reported them), kept when lost.
+  Perception p = perceive();
+  for (TeammateState& t : p.teammates) {
+    const auto st = teammate_states_.find(t.id);
+    if (t.in_contact && st != teammate_states_.end()) {
+      last_known_position_[t.id] = geometry::Vec2(st->second.x, st->second.y);
+      t.position = last_known_position_[t.id];
+    }
+  }
+  const bool was_finished = executor_->finished();
+  const MissionStep step = executor_->step(p);
+  for (const MissionEvent& e : step.events) {
+    spdlog::info("mission {}: {}", options_.mission->name, e.to_string());
+    publish_mission(e, tick);
+  }
+  if (!was_finished || !stopped_robot_) {
+    send_command(step.finished ? VelocityCommand{} : step.command, tick);
+    return 1;
+  }
+  return 0;
 }
 
 void BehaviorNode::send_command(const VelocityCommand& command, int64_t tick) {
@@ -176,12 +379,25 @@ void BehaviorNode::publish(const GoalReport& report) {
   for (const GoalStatus& change : report.changes) {
     msg::GoalStatus s{options_.robot_id, change.goal_id, to_msg(change.state), change.reason,
                       state_ ? state_->tick : 0, change.distance_to_goal};
-    if (change.state == GoalState::Failed || change.state == GoalState::Rejected)
+    if (change.state == GoalState::Blocked || change.state == GoalState::Rejected)
       spdlog::warn("goal {} {}: {}", change.goal_id, to_string(change.state), change.reason);
     else
-      spdlog::info("goal {} {} ({:.2f} m to go)", change.goal_id, to_string(change.state), change.distance_to_goal);
+      spdlog::info("goal {} {} ({:.2f} m to go){}{}", change.goal_id, to_string(change.state), change.distance_to_goal,
+                   change.reason.empty() ? "" : ": ", change.reason);
     goal_status_writer_.write(s);
   }
+}
+
+void BehaviorNode::publish_mission(const MissionEvent& e, int64_t tick) {
+  msg::MissionStatus s;
+  s.robot_id = options_.robot_id;
+  s.mission = options_.mission->name;
+  s.state = e.state;
+  s.event = event_name(e.kind);
+  s.reason = e.kind == MissionEvent::Kind::Transition ? e.from + " -> " + e.state + ": " + e.reason : e.reason;
+  s.finished = e.kind == MissionEvent::Kind::Finished || executor_->finished();
+  s.tick = tick;
+  mission_status_writer_.write(s);
 }
 
 }  // namespace autonomy::behavior

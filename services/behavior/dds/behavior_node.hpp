@@ -1,20 +1,36 @@
 #pragma once
-// The behavior controller's thin DDS shell for one robot. It attaches the robot (spawn request),
-// takes goals from autonomy/nav/goal, and on every tick of the simulator's clock turns the robot's
-// state into one velocity command through GoalTracker and GoToController, then acknowledges the
-// tick. Runs on the service's event-loop thread.
+// The behavior controller's thin DDS shell for one robot. It attaches the robot (spawn request)
+// and on every tick of the simulator's clock turns what it knows into one velocity command, then
+// acknowledges the tick. Runs on the service's event-loop thread. Two modes:
+//
+//  - Goal mode (default): goals from autonomy/nav/goal, cancels from autonomy/nav/cancel, through
+//    GoalTracker and GoToController; every transition on autonomy/nav/goal_status. A goal's
+//    constraint_set selects the plan layers to honour: layers come from --layers (a mission
+//    file's `layers`) and from --plans (stored plans). A stored plan is used when its goal,
+//    constraint set, grid and inflation match; otherwise the field is computed. An unknown
+//    constraint set rejects the goal, naming it.
+//  - Mission mode (--mission): MissionExecutor::step on a Perception filled each tick from the
+//    robot's state (or autonomy/robot/pose_estimate when published), range rays from
+//    autonomy/robot/range_scan (empty when none), teammates' contact from autonomy/radio/link
+//    (else from team inbox freshness, else all in contact) and the sim clock; mission events go to
+//    the log and autonomy/mission/status. Goals and cancels are ignored (with a warning).
 #include "common/dds/reader.hpp"
 #include "common/dds/topics.hpp"
 #include "common/dds/writer.hpp"
 #include "common/service/lockstep_client.hpp"
 #include "common/service/service.hpp"
+#include "services/behavior/core/constraint_sets.hpp"
 #include "services/behavior/core/go_to_controller.hpp"
 #include "services/behavior/core/goal_tracker.hpp"
+#include "services/behavior/core/mission/mission_executor.hpp"
+#include "services/behavior/core/plan_resource.hpp"
 
 #include <chrono>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 
 namespace autonomy::behavior {
 
@@ -25,6 +41,10 @@ struct BehaviorNodeOptions {
   double grid_resolution_m = 0.1;
   GoalTrackerConfig tracker;
   GoToConfig go_to;
+  ConstraintLayers layers;               // known constraint layers (--layers, the mission's)
+  std::optional<PlanResource> plans;     // --plans
+  std::optional<MissionSpec> mission;    // --mission: mission mode
+  double contact_freshness_s = 5.0;      // team inbox: a teammate heard within this is in contact
 };
 
 class BehaviorNode {
@@ -37,13 +57,19 @@ class BehaviorNode {
   void on_states(std::vector<dds::Sample<msg::RobotState>> samples);
   void on_map(std::vector<dds::Sample<msg::WorldMap>> samples);
   void on_goals(std::vector<dds::Sample<msg::NavGoal>> samples);
+  void on_cancels(std::vector<dds::Sample<msg::NavCancel>> samples);
   void on_tick(const msg::SimClock& clock);
   void become_ready_when_possible();
   void accept_goal(const msg::NavGoal& goal);
   // Computes and sends the command for pending_tick_ once the state of that tick is here.
   void control_pending_tick();
+  uint32_t control_goal(int64_t tick);
+  uint32_t control_mission(int64_t tick);
+  Perception perceive() const;
   void publish(const GoalReport& report);
+  void publish_mission(const MissionEvent& event, int64_t tick);
   void send_command(const VelocityCommand& command, int64_t tick);
+  bool ready() const { return tracker_.has_value() || executor_.has_value(); }
 
   service::Service& service_;
   BehaviorNodeOptions options_;
@@ -51,28 +77,50 @@ class BehaviorNode {
   std::string spawn_request_id_;
   bool spawned_ = false;
   std::optional<msg::RobotState> state_;
+  std::map<std::string, msg::RobotState> teammate_states_;  // last state per teammate id
   std::optional<msg::WorldMap> map_;
   std::optional<GoalTracker> tracker_;
   std::optional<GoToController> controller_;
+  std::optional<MissionExecutor> executor_;
   std::optional<msg::NavGoal> queued_goal_;  // arrived before the robot was ready
   std::optional<int64_t> pending_tick_;
   bool stopped_robot_ = true;  // the last command sent was zero (or none was sent)
   std::chrono::steady_clock::time_point last_spawn_request_;
 
+  // Mission-mode inputs from the simulator's sensor and radio models (absent until published).
+  std::optional<msg::PoseEstimate> pose_estimate_;
+  std::optional<msg::RangeScan> scan_;
+  std::map<std::string, bool> link_connected_;  // teammate id -> direct link connected
+  std::map<std::string, double> last_heard_s_;  // teammate id -> sim time of its last inbox message
+  std::map<std::string, geometry::Vec2> last_known_position_;  // while in contact
+
   dds::Topic<msg::RobotState> state_topic_;
   dds::Topic<msg::WorldMap> map_topic_;
   dds::Topic<msg::NavGoal> goal_topic_;
+  dds::Topic<msg::NavCancel> cancel_topic_;
   dds::Topic<msg::GoalStatus> goal_status_topic_;
+  dds::Topic<msg::MissionStatus> mission_status_topic_;
   dds::Topic<msg::VelocityCommand> cmd_topic_;
   dds::Topic<msg::SpawnRequest> spawn_request_topic_;
   dds::Topic<msg::SpawnReply> spawn_reply_topic_;
   dds::Reader<msg::RobotState> state_reader_;
   dds::Reader<msg::WorldMap> map_reader_;
   dds::Reader<msg::NavGoal> goal_reader_;
+  dds::Reader<msg::NavCancel> cancel_reader_;
   dds::Reader<msg::SpawnReply> spawn_reply_reader_;
   dds::Writer<msg::GoalStatus> goal_status_writer_;
+  dds::Writer<msg::MissionStatus> mission_status_writer_;
   dds::Writer<msg::VelocityCommand> cmd_writer_;
   dds::Writer<msg::SpawnRequest> spawn_request_writer_;
+  // Mission mode only.
+  std::unique_ptr<dds::Topic<msg::PoseEstimate>> pose_topic_;
+  std::unique_ptr<dds::Topic<msg::RangeScan>> scan_topic_;
+  std::unique_ptr<dds::Topic<msg::RadioLink>> link_topic_;
+  std::unique_ptr<dds::Topic<msg::TeamDelivery>> inbox_topic_;
+  std::unique_ptr<dds::Reader<msg::PoseEstimate>> pose_reader_;
+  std::unique_ptr<dds::Reader<msg::RangeScan>> scan_reader_;
+  std::unique_ptr<dds::Reader<msg::RadioLink>> link_reader_;
+  std::unique_ptr<dds::Reader<msg::TeamDelivery>> inbox_reader_;
   service::LockstepClient lockstep_;
 };
 

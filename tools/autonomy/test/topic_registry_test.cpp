@@ -32,7 +32,7 @@ TEST(TopicRegistry, DescribesTheMessage) {
   EXPECT_EQ(goal->type_name, "autonomy::NavGoal");
   EXPECT_EQ(goal->message_name, "NavGoal");
   EXPECT_EQ(goal->key_fields, (std::vector<std::string>{"robot_id"}));
-  EXPECT_EQ(goal->fields, (std::vector<std::string>{"robot_id", "goal_id", "x", "y", "tolerance"}));
+  EXPECT_EQ(goal->fields, (std::vector<std::string>{"robot_id", "goal_id", "x", "y", "tolerance", "constraint_set"}));
   const TopicEntry* heartbeat = registry.find("autonomy/heartbeat");
   ASSERT_NE(heartbeat, nullptr);
   EXPECT_EQ(heartbeat->key_fields, (std::vector<std::string>{"service", "instance"}));
@@ -43,7 +43,7 @@ TEST(TopicRegistry, NormalizeFillsDefaultsAndChecks) {
   const TopicEntry* goal = registry.find("autonomy/nav/goal");
   ASSERT_NE(goal, nullptr);
   EXPECT_EQ(goal->normalize(json::parse(R"({"robot_id":"r1","goal_id":"g1","x":17,"y":9})")).dump(),
-            R"({"robot_id":"r1","goal_id":"g1","x":17.0,"y":9.0,"tolerance":0.0})");
+            R"({"robot_id":"r1","goal_id":"g1","x":17.0,"y":9.0,"tolerance":0.0,"constraint_set":""})");
   EXPECT_THROW(goal->normalize(json::parse(R"({"goal_id":"g1"})")), json::JsonError);
 }
 

@@ -1,4 +1,5 @@
 #include "tools/json/msg_json.hpp"
+#include "common/test/test_support.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,7 +23,7 @@ msg::SpawnRequest spawn_request() { return {"q1", "tester", "r3", true, 1.0, 2.0
 msg::SpawnReply spawn_reply() { return {"q1", "r3", msg::RequestStatus::Accepted, "ok"}; }
 msg::WorldMap world_map() { return {"office", 60.0, 20.0, {{0, 0, 1, 1}, {2.5, 3.5, 4.5, 5.5}}}; }
 msg::SimulatorStatus sim_status() { return {10, 1000, 2, {"behavior/r1", "behavior/r2"}, 40, 2, 1, 33.3}; }
-msg::NavGoal nav_goal() { return {"r1", "g1", 17.0, 9.0, 0.25}; }
+msg::NavGoal nav_goal() { return {"r1", "g1", 17.0, 9.0, 0.25, "comm_attenuation"}; }
 msg::GoalStatus goal_status() { return {"r1", "g1", msg::GoalState::Preempted, "new goal", 44, 3.75}; }
 
 // Compares through the field table, so the test needs no operator== on the message types.
@@ -50,6 +51,15 @@ TEST(MsgJson, EveryTypeRoundTrips) {
   expect_round_trip(sim_status());
   expect_round_trip(nav_goal());
   expect_round_trip(goal_status());
+  expect_round_trip(test::make_range_scan(test::Variant::Full));
+  expect_round_trip(test::make_pose_estimate(test::Variant::Full));
+  expect_round_trip(test::make_door_observation(test::Variant::Full));
+  expect_round_trip(test::make_door_state(test::Variant::Full));
+  expect_round_trip(test::make_radio_link(test::Variant::Full));
+  expect_round_trip(test::make_team_connectivity(test::Variant::Full));
+  expect_round_trip(test::make_team_message(test::Variant::Full));
+  expect_round_trip(test::make_team_delivery(test::Variant::Full));
+  expect_round_trip(test::make_door_command(test::Variant::Full));
 }
 
 TEST(MsgJson, EnumsAreLowerCaseNames) {
@@ -138,7 +148,7 @@ TEST(MsgJsonErrors, WrongTypeNamesTheField) {
 
 TEST(MsgJsonErrors, UnknownFieldListsTheFields) {
   EXPECT_EQ(error_for<msg::NavGoal>(R"({"robot_id":"r1","z":1})"),
-            "NavGoal: unknown field \"z\" (fields of NavGoal: robot_id, goal_id, x, y, tolerance)");
+            "NavGoal: unknown field \"z\" (fields of NavGoal: robot_id, goal_id, x, y, tolerance, constraint_set)");
 }
 
 TEST(MsgJsonErrors, EnumNames) {

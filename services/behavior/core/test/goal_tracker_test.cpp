@@ -150,7 +150,7 @@ TEST(GoalTracker, FailsWhenNoProgressForTheStallTime) {
   }
   const auto r = tracker.update(Pose2{1.0, 1.0, 0.0}, 10.0);
   ASSERT_EQ(r.changes.size(), 1u);
-  EXPECT_EQ(r.changes[0].state, GoalState::Failed);
+  EXPECT_EQ(r.changes[0].state, GoalState::Blocked);
   EXPECT_EQ(r.changes[0].reason, "no progress for 10.0 s, 3.2 m from goal");
   EXPECT_FALSE(tracker.active());
 }
@@ -191,7 +191,7 @@ TEST(GoalTracker, UnreachableGoalFailsOnTheFirstUpdate) {
             (std::vector<GoalState>{GoalState::Accepted}));
   const auto r = tracker.update(Pose2{1.0, 1.0, 0.0}, 0.1);
   ASSERT_EQ(r.changes.size(), 1u);
-  EXPECT_EQ(r.changes[0].state, GoalState::Failed);
+  EXPECT_EQ(r.changes[0].state, GoalState::Blocked);
   EXPECT_EQ(r.changes[0].reason, "no route to goal (8.00, 6.25)");
   EXPECT_FALSE(tracker.active());
 }
@@ -205,7 +205,7 @@ TEST(GoalTracker, GoalInABlockedCellFails) {
   EXPECT_EQ(r.changes[0].reason, "no route to goal (5.00, 2.00)");
 
   (void)tracker.set_goal("on-border", 0.1, 4.0, 0.2, 1.0);  // within the robot radius of the border
-  EXPECT_EQ(tracker.update(Pose2{1.0, 1.0, 0.0}, 1.1).changes.at(0).state, GoalState::Failed);
+  EXPECT_EQ(tracker.update(Pose2{1.0, 1.0, 0.0}, 1.1).changes.at(0).state, GoalState::Blocked);
 }
 
 TEST(GoalTracker, RobotInTheInflationMarginStillHasARoute) {

@@ -1,0 +1,361 @@
+// Integration tests of the behavior process: cancelling goals, constraint sets, stored plans
+// (plan_tool + behavior --plans) and mission mode (behavior --mission), with the real simulator.
+//
+// One DDS domain per test (ctest runs them in parallel); this file uses 81-89 only:
+//
+//   domain  test
+//   ------  -----------------------------------------------
+//     81    BehaviorTest.CancelMidwayStopsTheRobot
+//     82    BehaviorTest.UnknownConstraintSetIsRejected
+//     83    BehaviorTest.StoredPlanIsUsedAndReachesTheGoal
+//     84    BehaviorTest.MissionReachesItsEndState
+//     85    BehaviorTest.MissionFileErrorsExitWithOne
+#include "tests/support/child_process.hpp"
+#include "tests/support/dds_observer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <list>
+#include <memory>
+#include <sstream>
+
+namespace autonomy::test {
+namespace {
+
+using namespace std::chrono_literals;
+using msg::GoalState;
+
+std::string dds_uri() { return std::string("file://") + AUTONOMY_SOURCE_DIR + "/deploy/dds/loopback.xml"; }
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+void write_file(const std::string& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+}
+
+std::string states_text(const std::vector<msg::GoalStatus>& v) {
+  std::string out;
+  for (const auto& s : v) {
+    if (!out.empty()) out += " -> ";
+    out += msg::to_string(s.state);
+    if (!s.reason.empty()) out += " (" + s.reason + ")";
+  }
+  return out.empty() ? "(none)" : out;
+}
+
+std::optional<msg::RobotState> last_state_of(const Recorder<msg::RobotState>& r, const std::string& robot) {
+  std::optional<msg::RobotState> last;
+  for (const auto& s : r.all())
+    if (s.robot_id == robot && (!last || s.tick >= last->tick)) last = s;
+  return last;
+}
+
+class BehaviorTest : public ::testing::Test {
+ protected:
+  void join(int domain) {
+    domain_ = domain;
+    ASSERT_EQ(setenv("CYCLONEDDS_URI", dds_uri().c_str(), 1), 0);
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = std::make_unique<TestDir>(std::string(info->test_suite_name()) + "." + info->name());
+    participant_.emplace(domain);
+  }
+
+  void TearDown() override {
+    if (HasFailure()) {
+      for (auto& c : children_) {
+        std::fprintf(stderr, "---- %s (%s)\n%s\n", c->name().c_str(),
+                     c->running() ? "running" : c->status()->describe().c_str(), c->log_tail().c_str());
+      }
+    }
+    children_.clear();
+    participant_.reset();
+    dir_.reset();
+  }
+
+  const dds::Participant& participant() const { return *participant_; }
+  const TestDir& dir() const { return *dir_; }
+
+  ChildProcess& start(const std::string& name, const std::string& program, std::vector<std::string> args) {
+    args.insert(args.end(), {"--domain", std::to_string(domain_), "--log-dir", dir_->path()});
+    const std::map<std::string, std::string> env = {{"CYCLONEDDS_URI", dds_uri()}, {"AUTONOMY_LOG_DIR", dir_->path()}};
+    children_.push_back(std::make_unique<ChildProcess>(name, program, args, env, dir_->file(name + ".out")));
+    return *children_.back();
+  }
+  ChildProcess& start_simulator(std::vector<std::string> args = {}) {
+    return start("simulator", AUTONOMY_SIMULATOR_BIN, std::move(args));
+  }
+  ChildProcess& start_behavior(const std::string& robot, std::vector<std::string> args = {}) {
+    args.insert(args.begin(), {"--robot", robot});
+    return start("behavior-" + robot, AUTONOMY_BEHAVIOR_BIN, std::move(args));
+  }
+
+  // eventually(), failing at once when a child ended.
+  ::testing::AssertionResult await(const std::string& what, const std::function<bool()>& condition,
+                                   std::chrono::milliseconds timeout = kDeadline) {
+    std::string died;
+    auto r = eventually(
+        what,
+        [&] {
+          for (auto& c : children_) {
+            if (!c->running()) {
+              died = c->name() + " ended (" + c->status()->describe() + ")";
+              return true;
+            }
+          }
+          return condition();
+        },
+        timeout);
+    if (!died.empty()) return ::testing::AssertionFailure() << died << " while waiting for: " << what;
+    return r;
+  }
+
+  ::testing::AssertionResult await_ready(Recorder<msg::Heartbeat>& beats, const ChildProcess& child) {
+    const pid_t pid = child.pid();
+    return await(child.name() + " ready", [&] {
+      beats.poll();
+      return !beats.matching([&](const msg::Heartbeat& h) { return h.pid == pid && h.state == msg::ServiceState::Ready; })
+                  .empty();
+    });
+  }
+
+  int domain_ = 0;
+
+ private:
+  std::unique_ptr<TestDir> dir_;
+  std::optional<dds::Participant> participant_;
+  std::list<std::unique_ptr<ChildProcess>> children_;
+};
+
+// The demo scenario (deploy/scenarios/demo.pbtxt, built into the simulator): r1 starts at (2, 2),
+// a wall x in [9.8, 10.2], y in [0, 8] lies between it and (18, 2).
+constexpr double kGoalX = 18.0, kGoalY = 2.0;
+
+// 1. A goal cancelled mid-way: status cancelled, and the robot stops within a few ticks.
+TEST_F(BehaviorTest, CancelMidwayStopsTheRobot) {
+  join(81);
+  Recorder<msg::Heartbeat> beats(participant(), dds::topics::heartbeat);
+  Recorder<msg::RobotState> states(participant(), dds::topics::robot_state);
+  Recorder<msg::GoalStatus> goals(participant(), dds::topics::goal_status);
+  dds::Topic<msg::NavGoal> goal_topic(participant(), dds::topics::nav_goal);
+  dds::Writer<msg::NavGoal> goal_writer(participant(), goal_topic);
+  dds::Topic<msg::NavCancel> cancel_topic(participant(), dds::topics::nav_cancel);
+  dds::Writer<msg::NavCancel> cancel_writer(participant(), cancel_topic);
+
+  // Paced (real-time) clock: in lockstep the world can outrun the test's reaction to a state.
+  start_simulator({"--mode", "paced"});
+  auto& behavior = start_behavior("r1");
+  ASSERT_TRUE(await_ready(beats, behavior));
+  ASSERT_TRUE(goal_writer.wait_for_readers(1, kDeadline));
+  ASSERT_TRUE(cancel_writer.wait_for_readers(1, kDeadline));
+  goal_writer.write({"r1", "far", kGoalX, kGoalY, 0.0, ""});
+  ASSERT_TRUE(await("r1 moving 1.5 m from its start (2, 2)", [&] {
+    states.poll();
+    const auto s = last_state_of(states, "r1");
+    return s && std::hypot(s->x - 2.0, s->y - 2.0) > 1.5;
+  }));
+  cancel_writer.write({"r1", "far", "test cancels"});
+
+  int64_t cancelled_tick = -1;
+  ASSERT_TRUE(await("goal far cancelled", [&] {
+    goals.poll();
+    states.poll();
+    for (const auto& g : goals.all())
+      if (g.goal_id == "far" && g.state == GoalState::Cancelled) cancelled_tick = g.tick;
+    return cancelled_tick >= 0;
+  })) << states_text(goals.all());
+  std::vector<GoalState> order;
+  for (const auto& g : goals.matching([](const msg::GoalStatus& g) { return g.goal_id == "far"; }))
+    order.push_back(g.state);
+  EXPECT_EQ(order, (std::vector<GoalState>{GoalState::Accepted, GoalState::Active, GoalState::Cancelled}))
+      << states_text(goals.all());
+  EXPECT_EQ(goals.all().back().reason, "test cancels");
+
+  // Within a few ticks the applied velocity is zero, and the robot stays where it stopped.
+  constexpr int64_t kStopTicks = 5;
+  ASSERT_TRUE(await("r1 states 20 ticks after the cancel", [&] {
+    states.poll();
+    const auto s = last_state_of(states, "r1");
+    return s && s->tick >= cancelled_tick + 20;
+  }));
+  std::optional<msg::RobotState> stopped;
+  for (const auto& s : states.all()) {
+    if (s.robot_id != "r1" || s.tick < cancelled_tick + kStopTicks) continue;
+    EXPECT_NEAR(s.vx, 0.0, 1e-9) << "tick " << s.tick;
+    EXPECT_NEAR(s.vy, 0.0, 1e-9) << "tick " << s.tick;
+    EXPECT_NEAR(s.omega, 0.0, 1e-9) << "tick " << s.tick;
+    if (!stopped) stopped = s;
+    EXPECT_NEAR(s.x, stopped->x, 1e-9);
+    EXPECT_NEAR(s.y, stopped->y, 1e-9);
+  }
+  ASSERT_TRUE(stopped);
+  EXPECT_GT(std::hypot(stopped->x - kGoalX, stopped->y - kGoalY), 3.0) << "r1 went on towards the goal";
+  EXPECT_TRUE(goals.matching([](const msg::GoalStatus& g) { return g.state == GoalState::Reached; }).empty());
+}
+
+// 2. A constraint set the behavior does not know rejects the goal, naming it.
+TEST_F(BehaviorTest, UnknownConstraintSetIsRejected) {
+  join(82);
+  Recorder<msg::Heartbeat> beats(participant(), dds::topics::heartbeat);
+  Recorder<msg::GoalStatus> goals(participant(), dds::topics::goal_status);
+  dds::Topic<msg::NavGoal> goal_topic(participant(), dds::topics::nav_goal);
+  dds::Writer<msg::NavGoal> goal_writer(participant(), goal_topic);
+
+  start_simulator({"--wait-for", "behavior/r1"});
+  auto& behavior = start_behavior("r1");
+  ASSERT_TRUE(await_ready(beats, behavior));
+  ASSERT_TRUE(goal_writer.wait_for_readers(1, kDeadline));
+  goal_writer.write({"r1", "smoky", kGoalX, kGoalY, 0.0, "smoke"});
+  ASSERT_TRUE(await("goal smoky rejected", [&] {
+    goals.poll();
+    return !goals.matching([](const msg::GoalStatus& g) { return g.goal_id == "smoky"; }).empty();
+  }));
+  const auto s = goals.matching([](const msg::GoalStatus& g) { return g.goal_id == "smoky"; }).front();
+  EXPECT_EQ(s.state, GoalState::Rejected);
+  EXPECT_EQ(s.reason,
+            "unknown constraint set 'obstacles+smoke': layer 'smoke' is not defined (known layers: obstacles)");
+}
+
+// 3. plan_tool builds a plan on the demo scenario; behavior --plans uses it for a matching goal.
+TEST_F(BehaviorTest, StoredPlanIsUsedAndReachesTheGoal) {
+  join(83);
+  const std::string plans = dir().file("plans.bin");
+  {
+    ChildProcess tool("plan_tool", AUTONOMY_PLAN_TOOL_BIN,
+                      {"build", "--scenario", std::string(AUTONOMY_SOURCE_DIR) + "/deploy/scenarios/demo.pbtxt",
+                       "--goal", "18", "2", "--name", "demo-goal", "--radius", "0.3", "--out", plans},
+                      {}, dir().file("plan_tool.out"));
+    const auto status = tool.wait_for_exit(30s);
+    ASSERT_TRUE(status && status->exited && status->code == 0) << tool.log_tail();
+  }
+  Recorder<msg::Heartbeat> beats(participant(), dds::topics::heartbeat);
+  Recorder<msg::GoalStatus> goals(participant(), dds::topics::goal_status);
+  dds::Topic<msg::NavGoal> goal_topic(participant(), dds::topics::nav_goal);
+  dds::Writer<msg::NavGoal> goal_writer(participant(), goal_topic);
+
+  start_simulator({"--wait-for", "behavior/r1"});
+  auto& behavior = start_behavior("r1", {"--plans", plans});
+  ASSERT_TRUE(await_ready(beats, behavior));
+  ASSERT_TRUE(goal_writer.wait_for_readers(1, kDeadline));
+  goal_writer.write({"r1", "stored", kGoalX, kGoalY, 0.0, ""});
+  ASSERT_TRUE(await("goal stored reached", [&] {
+    goals.poll();
+    return !goals.matching([](const msg::GoalStatus& g) { return g.goal_id == "stored" && g.state == GoalState::Reached; })
+                .empty();
+  }, 60s)) << states_text(goals.all());
+  EXPECT_NE(read_file(behavior.log_file()).find("using stored plan 'demo-goal'"), std::string::npos)
+      << behavior.log_tail();
+}
+
+// A small world written by the test: a wall between start and goal with a gap at the top.
+constexpr const char* kScenario = R"pb(
+name: "mission-it"
+world {
+  width: 16.0
+  height: 10.0
+  obstacles { min_x: 7.8 min_y: 0.0 max_x: 8.2 max_y: 6.0 }
+}
+robots {
+  id: "r1"
+  kinematics: HOLONOMIC
+  radius: 0.3
+  max_speed: 1.0
+  max_omega: 2.0
+  start { x: 2.0 y: 2.0 theta: 0.0 }
+}
+simulation { mode: LOCKSTEP step_s: 0.05 seed: 1 ack_timeout_s: 5.0 command_timeout_s: 0.5 }
+)pb";
+
+// deploy/missions style, plans in serial: a reactive leg past the wall's free end, then a
+// plan-guided leg (0.34 reactive : 0.66 plan) to the goal beyond the wall, then stop. Each leg's
+// straight line keeps clear of the wall: without a range sensor nothing else would avoid it.
+constexpr const char* kMission = R"pb(
+name: "it_serial_r1"
+robot: "r1"
+initial_state: "to_gap"
+plan_sets {
+  name: "goal"
+  goal { x: 13 y: 2 }
+  layers: "obstacles"
+  selection: STATIC
+}
+states {
+  name: "to_gap"
+  go_to { goal { x: 9 y: 8 } tolerance: 0.6 gains { move_to_goal: 1 } }
+  transitions { to: "to_goal" when { at_goal {} } }
+}
+states {
+  name: "to_goal"
+  go_to { plan_set: "goal" tolerance: 0.4 gains { move_to_goal: 0.34 plan: 0.66 } }
+  transitions { to: "done" when { at_goal {} } }
+}
+states { name: "done" stop {} }
+)pb";
+
+// 4. A robot running a mission reaches its end state; the status sequence and its position show it.
+TEST_F(BehaviorTest, MissionReachesItsEndState) {
+  join(84);
+  write_file(dir().file("scenario.pbtxt"), kScenario);
+  write_file(dir().file("mission.pbtxt"), kMission);
+  Recorder<msg::Heartbeat> beats(participant(), dds::topics::heartbeat);
+  Recorder<msg::RobotState> states(participant(), dds::topics::robot_state);
+  Recorder<msg::MissionStatus> mission(participant(), dds::topics::mission_status);
+
+  start_simulator({"--config", dir().file("scenario.pbtxt"), "--wait-for", "behavior/r1"});
+  auto& behavior = start_behavior("r1", {"--mission", dir().file("mission.pbtxt")});
+  ASSERT_TRUE(await_ready(beats, behavior));
+  auto text = [&] {
+    std::string out;
+    for (const auto& m : mission.all()) out += m.event + "(" + m.state + (m.reason.empty() ? "" : ": " + m.reason) + ") ";
+    return out;
+  };
+  ASSERT_TRUE(await("mission finished", [&] {
+    mission.poll();
+    states.poll();
+    return !mission.all().empty() && mission.all().back().finished;
+  }, 90s)) << text();
+
+  std::vector<std::string> events;
+  for (const auto& m : mission.all()) {
+    EXPECT_EQ(m.robot_id, "r1");
+    EXPECT_EQ(m.mission, "it_serial_r1");
+    events.push_back(m.event + ":" + m.state);
+  }
+  EXPECT_EQ(events, (std::vector<std::string>{"started:to_gap", "transition:to_goal", "plan_chosen:to_goal",
+                                              "transition:done", "finished:done"}))
+      << text();
+  const int64_t finished_tick = mission.all().back().tick;
+  ASSERT_TRUE(await("r1 states 10 ticks after the mission finished", [&] {
+    states.poll();
+    const auto s = last_state_of(states, "r1");
+    return s && s->tick >= finished_tick + 10;
+  }));
+  const auto last = *last_state_of(states, "r1");
+  EXPECT_LE(std::hypot(last.x - 13.0, last.y - 2.0), 0.4 + 0.1) << "r1 at (" << last.x << ", " << last.y << ")";
+  EXPECT_NEAR(last.vx, 0.0, 1e-9);
+  EXPECT_NEAR(last.vy, 0.0, 1e-9);
+  for (const auto& s : states.all()) EXPECT_FALSE(s.in_collision) << "tick " << s.tick;
+}
+
+// 5. A mission file with errors: the process exits 1 and says where.
+TEST_F(BehaviorTest, MissionFileErrorsExitWithOne) {
+  join(85);
+  write_file(dir().file("bad.pbtxt"), "name: \"bad\"\nrobot: \"r1\"\ninitial_state: \"nowhere\"\n");
+  auto& behavior = start_behavior("r1", {"--mission", dir().file("bad.pbtxt")});
+  const auto status = behavior.wait_for_exit(20s);
+  ASSERT_TRUE(status);
+  EXPECT_TRUE(status->exited);
+  EXPECT_EQ(status->code, 1);
+  EXPECT_NE(read_file(behavior.log_file()).find(dir().file("bad.pbtxt") + ":3:"), std::string::npos)
+      << behavior.log_tail();
+}
+
+}  // namespace
+}  // namespace autonomy::test

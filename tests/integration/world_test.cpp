@@ -1,0 +1,490 @@
+// Integration tests of the simulator's world v2 over DDS: doors (ground truth, door commands,
+// perception), the radio (links, team connectivity) and team messages relayed through it, with
+// the real simulator and behavior processes and this test's own participant. Scenario files are
+// written by each test into its own folder.
+//
+//   domain  test
+//   ------  -----------------------------------------------
+//     71    WorldTest.ClosedDoorStopsRobotUntilOpened
+//     72    WorldTest.RadioLinkLostBehindBuildingAndRegained
+//     73    WorldTest.TeamMessagesDroppedWhileDisconnected
+// (ctest names them integration.<suite>.<test>.)
+#include "tests/support/child_process.hpp"
+#include "tests/support/dds_observer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <csignal>
+#include <cstdlib>
+#include <fstream>
+#include <list>
+#include <memory>
+#include <sstream>
+
+namespace autonomy::test {
+namespace {
+
+using namespace std::chrono_literals;
+using msg::GoalState;
+
+enum Domain : int {
+  kDomainDoor = 71,
+  kDomainRadio = 72,
+  kDomainTeamMessages = 73,
+};
+
+std::string dds_uri() { return std::string("file://") + AUTONOMY_SOURCE_DIR + "/deploy/dds/loopback.xml"; }
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+void write_file(const std::string& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+  ASSERT_TRUE(out.good()) << "cannot write " << path;
+}
+
+// A corridor split by a wall at x = 10 whose only opening is door d1 (closed at the start). The
+// door swings clockwise, into the east room, away from a robot waiting on the west side.
+constexpr const char* kDoorScenario = R"pb(
+name: "door-corridor"
+world {
+  width: 20.0
+  height: 6.0
+  obstacles { min_x: 9.9 min_y: 0.0 max_x: 10.1 max_y: 2.2 }
+  obstacles { min_x: 9.9 min_y: 3.8 max_x: 10.1 max_y: 6.0 }
+}
+rooms { name: "west" }
+rooms { name: "east" }
+doors {
+  id: "d1"
+  position { x: 10.0 y: 3.0 }
+  width: 1.6
+  heading: 1.5707963267948966
+  swing: CLOCKWISE
+  rooms: "west"
+  rooms: "east"
+  angle: 0.0
+}
+robots {
+  id: "r1"
+  kinematics: HOLONOMIC
+  radius: 0.3
+  max_speed: 1.0
+  max_omega: 2.0
+  start { x: 2.0 y: 3.0 theta: 0.0 }
+  spawn_at_start: true
+  sensors {
+    range { rays: 16 max_range_m: 6.0 }
+    doors { range_m: 4.0 }
+  }
+}
+simulation { mode: LOCKSTEP step_s: 0.05 seed: 3 }
+)pb";
+
+// A building between r1 (parked at (3, 10)) and the far side (25, 10); walls take 60 dB each, so
+// a link through the building is lost while the open distance alone keeps it.
+constexpr const char* kRadioScenario = R"pb(
+name: "radio-shadow"
+world {
+  width: 30.0
+  height: 20.0
+  obstacles { min_x: 10.0 min_y: 4.0 max_x: 20.0 max_y: 16.0 }
+}
+robots {
+  id: "r1"
+  kinematics: HOLONOMIC
+  start { x: 3.0 y: 10.0 theta: 0.0 }
+  spawn_at_start: true
+}
+robots {
+  id: "r2"
+  kinematics: HOLONOMIC
+  start { x: 6.0 y: 10.0 theta: 0.0 }
+  spawn_at_start: true
+}
+radio { wall_loss_db: 60.0 }
+simulation { mode: LOCKSTEP step_s: 0.05 seed: 5 }
+)pb";
+
+constexpr double kBehindX = 25.0, kBehindY = 10.0;  // r2's goal behind the building
+constexpr double kHomeX = 6.0, kHomeY = 10.0;       // and back
+
+class WorldTest : public ::testing::Test {
+ protected:
+  void join(Domain domain) {
+    domain_ = domain;
+    ASSERT_EQ(setenv("CYCLONEDDS_URI", dds_uri().c_str(), 1), 0);
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = std::make_unique<TestDir>(std::string(info->test_suite_name()) + "." + info->name());
+    participant_.emplace(domain);
+  }
+
+  void TearDown() override {
+    if (HasFailure()) {
+      for (auto& c : children_) {
+        if (c.child->running())
+          std::fprintf(stderr, "%s was still running\n", c.child->name().c_str());
+        else if (c.child->status())
+          std::fprintf(stderr, "%s ended: %s\n", c.child->name().c_str(), c.child->status()->describe().c_str());
+        std::fprintf(stderr, "%s\n", c.child->log_tail().c_str());
+      }
+    }
+    children_.clear();
+    participant_.reset();
+    dir_.reset();
+  }
+
+  const dds::Participant& participant() const { return *participant_; }
+  const TestDir& dir() const { return *dir_; }
+
+  ChildProcess& start(const std::string& name, const std::string& program, std::vector<std::string> args) {
+    const std::map<std::string, std::string> env = {{"CYCLONEDDS_URI", dds_uri()},
+                                                    {"AUTONOMY_LOG_DIR", dir_->path()}};
+    children_.push_back({std::make_unique<ChildProcess>(name, program, args, env, dir_->file(name + ".out")), true});
+    return *children_.back().child;
+  }
+  ChildProcess& start_simulator(const std::string& scenario_file, std::vector<std::string> args) {
+    args.insert(args.end(), {"--config", scenario_file, "--domain", std::to_string(domain_), "--log-dir",
+                             dir_->path(), "--log-level", "debug"});
+    return start("simulator", AUTONOMY_SIMULATOR_BIN, args);
+  }
+  // The behavior takes the map from the simulator (autonomy/map), not from the scenario file.
+  ChildProcess& start_behavior(const std::string& robot) {
+    return start("behavior-" + robot, AUTONOMY_BEHAVIOR_BIN,
+                 {"--robot", robot, "--domain", std::to_string(domain_), "--log-dir", dir_->path()});
+  }
+  void stop_watching(const ChildProcess& child) {
+    for (auto& c : children_)
+      if (c.child.get() == &child) c.must_keep_running = false;
+  }
+
+  ::testing::AssertionResult await(const std::string& what, const std::function<bool()>& condition,
+                                   std::chrono::milliseconds timeout = kDeadline) {
+    std::string died;
+    auto result = eventually(
+        what,
+        [&] {
+          for (auto& c : children_) {
+            if (c.must_keep_running && !c.child->running()) {
+              died = c.child->name() + " ended (" + c.child->status()->describe() + ")";
+              return true;
+            }
+          }
+          return condition();
+        },
+        timeout);
+    if (!died.empty()) return ::testing::AssertionFailure() << died << " while waiting for: " << what;
+    return result;
+  }
+
+  ::testing::AssertionResult await_ready(Recorder<msg::Heartbeat>& beats, const ChildProcess& child) {
+    const pid_t pid = child.pid();
+    return await(child.name() + " heartbeat state ready", [&] {
+      beats.poll();
+      return !beats.matching([&](const msg::Heartbeat& h) { return h.pid == pid && h.state == msg::ServiceState::Ready; })
+                  .empty();
+    });
+  }
+
+  int domain_ = 0;
+
+ private:
+  struct Child {
+    std::unique_ptr<ChildProcess> child;
+    bool must_keep_running;
+  };
+  std::unique_ptr<TestDir> dir_;
+  std::optional<dds::Participant> participant_;
+  std::list<Child> children_;
+};
+
+::testing::AssertionResult send_goal(const dds::Writer<msg::NavGoal>& writer, const std::string& robot,
+                                     const std::string& goal_id, double x, double y) {
+  if (!writer.wait_for_readers(1, kDeadline))
+    return ::testing::AssertionFailure() << "no reader of autonomy/nav/goal";
+  msg::NavGoal goal;
+  goal.robot_id = robot;
+  goal.goal_id = goal_id;
+  goal.x = x;
+  goal.y = y;
+  writer.write(goal);
+  return ::testing::AssertionSuccess();
+}
+
+std::optional<msg::RobotState> last_state_of(const Recorder<msg::RobotState>& r, const std::string& robot) {
+  std::optional<msg::RobotState> last;
+  for (const auto& s : r.all())
+    if (s.robot_id == robot && (!last || s.tick >= last->tick)) last = s;
+  return last;
+}
+
+std::optional<GoalState> last_goal_state(const Recorder<msg::GoalStatus>& r, const std::string& goal_id) {
+  std::optional<GoalState> last;
+  for (const auto& s : r.all())
+    if (s.goal_id == goal_id) last = s.state;
+  return last;
+}
+
+bool ended(std::optional<GoalState> s) { return s && *s != GoalState::Accepted && *s != GoalState::Active; }
+
+// The connected flags of the r1-r2 link, in order, with repeats collapsed.
+std::vector<bool> link_history(const Recorder<msg::RadioLink>& links) {
+  std::vector<bool> out;
+  for (const auto& l : links.all()) {
+    if (l.robot_a != "r1" || l.robot_b != "r2") continue;
+    if (out.empty() || out.back() != l.connected) out.push_back(l.connected);
+  }
+  return out;
+}
+
+std::string text(const std::vector<bool>& v) {
+  std::string out;
+  for (bool b : v) out += std::string(out.empty() ? "" : " -> ") + (b ? "connected" : "disconnected");
+  return out.empty() ? "(none)" : out;
+}
+
+// (a) A closed door stops a robot whose planner does not know about doors; opened by a door
+// command, it lets the robot through to its goal. Also: perception and door ground truth.
+TEST_F(WorldTest, ClosedDoorStopsRobotUntilOpened) {
+  join(kDomainDoor);
+  const std::string scenario = dir().file("door.pbtxt");
+  write_file(scenario, kDoorScenario);
+  Recorder<msg::Heartbeat> beats(participant(), dds::topics::heartbeat);
+  Recorder<msg::RobotState> states(participant(), dds::topics::robot_state);
+  Recorder<msg::GoalStatus> goals(participant(), dds::topics::goal_status);
+  Recorder<msg::DoorState> doors(participant(), dds::topics::truth_door);
+  Recorder<msg::RangeScan> scans(participant(), dds::topics::range_scan);
+  Recorder<msg::DoorObservation> sightings(participant(), dds::topics::door_observation);
+  Recorder<msg::CommandRejection> rejections(participant(), dds::topics::command_rejected);
+  dds::Topic<msg::NavGoal> goal_topic(participant(), dds::topics::nav_goal);
+  dds::Writer<msg::NavGoal> goal_writer(participant(), goal_topic);
+  dds::Topic<msg::DoorCommand> door_topic(participant(), dds::topics::door_command);
+  dds::Writer<msg::DoorCommand> door_writer(participant(), door_topic);
+  const auto poll_all = [&] {
+    states.poll();
+    goals.poll();
+    doors.poll();
+    scans.poll();
+    sightings.poll();
+    rejections.poll();
+  };
+
+  start_simulator(scenario, {"--wait-for", "behavior/r1"});
+  auto& behavior = start_behavior("r1");
+  ASSERT_TRUE(await_ready(beats, behavior));
+  ASSERT_TRUE(await("door d1 ground truth: closed", [&] {
+    poll_all();
+    return !doors.all().empty();
+  }));
+  EXPECT_EQ(doors.all().front().door_id, "d1");
+  EXPECT_TRUE(doors.all().front().closed);
+  ASSERT_TRUE(send_goal(goal_writer, "r1", "through-door", 18.0, 3.0));
+
+  // The robot drives into the closed leaf and stays on the west side.
+  ASSERT_TRUE(await("r1 stopped in contact with the closed door", [&] {
+    poll_all();
+    const auto s = last_state_of(states, "r1");
+    return s && s->in_collision && s->x > 9.0;
+  }, 60s));
+  const int64_t stopped_tick = last_state_of(states, "r1")->tick;
+  ASSERT_TRUE(await("40 more ticks with the door closed", [&] {
+    poll_all();
+    return last_state_of(states, "r1")->tick >= stopped_tick + 40;
+  }));
+  for (const auto& s : states.all()) {
+    if (s.robot_id != "r1") continue;
+    ASSERT_LT(s.x, 10.0 - 0.025 - 0.3 + 1e-6) << "r1 passed the closed door at tick " << s.tick;
+  }
+  // What r1 perceived: range scans every tick, and the door (closed) once within range.
+  ASSERT_FALSE(scans.all().empty());
+  EXPECT_EQ(scans.all().back().ranges.size(), 16u);
+  EXPECT_EQ(scans.all().back().robot_id, "r1");
+  ASSERT_FALSE(sightings.all().empty()) << "r1 never observed door d1";
+  EXPECT_EQ(sightings.all().back().doors.at(0).door_id, "d1");
+  EXPECT_NEAR(sightings.all().back().doors.at(0).angle_estimate, 0.0, 1e-9);
+
+  // A bad door command is rejected with a reason; a good one opens the door.
+  ASSERT_TRUE(door_writer.wait_for_readers(1, kDeadline));
+  door_writer.write({"no-such-door", 1.0, "world_test"});
+  ASSERT_TRUE(await("the rejection of the unknown door", [&] {
+    poll_all();
+    return !rejections.matching([](const msg::CommandRejection& r) {
+                        return r.source == "world_test" && r.reason.find("no-such-door") != std::string::npos;
+                      }).empty();
+  }));
+  door_writer.write({"d1", M_PI / 2, "world_test"});
+  ASSERT_TRUE(await("door d1 ground truth: open", [&] {
+    poll_all();
+    return !doors.matching([](const msg::DoorState& d) { return d.door_id == "d1" && !d.closed; }).empty();
+  }));
+
+  // The goal may have been given up (blocked) while the door was closed: ask again then.
+  std::string goal_id = "through-door";
+  if (ended(last_goal_state(goals, goal_id))) {
+    goal_id = "through-door-again";
+    ASSERT_TRUE(send_goal(goal_writer, "r1", goal_id, 18.0, 3.0));
+  }
+  ASSERT_TRUE(await("r1 through the door and at its goal", [&] {
+    poll_all();
+    return last_goal_state(goals, goal_id) == GoalState::Reached;
+  }, 90s)) << "last goal state: "
+           << (last_goal_state(goals, goal_id) ? msg::to_string(*last_goal_state(goals, goal_id)) : "none");
+  const auto last = last_state_of(states, "r1");
+  ASSERT_TRUE(last);
+  EXPECT_GT(last->x, 17.0);
+}
+
+// (b) r2 drives behind a building: its link to r1 is lost, and comes back as it returns. The run
+// writes its metrics and a picture at exit.
+TEST_F(WorldTest, RadioLinkLostBehindBuildingAndRegained) {
+  join(kDomainRadio);
+  const std::string scenario = dir().file("radio.pbtxt");
+  write_file(scenario, kRadioScenario);
+  Recorder<msg::Heartbeat> beats(participant(), dds::topics::heartbeat);
+  Recorder<msg::GoalStatus> goals(participant(), dds::topics::goal_status);
+  Recorder<msg::RadioLink> links(participant(), dds::topics::radio_link);
+  Recorder<msg::TeamConnectivity> team(participant(), dds::topics::radio_team);
+  dds::Topic<msg::NavGoal> goal_topic(participant(), dds::topics::nav_goal);
+  dds::Writer<msg::NavGoal> goal_writer(participant(), goal_topic);
+  const auto poll_all = [&] {
+    goals.poll();
+    links.poll();
+    team.poll();
+  };
+
+  auto& simulator = start_simulator(scenario, {"--wait-for", "behavior/r2", "--metrics", dir().file("run"), "--svg",
+                                               dir().file("run.svg")});
+  auto& behavior = start_behavior("r2");
+  ASSERT_TRUE(await_ready(beats, behavior));
+  ASSERT_TRUE(await("the r1-r2 link, connected", [&] {
+    poll_all();
+    return link_history(links) == std::vector<bool>{true};
+  }));
+  ASSERT_TRUE(await("a connected team", [&] {
+    poll_all();
+    return !team.all().empty() && team.all().back().fully_connected;
+  }));
+
+  ASSERT_TRUE(send_goal(goal_writer, "r2", "behind", kBehindX, kBehindY));
+  ASSERT_TRUE(await("r2 behind the building", [&] {
+    poll_all();
+    return ended(last_goal_state(goals, "behind"));
+  }, 90s));
+  ASSERT_EQ(last_goal_state(goals, "behind"), GoalState::Reached);
+  ASSERT_TRUE(await("the r1-r2 link lost", [&] {
+    poll_all();
+    return link_history(links) == std::vector<bool>{true, false};
+  })) << text(link_history(links));
+  EXPECT_FALSE(team.all().back().fully_connected);
+  EXPECT_EQ(team.all().back().components.size(), 2u);
+
+  ASSERT_TRUE(send_goal(goal_writer, "r2", "home", kHomeX, kHomeY));
+  ASSERT_TRUE(await("r2 back home", [&] {
+    poll_all();
+    return ended(last_goal_state(goals, "home"));
+  }, 90s));
+  ASSERT_TRUE(await("the r1-r2 link regained", [&] {
+    poll_all();
+    return link_history(links) == std::vector<bool>{true, false, true};
+  })) << text(link_history(links));
+  EXPECT_TRUE(team.all().back().fully_connected);
+
+  // At exit: metrics (both robots and the team) and a picture.
+  stop_watching(simulator);
+  stop_watching(behavior);
+  simulator.signal(SIGINT);
+  const auto status = simulator.wait_for_exit(20s);
+  ASSERT_TRUE(status) << "the simulator did not stop";
+  EXPECT_TRUE(status->exited && status->code == 0) << status->describe();
+  const std::string csv = read_file(dir().file("run.csv"));
+  EXPECT_NE(csv.find("\nr1,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("\nr2,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("\nteam,"), std::string::npos) << csv;
+  EXPECT_NE(read_file(dir().file("run.json")).find("\"robots\""), std::string::npos);
+  EXPECT_NE(read_file(dir().file("run.svg")).find("<svg"), std::string::npos);
+}
+
+// (c) Team messages through the simulator's radio: delivered while r1 and r2 are connected,
+// dropped (and counted) while the building is between them.
+TEST_F(WorldTest, TeamMessagesDroppedWhileDisconnected) {
+  join(kDomainTeamMessages);
+  const std::string scenario = dir().file("radio.pbtxt");
+  write_file(scenario, kRadioScenario);
+  Recorder<msg::Heartbeat> beats(participant(), dds::topics::heartbeat);
+  Recorder<msg::GoalStatus> goals(participant(), dds::topics::goal_status);
+  Recorder<msg::RadioLink> links(participant(), dds::topics::radio_link);
+  Recorder<msg::TeamDelivery> inbox(participant(), dds::topics::team_inbox);
+  Recorder<msg::SimulatorStatus> sim_status(participant(), dds::topics::sim_status);
+  dds::Topic<msg::NavGoal> goal_topic(participant(), dds::topics::nav_goal);
+  dds::Writer<msg::NavGoal> goal_writer(participant(), goal_topic);
+  dds::Topic<msg::TeamMessage> outbox_topic(participant(), dds::topics::team_outbox);
+  dds::Writer<msg::TeamMessage> outbox(participant(), outbox_topic);
+  const auto poll_all = [&] {
+    goals.poll();
+    links.poll();
+    inbox.poll();
+    sim_status.poll();
+  };
+  const auto delivered = [&](const std::string& id) {
+    return inbox.matching([&](const msg::TeamDelivery& d) { return d.message_id == id; });
+  };
+
+  start_simulator(scenario, {"--wait-for", "behavior/r2"});
+  auto& behavior = start_behavior("r2");
+  ASSERT_TRUE(await_ready(beats, behavior));
+  ASSERT_TRUE(await("the r1-r2 link, connected", [&] {
+    poll_all();
+    return link_history(links) == std::vector<bool>{true};
+  }));
+  ASSERT_TRUE(outbox.wait_for_readers(1, kDeadline));
+
+  outbox.write({"r1", "r2", "hello-1", "while connected"});
+  outbox.write({"r1", "*", "hello-all", "broadcast while connected"});
+  ASSERT_TRUE(await("hello-1 and hello-all in r2's inbox", [&] {
+    poll_all();
+    return !delivered("hello-1").empty() && !delivered("hello-all").empty();
+  }));
+  const msg::TeamDelivery d = delivered("hello-1").front();
+  EXPECT_EQ(d.recipient, "r2");
+  EXPECT_EQ(d.from, "r1");
+  EXPECT_EQ(d.payload, "while connected");
+  EXPECT_EQ(d.hops, 1u);
+  EXPECT_GE(d.delivered_time_ns, d.sent_time_ns);
+  EXPECT_EQ(delivered("hello-all").front().to, "*");
+
+  ASSERT_TRUE(send_goal(goal_writer, "r2", "behind", kBehindX, kBehindY));
+  ASSERT_TRUE(await("r2 behind the building, link lost", [&] {
+    poll_all();
+    return ended(last_goal_state(goals, "behind")) && link_history(links) == std::vector<bool>{true, false};
+  }, 90s)) << text(link_history(links));
+  uint64_t dropped_before = 0;
+  ASSERT_TRUE(await("a simulator status", [&] {
+    poll_all();
+    return !sim_status.all().empty();
+  }));
+  dropped_before = sim_status.all().back().team_messages_dropped_no_route;
+
+  outbox.write({"r1", "r2", "lost-1", "while disconnected"});
+  ASSERT_TRUE(await("the drop counted in autonomy/sim/status", [&] {
+    poll_all();
+    return sim_status.all().back().team_messages_dropped_no_route > dropped_before;
+  }));
+  // Give a delivery every chance to show up: it must not.
+  const int64_t seen_at = sim_status.all().back().tick;
+  ASSERT_TRUE(await("20 more ticks", [&] {
+    poll_all();
+    return sim_status.all().back().tick >= seen_at + 20;
+  }));
+  EXPECT_TRUE(delivered("lost-1").empty()) << "a message crossed the building";
+  EXPECT_GE(sim_status.all().back().team_messages_delivered, 2u);
+}
+
+}  // namespace
+}  // namespace autonomy::test
