@@ -96,6 +96,7 @@ SimulatorNode::SimulatorNode(service::Service& service, Scenario scenario, Simul
       inbox_topic_(service.participant(), dds::topics::team_inbox),
       door_command_topic_(service.participant(), dds::topics::door_command),
       goal_status_topic_(service.participant(), dds::topics::goal_status),
+      mission_status_topic_(service.participant(), dds::topics::mission_status),
       clock_writer_(service.participant(), clock_topic_),
       state_writer_(service.participant(), state_topic_),
       rejection_writer_(service.participant(), rejection_topic_),
@@ -115,7 +116,8 @@ SimulatorNode::SimulatorNode(service::Service& service, Scenario scenario, Simul
       spawn_request_reader_(service.participant(), spawn_request_topic_),
       door_command_reader_(service.participant(), door_command_topic_),
       outbox_reader_(service.participant(), outbox_topic_),
-      goal_status_reader_(service.participant(), goal_status_topic_) {
+      goal_status_reader_(service.participant(), goal_status_topic_),
+      mission_status_reader_(service.participant(), mission_status_topic_) {
   if (options_.radio_period_ticks < 1) throw std::invalid_argument("radio period must be at least 1 tick");
   delivery_rng_.seed(options_.settings.seed ^ kDeliveryStreamSalt);
   if (!options_.metrics_prefix.empty()) {
@@ -140,6 +142,7 @@ SimulatorNode::SimulatorNode(service::Service& service, Scenario scenario, Simul
   loop.on_samples<msg::DoorCommand>(door_command_reader_, [this](auto s) { on_door_commands(std::move(s)); });
   loop.on_samples<msg::TeamMessage>(outbox_reader_, [this](auto s) { on_outbox(std::move(s)); });
   loop.on_samples<msg::GoalStatus>(goal_status_reader_, [this](auto s) { on_goal_status(std::move(s)); });
+  loop.on_samples<msg::MissionStatus>(mission_status_reader_, [this](auto s) { on_mission_status(std::move(s)); });
   loop.every(kHousekeepingPeriod, [this] { on_timer(); });
   loop.every(kStatusPeriod, [this] { publish_status(); });
 
@@ -400,6 +403,11 @@ void SimulatorNode::on_door_commands(std::vector<dds::Sample<msg::DoorCommand>> 
 void SimulatorNode::on_goal_status(std::vector<dds::Sample<msg::GoalStatus>> samples) {
   for (const auto& s : samples)
     if (s.valid) goal_reached_[s.value.robot_id] = s.value.state == msg::GoalState::Reached;
+}
+
+void SimulatorNode::on_mission_status(std::vector<dds::Sample<msg::MissionStatus>> samples) {
+  for (const auto& s : samples)
+    if (s.valid) goal_reached_[s.value.robot_id] = s.value.finished;
 }
 
 // --- Radio ------------------------------------------------------------------------------------

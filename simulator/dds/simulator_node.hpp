@@ -66,6 +66,7 @@ class SimulatorNode {
   void on_door_commands(std::vector<dds::Sample<msg::DoorCommand>> samples);
   void on_outbox(std::vector<dds::Sample<msg::TeamMessage>> samples);
   void on_goal_status(std::vector<dds::Sample<msg::GoalStatus>> samples);
+  void on_mission_status(std::vector<dds::Sample<msg::MissionStatus>> samples);
   void on_timer();
 
   bool lockstep() const { return options_.settings.mode == ClockMode::Lockstep; }
@@ -125,7 +126,9 @@ class SimulatorNode {
 
   std::vector<std::optional<msg::DoorState>> published_doors_;  // parallel to world_.doors()
   std::optional<RunMetrics> metrics_;
-  std::map<std::string, bool> goal_reached_;  // from autonomy/nav/goal_status
+  // A robot has finished when its goal is reached (autonomy/nav/goal_status) or its mission ended
+  // (autonomy/mission/status); the metrics' mission time stops there.
+  std::map<std::string, bool> goal_reached_;
 
   dds::Topic<msg::SimClock> clock_topic_;
   dds::Topic<msg::RobotState> state_topic_;
@@ -147,6 +150,7 @@ class SimulatorNode {
   dds::Topic<msg::TeamDelivery> inbox_topic_;
   dds::Topic<msg::DoorCommand> door_command_topic_;
   dds::Topic<msg::GoalStatus> goal_status_topic_;
+  dds::Topic<msg::MissionStatus> mission_status_topic_;
   dds::Writer<msg::SimClock> clock_writer_;
   dds::Writer<msg::RobotState> state_writer_;
   dds::Writer<msg::CommandRejection> rejection_writer_;
@@ -167,6 +171,7 @@ class SimulatorNode {
   dds::Reader<msg::DoorCommand> door_command_reader_;
   dds::Reader<msg::TeamMessage> outbox_reader_;
   dds::Reader<msg::GoalStatus> goal_status_reader_;
+  dds::Reader<msg::MissionStatus> mission_status_reader_;
 };
 
 }  // namespace autonomy::sim
