@@ -10,8 +10,7 @@
 //     83    BehaviorTest.StoredPlanIsUsedAndReachesTheGoal
 //     84    BehaviorTest.MissionReachesItsEndState
 //     85    BehaviorTest.MissionFileErrorsExitWithOne
-#include "tests/support/child_process.hpp"
-#include "tests/support/dds_observer.hpp"
+#include "tests/support/process_test.hpp"
 
 #include <gtest/gtest.h>
 
@@ -27,14 +26,7 @@ namespace {
 using namespace std::chrono_literals;
 using msg::GoalState;
 
-std::string dds_uri() { return std::string("file://") + AUTONOMY_SOURCE_DIR + "/deploy/dds/loopback.xml"; }
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 void write_file(const std::string& path, const std::string& text) {
   std::ofstream out(path);
@@ -58,81 +50,7 @@ std::optional<msg::RobotState> last_state_of(const Recorder<msg::RobotState>& r,
   return last;
 }
 
-class BehaviorTest : public ::testing::Test {
- protected:
-  void join(int domain) {
-    domain_ = domain;
-    ASSERT_EQ(setenv("CYCLONEDDS_URI", dds_uri().c_str(), 1), 0);
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = std::make_unique<TestDir>(std::string(info->test_suite_name()) + "." + info->name());
-    participant_.emplace(domain);
-  }
-
-  void TearDown() override {
-    if (HasFailure()) {
-      for (auto& c : children_) {
-        std::fprintf(stderr, "---- %s (%s)\n%s\n", c->name().c_str(),
-                     c->running() ? "running" : c->status()->describe().c_str(), c->log_tail().c_str());
-      }
-    }
-    children_.clear();
-    participant_.reset();
-    dir_.reset();
-  }
-
-  const dds::Participant& participant() const { return *participant_; }
-  const TestDir& dir() const { return *dir_; }
-
-  ChildProcess& start(const std::string& name, const std::string& program, std::vector<std::string> args) {
-    args.insert(args.end(), {"--domain", std::to_string(domain_), "--log-dir", dir_->path()});
-    const std::map<std::string, std::string> env = {{"CYCLONEDDS_URI", dds_uri()}, {"AUTONOMY_LOG_DIR", dir_->path()}};
-    children_.push_back(std::make_unique<ChildProcess>(name, program, args, env, dir_->file(name + ".out")));
-    return *children_.back();
-  }
-  ChildProcess& start_simulator(std::vector<std::string> args = {}) {
-    return start("simulator", AUTONOMY_SIMULATOR_BIN, std::move(args));
-  }
-  ChildProcess& start_behavior(const std::string& robot, std::vector<std::string> args = {}) {
-    args.insert(args.begin(), {"--robot", robot});
-    return start("behavior-" + robot, AUTONOMY_BEHAVIOR_BIN, std::move(args));
-  }
-
-  // eventually(), failing at once when a child ended.
-  ::testing::AssertionResult await(const std::string& what, const std::function<bool()>& condition,
-                                   std::chrono::milliseconds timeout = kDeadline) {
-    std::string died;
-    auto r = eventually(
-        what,
-        [&] {
-          for (auto& c : children_) {
-            if (!c->running()) {
-              died = c->name() + " ended (" + c->status()->describe() + ")";
-              return true;
-            }
-          }
-          return condition();
-        },
-        timeout);
-    if (!died.empty()) return ::testing::AssertionFailure() << died << " while waiting for: " << what;
-    return r;
-  }
-
-  ::testing::AssertionResult await_ready(Recorder<msg::Heartbeat>& beats, const ChildProcess& child) {
-    const pid_t pid = child.pid();
-    return await(child.name() + " ready", [&] {
-      beats.poll();
-      return !beats.matching([&](const msg::Heartbeat& h) { return h.pid == pid && h.state == msg::ServiceState::Ready; })
-                  .empty();
-    });
-  }
-
-  int domain_ = 0;
-
- private:
-  std::unique_ptr<TestDir> dir_;
-  std::optional<dds::Participant> participant_;
-  std::list<std::unique_ptr<ChildProcess>> children_;
-};
+class BehaviorTest : public ProcessTest {};
 
 // The demo scenario (deploy/scenarios/demo.pbtxt, built into the simulator): r1 starts at (2, 2),
 // a wall x in [9.8, 10.2], y in [0, 8] lies between it and (18, 2).

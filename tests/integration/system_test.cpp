@@ -17,8 +17,7 @@
 //     69    SystemTest.DeterminismSameRunGivesIdenticalTrajectory
 //     70    SystemTest.SpawnBadPoseIsRejected
 // (ctest names them integration.<suite>.<test>.)
-#include "tests/support/child_process.hpp"
-#include "tests/support/dds_observer.hpp"
+#include "tests/support/process_test.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -57,7 +56,6 @@ constexpr double kWallMinX = 9.8, kWallMaxX = 10.2, kWallMinY = 0.0, kWallMaxY =
 constexpr double kGoalX = 18.0, kGoalY = 2.0;
 constexpr double kGoalTolerance = 0.2;  // GoalTrackerConfig::default_tolerance_m (NavGoal.tolerance 0)
 
-std::string dds_uri() { return std::string("file://") + AUTONOMY_SOURCE_DIR + "/deploy/dds/loopback.xml"; }
 
 double distance_to_rect(double x, double y, double min_x, double min_y, double max_x, double max_y) {
   const double dx = std::max({min_x - x, 0.0, x - max_x});
@@ -79,120 +77,12 @@ std::string states_text(const std::vector<msg::GoalStatus>& v) {
   return out.empty() ? "(none)" : out;
 }
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 bool contains(const std::vector<std::string>& v, const std::string& s) {
   return std::find(v.begin(), v.end(), s) != v.end();
 }
 
-class SystemTest : public ::testing::Test {
- protected:
-  // Every test begins with this: its own domain, its own folder, the observer participant.
-  void join(Domain domain) {
-    domain_ = domain;
-    // The observer must use the same Cyclone configuration as the children (loopback, unicast).
-    ASSERT_EQ(setenv("CYCLONEDDS_URI", dds_uri().c_str(), 1), 0);
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = std::make_unique<TestDir>(std::string(info->test_suite_name()) + "." + info->name());
-    participant_.emplace(domain);
-  }
-
-  void TearDown() override {
-    if (HasFailure()) {
-      for (auto& c : children_) {
-        if (c.child->running()) {
-          std::fprintf(stderr, "%s was still running\n", c.child->name().c_str());
-        } else if (c.child->status()) {
-          std::fprintf(stderr, "%s ended: %s\n", c.child->name().c_str(), c.child->status()->describe().c_str());
-        }
-        std::fprintf(stderr, "%s\n", c.child->log_tail().c_str());
-      }
-    }
-    children_.clear();  // SIGKILL and reap whatever is left
-    participant_.reset();
-    dir_.reset();
-  }
-
-  const dds::Participant& participant() const { return *participant_; }
-  const TestDir& dir() const { return *dir_; }
-
-  // must_keep_running: await() fails at once when this child ends while it waits.
-  // args must name the domain themselves (`--domain`, where the program expects it).
-  ChildProcess& start(const std::string& name, const std::string& program, std::vector<std::string> args,
-                      bool must_keep_running, bool separate_stderr = false) {
-    const std::map<std::string, std::string> env = {{"CYCLONEDDS_URI", dds_uri()},
-                                                    {"AUTONOMY_LOG_DIR", dir_->path()}};
-    // <name>.out: the child's stdout (and stderr unless separate); services also write their own
-    // log file (<service>-<instance>.log) into the same folder through --log-dir.
-    const std::string log = dir_->file(name + ".out");
-    children_.push_back(
-        {std::make_unique<ChildProcess>(name, program, args, env, log, separate_stderr ? dir_->file(name + ".err") : ""),
-         must_keep_running});
-    return *children_.back().child;
-  }
-  ChildProcess& start_simulator(std::vector<std::string> args = {}, bool must_keep_running = true,
-                                const std::string& name = "simulator") {
-    args.insert(args.end(), {"--domain", std::to_string(domain_), "--log-dir", dir_->path()});
-    return start(name, AUTONOMY_SIMULATOR_BIN, args, must_keep_running);
-  }
-  ChildProcess& start_behavior(const std::string& robot, std::vector<std::string> args = {},
-                               bool must_keep_running = true, std::string name = "") {
-    args.insert(args.begin(), {"--robot", robot});
-    args.insert(args.end(), {"--domain", std::to_string(domain_), "--log-dir", dir_->path()});
-    if (name.empty()) name = "behavior-" + robot;
-    return start(name, AUTONOMY_BEHAVIOR_BIN, args, must_keep_running);
-  }
-  void stop_watching(const ChildProcess& child) {
-    for (auto& c : children_)
-      if (c.child.get() == &child) c.must_keep_running = false;
-  }
-
-  // eventually(), and fails at once when a child that must keep running has ended.
-  ::testing::AssertionResult await(const std::string& what, const std::function<bool()>& condition,
-                                   std::chrono::milliseconds timeout = kDeadline) {
-    std::string died;
-    auto result = eventually(
-        what,
-        [&] {
-          for (auto& c : children_) {
-            if (c.must_keep_running && !c.child->running()) {
-              died = c.child->name() + " ended (" + c.child->status()->describe() + ")";
-              return true;
-            }
-          }
-          return condition();
-        },
-        timeout);
-    if (!died.empty()) return ::testing::AssertionFailure() << died << " while waiting for: " << what;
-    return result;
-  }
-
-  // The heartbeat of the process with this pid says Ready.
-  ::testing::AssertionResult await_ready(Recorder<msg::Heartbeat>& beats, const ChildProcess& child) {
-    const pid_t pid = child.pid();
-    return await(child.name() + " (pid " + std::to_string(pid) + ") heartbeat state ready", [&] {
-      beats.poll();
-      return !beats.matching([&](const msg::Heartbeat& h) { return h.pid == pid && h.state == msg::ServiceState::Ready; })
-                  .empty();
-    });
-  }
-
-  int domain_ = 0;
-
- private:
-  struct Child {
-    std::unique_ptr<ChildProcess> child;
-    bool must_keep_running;
-  };
-  std::unique_ptr<TestDir> dir_;
-  std::optional<dds::Participant> participant_;
-  std::list<Child> children_;  // destroyed (killed) in TearDown, before the participant
-};
+class SystemTest : public ProcessTest {};
 
 // Sends a goal once the behavior's goal reader is matched (NavGoal is volatile).
 ::testing::AssertionResult send_goal(const dds::Writer<msg::NavGoal>& writer, uint32_t readers, const std::string& robot,

@@ -9,8 +9,7 @@
 //     72    WorldTest.RadioLinkLostBehindBuildingAndRegained
 //     73    WorldTest.TeamMessagesDroppedWhileDisconnected
 // (ctest names them integration.<suite>.<test>.)
-#include "tests/support/child_process.hpp"
-#include "tests/support/dds_observer.hpp"
+#include "tests/support/process_test.hpp"
 
 #include <gtest/gtest.h>
 
@@ -35,14 +34,7 @@ enum Domain : int {
   kDomainTeamMessages = 73,
 };
 
-std::string dds_uri() { return std::string("file://") + AUTONOMY_SOURCE_DIR + "/deploy/dds/loopback.xml"; }
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 void write_file(const std::string& path, const std::string& text) {
   std::ofstream out(path);
@@ -116,93 +108,14 @@ simulation { mode: LOCKSTEP step_s: 0.05 seed: 5 }
 constexpr double kBehindX = 25.0, kBehindY = 10.0;  // r2's goal behind the building
 constexpr double kHomeX = 6.0, kHomeY = 10.0;       // and back
 
-class WorldTest : public ::testing::Test {
+class WorldTest : public ProcessTest {
  protected:
-  void join(Domain domain) {
-    domain_ = domain;
-    ASSERT_EQ(setenv("CYCLONEDDS_URI", dds_uri().c_str(), 1), 0);
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = std::make_unique<TestDir>(std::string(info->test_suite_name()) + "." + info->name());
-    participant_.emplace(domain);
-  }
-
-  void TearDown() override {
-    if (HasFailure()) {
-      for (auto& c : children_) {
-        if (c.child->running())
-          std::fprintf(stderr, "%s was still running\n", c.child->name().c_str());
-        else if (c.child->status())
-          std::fprintf(stderr, "%s ended: %s\n", c.child->name().c_str(), c.child->status()->describe().c_str());
-        std::fprintf(stderr, "%s\n", c.child->log_tail().c_str());
-      }
-    }
-    children_.clear();
-    participant_.reset();
-    dir_.reset();
-  }
-
-  const dds::Participant& participant() const { return *participant_; }
-  const TestDir& dir() const { return *dir_; }
-
-  ChildProcess& start(const std::string& name, const std::string& program, std::vector<std::string> args) {
-    const std::map<std::string, std::string> env = {{"CYCLONEDDS_URI", dds_uri()},
-                                                    {"AUTONOMY_LOG_DIR", dir_->path()}};
-    children_.push_back({std::make_unique<ChildProcess>(name, program, args, env, dir_->file(name + ".out")), true});
-    return *children_.back().child;
-  }
   ChildProcess& start_simulator(const std::string& scenario_file, std::vector<std::string> args) {
-    args.insert(args.end(), {"--config", scenario_file, "--domain", std::to_string(domain_), "--log-dir",
-                             dir_->path(), "--log-level", "debug"});
-    return start("simulator", AUTONOMY_SIMULATOR_BIN, args);
+    args.insert(args.end(), {"--config", scenario_file, "--log-level", "debug"});
+    return ProcessTest::start_simulator(args);
   }
   // The behavior takes the map from the simulator (autonomy/map), not from the scenario file.
-  ChildProcess& start_behavior(const std::string& robot) {
-    return start("behavior-" + robot, AUTONOMY_BEHAVIOR_BIN,
-                 {"--robot", robot, "--domain", std::to_string(domain_), "--log-dir", dir_->path()});
-  }
-  void stop_watching(const ChildProcess& child) {
-    for (auto& c : children_)
-      if (c.child.get() == &child) c.must_keep_running = false;
-  }
-
-  ::testing::AssertionResult await(const std::string& what, const std::function<bool()>& condition,
-                                   std::chrono::milliseconds timeout = kDeadline) {
-    std::string died;
-    auto result = eventually(
-        what,
-        [&] {
-          for (auto& c : children_) {
-            if (c.must_keep_running && !c.child->running()) {
-              died = c.child->name() + " ended (" + c.child->status()->describe() + ")";
-              return true;
-            }
-          }
-          return condition();
-        },
-        timeout);
-    if (!died.empty()) return ::testing::AssertionFailure() << died << " while waiting for: " << what;
-    return result;
-  }
-
-  ::testing::AssertionResult await_ready(Recorder<msg::Heartbeat>& beats, const ChildProcess& child) {
-    const pid_t pid = child.pid();
-    return await(child.name() + " heartbeat state ready", [&] {
-      beats.poll();
-      return !beats.matching([&](const msg::Heartbeat& h) { return h.pid == pid && h.state == msg::ServiceState::Ready; })
-                  .empty();
-    });
-  }
-
-  int domain_ = 0;
-
- private:
-  struct Child {
-    std::unique_ptr<ChildProcess> child;
-    bool must_keep_running;
-  };
-  std::unique_ptr<TestDir> dir_;
-  std::optional<dds::Participant> participant_;
-  std::list<Child> children_;
+  ChildProcess& start_behavior(const std::string& robot) { return ProcessTest::start_behavior(robot); }
 };
 
 ::testing::AssertionResult send_goal(const dds::Writer<msg::NavGoal>& writer, const std::string& robot,
