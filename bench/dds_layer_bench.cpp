@@ -15,6 +15,8 @@
 #include "bench/bench_support.hpp"
 #include "bench/pingpong.hpp"
 
+#include <CLI/CLI.hpp>
+
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -52,27 +54,26 @@ struct Options {
   double tp_seconds = 2.0;
 };
 
+// Exits (help text or argument error, CLI11's exit code) when the arguments do not make a run.
 Options parse(int argc, char** argv) {
   Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto next = [&]() -> std::string {
-      if (i + 1 >= argc) throw std::runtime_error("missing value after " + a);
-      return argv[++i];
-    };
-    if (a == "--domain") o.domain = std::stoi(next());
-    else if (a == "--rounds") o.rounds = std::stoi(next());
-    else if (a == "--count") o.count = std::stoi(next());
-    else if (a == "--warmup") o.warmup = std::stoi(next());
-    else if (a == "--tp-seconds") o.tp_seconds = std::stod(next());
-    else if (a == "--quick") {
-      o.rounds = 1;
-      o.count = 1000;
-      o.tp_seconds = 0.5;
-    } else {
-      throw std::runtime_error("unknown option " + a +
-                               " (--domain N --rounds N --count N --warmup N --tp-seconds S --quick)");
-    }
+  bool quick = false;
+  CLI::App app{"Typed DDS layer against the raw Cyclone C API: round trips, throughput, CPU per sample"};
+  app.add_option("--domain", o.domain, "DDS domain id")->check(CLI::Range(0, 232))->capture_default_str();
+  app.add_option("--rounds", o.rounds, "Alternating raw/layer rounds")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("--count", o.count, "Round trips per run")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("--warmup", o.warmup, "Warm-up round trips")->check(CLI::NonNegativeNumber)->capture_default_str();
+  app.add_option("--tp-seconds", o.tp_seconds, "Seconds per throughput run")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_flag("--quick", quick, "Short runs, for a smoke test (1 round, 1000 round trips, 0.5 s)");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    std::exit(app.exit(e));
+  }
+  if (quick) {
+    o.rounds = 1;
+    o.count = 1000;
+    o.tp_seconds = 0.5;
   }
   return o;
 }

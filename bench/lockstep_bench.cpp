@@ -22,6 +22,8 @@
 #include "common/dds/waitset.hpp"
 #include "common/dds/writer.hpp"
 
+#include <CLI/CLI.hpp>
+
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -250,34 +252,33 @@ RunResult run_lockstep(const Options& o, int robots, int domain, const std::stri
   return res;
 }
 
+// Exits (help text or argument error, CLI11's exit code) when the arguments do not make a run.
 Options parse(int argc, char** argv) {
   Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto next = [&]() -> std::string {
-      if (i + 1 >= argc) throw std::runtime_error("missing value after " + a);
-      return argv[++i];
-    };
-    if (a == "--domain") o.domain = std::stoi(next());
-    else if (a == "--ticks") o.ticks = std::stoll(next());
-    else if (a == "--warmup-ticks") o.warmup_ticks = std::stoll(next());
-    else if (a == "--dds-extra") o.dds_extra = next();
-    else if (a == "--robots") {
-      o.robot_counts.clear();
-      std::istringstream in(next());
-      std::string n;
-      while (std::getline(in, n, ',')) o.robot_counts.push_back(std::stoi(n));
-    } else if (a == "--quick") {
-      o.ticks = 5000;
-      o.warmup_ticks = 200;
-      o.rtt_count = 1000;
-    } else {
-      throw std::runtime_error("unknown option " + a +
-                               " (--domain N --ticks N --warmup-ticks N --robots 1,3 --dds-extra FILE --quick)");
-    }
+  bool quick = false;
+  CLI::App app{"Lockstep ticks per second: the real simulator with 1 and 3 real behavior processes"};
+  app.add_option("--domain", o.domain, "First DDS domain id (the runs use the next few too)")
+      ->check(CLI::Range(0, 228))
+      ->capture_default_str();
+  app.add_option("--ticks", o.ticks, "Ticks per run")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("--warmup-ticks", o.warmup_ticks, "Ticks before measuring")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--robots", o.robot_counts, "Robot counts to run, 1 to 3 each (e.g. 1,3)")
+      ->delimiter(',')
+      ->check(CLI::Range(1, 3));
+  app.add_option("--dds-extra", o.dds_extra, "A Cyclone config snippet to compare against the default");
+  app.add_flag("--quick", quick, "Short runs, for a smoke test");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    std::exit(app.exit(e));
   }
-  for (int n : o.robot_counts)
-    if (n < 1 || n > 3) throw std::runtime_error("--robots: 1 to 3 robots");
+  if (quick) {
+    o.ticks = 5000;
+    o.warmup_ticks = 200;
+    o.rtt_count = 1000;
+  }
   return o;
 }
 
