@@ -39,7 +39,22 @@ radio::RadioModel make_radio_model(const Scenario& scenario) {
   for (const auto& a : scenario.radio.areas)
     attenuators.push_back(
         radio::Attenuator::area(radio::Shape::polygon(a.vertices), a.entry_loss_db, a.loss_db_per_m, a.name));
-  return radio::RadioModel(params, std::move(attenuators));
+  std::vector<radio::RasterAttenuator> rasters;
+  for (const RasterLayer& layer : scenario.world.rasters)
+    rasters.push_back(radio::RasterAttenuator::obstacle(layer.raster, params, layer.name));
+  std::vector<radio::MovingWall> leaves;
+  for (const DoorSpec& d : scenario.world.doors) {
+    const DoorLeaf leaf = d.leaf(d.angle);
+    leaves.push_back(radio::MovingWall::door_leaf(leaf.hinge, leaf.tip, d.width, params, "door " + d.id));
+  }
+  return radio::RadioModel(params, std::move(attenuators), std::move(rasters), std::move(leaves));
+}
+
+void sync_door_leaves(const std::vector<DoorStatus>& doors, radio::RadioModel& model) {
+  for (size_t i = 0; i < doors.size() && i < model.walls().size(); ++i) {
+    const radio::MovingWall& w = model.walls()[i];
+    if (w.a != doors[i].leaf.hinge || w.b != doors[i].leaf.tip) model.move_wall(i, doors[i].leaf.hinge, doors[i].leaf.tip);
+  }
 }
 
 }  // namespace autonomy::sim

@@ -421,6 +421,7 @@ void SimulatorNode::update_radio() {
     radio_ids_.push_back(r.id);
     positions.push_back(r.pose.position());
   }
+  sync_door_leaves(world_.doors(), radio_);  // doors attenuate at their current angle
   radio_.update(positions, links_);
   connectivity_.emplace(links_);
 

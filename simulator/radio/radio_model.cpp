@@ -10,19 +10,37 @@ using geometry::Vec2;
 
 namespace {
 
-std::vector<geometry::Rect> bounds_of(const std::vector<Attenuator>& attenuators) {
+constexpr double kTol = kBoundaryToleranceM;
+
+std::vector<geometry::Rect> bounds_of(const std::vector<Attenuator>& attenuators,
+                                      const std::vector<MovingWall>& walls) {
   std::vector<geometry::Rect> boxes;
-  boxes.reserve(attenuators.size());
+  boxes.reserve(attenuators.size() + walls.size());
   for (const Attenuator& a : attenuators) boxes.push_back(a.shape.bounds());
+  for (const MovingWall& w : walls) boxes.push_back(w.reach);
   return boxes;
 }
 
-void add(ObstacleLoss& total, const Attenuator& at, const Traversal& t) {
+template <typename A>
+void add(ObstacleLoss& total, const A& at, const Traversal& t) {
   if (t.stretches == 0) return;
   total.loss_db += at.loss_db(t);
   total.crossings += t.crossings;
   total.inside_m += t.inside_m;
 }
+
+void add(ObstacleLoss& total, const MovingWall& w, const Vec2& a, const Vec2& b) {
+  if (!crosses(a, b, w.a, w.b)) return;
+  total.loss_db += w.loss_db;
+  total.crossings += 1;
+}
+
+bool within(const geometry::Rect& r, const Vec2& p) {
+  return p.x() >= r.min_x - kTol && p.x() <= r.max_x + kTol && p.y() >= r.min_y - kTol &&
+         p.y() <= r.max_y + kTol;
+}
+
+double cross(const Vec2& u, const Vec2& v) { return u.x() * v.y() - u.y() * v.x(); }
 
 // Canonical order of the endpoints, so that link(a, b) and link(b, a) run the same arithmetic.
 bool before(const Vec2& a, const Vec2& b) {
@@ -31,14 +49,64 @@ bool before(const Vec2& a, const Vec2& b) {
 
 }  // namespace
 
+MovingWall MovingWall::door_leaf(const Vec2& hinge, const Vec2& tip, double length,
+                                 const RadioParameters& params, std::string name) {
+  MovingWall w;
+  w.reach = {hinge.x() - length, hinge.y() - length, hinge.x() + length, hinge.y() + length};
+  w.a = hinge;
+  w.b = tip;
+  w.loss_db = params.wall_loss_db;
+  w.name = std::move(name);
+  return w;
+}
+
+bool crosses(const Vec2& p, const Vec2& q, const Vec2& a, const Vec2& b) {
+  const Vec2 pq = q - p;
+  const Vec2 ab = b - a;
+  const double pq_len = pq.norm();
+  const double ab_len = ab.norm();
+  if (pq_len <= kTol || ab_len <= kTol) return false;
+  // Signed distances (times the length of the other segment) of each end from the other line:
+  // strictly on opposite sides, by more than the tolerance, for both segments.
+  const double sa = cross(pq, a - p);
+  const double sb = cross(pq, b - p);
+  const double sp = cross(ab, p - a);
+  const double sq = cross(ab, q - a);
+  const double tol_pq = kTol * pq_len;
+  const double tol_ab = kTol * ab_len;
+  return ((sa > tol_pq && sb < -tol_pq) || (sa < -tol_pq && sb > tol_pq)) &&
+         ((sp > tol_ab && sq < -tol_ab) || (sp < -tol_ab && sq > tol_ab));
+}
+
 RadioModel::RadioModel(RadioParameters params, std::vector<Attenuator> attenuators,
                        double index_cell_size_m)
-    : params_(std::move(params)), attenuators_(std::move(attenuators)) {
+    : RadioModel(std::move(params), std::move(attenuators), {}, {}, index_cell_size_m) {}
+
+RadioModel::RadioModel(RadioParameters params, std::vector<Attenuator> attenuators,
+                       std::vector<RasterAttenuator> rasters, std::vector<MovingWall> walls,
+                       double index_cell_size_m)
+    : params_(std::move(params)), attenuators_(std::move(attenuators)), rasters_(std::move(rasters)),
+      walls_(std::move(walls)) {
   if (auto why = problem(params_)) throw std::invalid_argument("radio parameters: " + *why);
   for (const Attenuator& a : attenuators_) {
     if (auto why = attenuator_problem(a)) throw std::invalid_argument(*why);
   }
-  index_ = ObstacleIndex(bounds_of(attenuators_), index_cell_size_m);
+  for (const MovingWall& w : walls_) {
+    if (!std::isfinite(w.loss_db) || w.loss_db < 0.0)
+      throw std::invalid_argument("wall '" + w.name + "': loss must be finite and >= 0");
+    if (!w.reach.valid()) throw std::invalid_argument("wall '" + w.name + "': invalid reach");
+    if (!within(w.reach, w.a) || !within(w.reach, w.b))
+      throw std::invalid_argument("wall '" + w.name + "' is outside its reach");
+  }
+  index_ = ObstacleIndex(bounds_of(attenuators_, walls_), index_cell_size_m);
+}
+
+void RadioModel::move_wall(size_t i, const Vec2& a, const Vec2& b) {
+  MovingWall& w = walls_.at(i);
+  if (!within(w.reach, a) || !within(w.reach, b))
+    throw std::invalid_argument("wall '" + w.name + "' moved outside its reach");
+  w.a = a;
+  w.b = b;
 }
 
 double RadioModel::distance_loss_db(double distance_m) const {
@@ -57,23 +125,29 @@ double RadioModel::distance_loss_db(double distance_m) const {
 
 ObstacleLoss RadioModel::obstacle_loss(const Vec2& a, const Vec2& b, Visited& v) const {
   ObstacleLoss total;
-  if (attenuators_.empty()) return total;
+  for (const RasterAttenuator& r : rasters_) add(total, r, r.traverse(a, b));
+  if (attenuators_.empty() && walls_.empty()) return total;
   if (++v.current == 0) {  // wrapped: forget every old mark
     std::fill(v.stamp.begin(), v.stamp.end(), 0);
     v.current = 1;
   }
+  const size_t n_attenuators = attenuators_.size();
   index_.visit(a, b, [&](uint32_t id) {
     if (v.stamp[id] == v.current) return;
     v.stamp[id] = v.current;
-    const Attenuator& at = attenuators_[id];
-    add(total, at, at.shape.traverse(a, b));
+    if (id < n_attenuators) {
+      const Attenuator& at = attenuators_[id];
+      add(total, at, at.shape.traverse(a, b));
+    } else {
+      add(total, walls_[id - n_attenuators], a, b);
+    }
   });
   return total;
 }
 
 ObstacleLoss RadioModel::obstacle_loss(const Vec2& a, const Vec2& b) const {
   Visited v;
-  v.stamp.assign(attenuators_.size(), 0);
+  v.stamp.assign(attenuators_.size() + walls_.size(), 0);
   return before(b, a) ? obstacle_loss(b, a, v) : obstacle_loss(a, b, v);
 }
 
@@ -81,7 +155,9 @@ ObstacleLoss RadioModel::obstacle_loss_exhaustive(const Vec2& a, const Vec2& b) 
   const Vec2& p = before(b, a) ? b : a;
   const Vec2& q = before(b, a) ? a : b;
   ObstacleLoss total;
+  for (const RasterAttenuator& r : rasters_) add(total, r, r.traverse(p, q));
   for (const Attenuator& at : attenuators_) add(total, at, at.shape.traverse(p, q));
+  for (const MovingWall& w : walls_) add(total, w, p, q);
   return total;
 }
 
@@ -104,7 +180,7 @@ LinkQuality RadioModel::link(const Vec2& a, const Vec2& b, Visited& v) const {
 
 LinkQuality RadioModel::link(const Vec2& a, const Vec2& b) const {
   Visited v;
-  v.stamp.assign(attenuators_.size(), 0);
+  v.stamp.assign(attenuators_.size() + walls_.size(), 0);
   return link(a, b, v);
 }
 
@@ -113,7 +189,7 @@ void RadioModel::update(const std::vector<Vec2>& positions, LinkTable& table) co
   table.n_ = n;
   table.links_.resize(n < 2 ? 0 : n * (n - 1) / 2);
   Visited v;
-  v.stamp.assign(attenuators_.size(), 0);
+  v.stamp.assign(attenuators_.size() + walls_.size(), 0);
   size_t k = 0;
   for (size_t i = 0; i < n; ++i) {
     for (size_t j = i + 1; j < n; ++j) table.links_[k++] = link(positions[i], positions[j], v);

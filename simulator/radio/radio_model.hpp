@@ -1,7 +1,9 @@
 #pragma once
 // RadioAttenuationModel of the simulator: received signal strength between two radios on the
 // ground plane, from distance (log-distance or ITU-R P.1238) and from the walls, buildings and
-// declared areas on the straight path between them, and the link table of a whole team.
+// declared areas on the straight path between them, the occupancy maps it passes (walls of
+// blocked cells, raster_attenuator.hpp) and the thin walls that move (door leaves), and the link
+// table of a whole team.
 //
 //   signal_dbm = tx_power_dbm - distance_loss_db(d) - sum over attenuators of their loss_db
 //   margin_db  = signal_dbm - receiver_sensitivity_dbm;  connected = margin_db >= 0
@@ -10,23 +12,46 @@
 // order before any computation). No fading or shadowing noise: the same geometry always gives
 // the same link, so runs are reproducible; randomness lives in delivery (see delivery.hpp).
 //
-// Cost: a path only tests the attenuators in the grid cells it crosses (ObstacleIndex), each
-// once. All const methods are thread safe (no shared scratch).
+// Cost: a path only tests the attenuators and moving walls in the grid cells it crosses
+// (ObstacleIndex), each once, and walks each raster it meets (RasterAttenuator). All const methods
+// are thread safe (no shared scratch); move_wall is not, and must not run beside them.
 #include "common/geometry/geometry.hpp"
 #include "simulator/radio/attenuator.hpp"
 #include "simulator/radio/obstacle_index.hpp"
 #include "simulator/radio/radio_parameters.hpp"
+#include "simulator/radio/raster_attenuator.hpp"
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace autonomy::sim::radio {
 
+// A thin wall that moves inside a fixed box: a door leaf turning about its hinge. A path that
+// crosses the segment a-b at a point inside both pays loss_db once; touching an end, running along
+// it, or ending on it does not count (the boundary convention of attenuator.hpp).
+struct MovingWall {
+  geometry::Rect reach;  // every position the wall can take lies in it (the index is built from it)
+  geometry::Vec2 a{0.0, 0.0};
+  geometry::Vec2 b{0.0, 0.0};
+  double loss_db = 0.0;
+  std::string name;
+
+  // A door leaf hinged at `hinge`, `length` long, now from hinge to tip: reach is the square
+  // around the hinge the leaf can sweep; loss params.wall_loss_db (a closed door is a wall).
+  static MovingWall door_leaf(const geometry::Vec2& hinge, const geometry::Vec2& tip, double length,
+                              const RadioParameters& params, std::string name = {});
+};
+
+// Segment p-q crosses segment a-b at a point interior to both (by more than kBoundaryToleranceM).
+bool crosses(const geometry::Vec2& p, const geometry::Vec2& q, const geometry::Vec2& a,
+             const geometry::Vec2& b);
+
 struct ObstacleLoss {
   double loss_db = 0.0;
-  int crossings = 0;      // boundaries crossed, all attenuators together
-  double inside_m = 0.0;  // path length inside attenuators (overlapping ones count each)
+  int crossings = 0;      // boundaries crossed, all attenuators, raster walls and moving walls
+  double inside_m = 0.0;  // path length inside attenuators and rasters (overlapping ones count each)
 };
 
 struct LinkQuality {
@@ -69,6 +94,15 @@ class RadioModel {
   // index_cell_size_m <= 0 lets ObstacleIndex choose.
   RadioModel(RadioParameters params, std::vector<Attenuator> attenuators,
              double index_cell_size_m = 0.0);
+  // With occupancy maps and moving walls too. Also throws std::invalid_argument for a moving
+  // wall that is not inside its reach or has a negative / non-finite loss.
+  RadioModel(RadioParameters params, std::vector<Attenuator> attenuators,
+             std::vector<RasterAttenuator> rasters, std::vector<MovingWall> walls,
+             double index_cell_size_m = 0.0);
+
+  // Puts moving wall i at a-b (e.g. a door's leaf at its current angle). Throws std::out_of_range
+  // for a bad index and std::invalid_argument when a-b leaves the wall's reach.
+  void move_wall(size_t i, const geometry::Vec2& a, const geometry::Vec2& b);
 
   LinkQuality link(const geometry::Vec2& a, const geometry::Vec2& b) const;
 
@@ -78,17 +112,20 @@ class RadioModel {
 
   // Loss from distance alone, d in metres (clamped to the reference distance from below).
   double distance_loss_db(double distance_m) const;
-  // Loss from the attenuators along a-b, through the index.
+  // Loss from the attenuators, rasters and moving walls along a-b, through the index.
   ObstacleLoss obstacle_loss(const geometry::Vec2& a, const geometry::Vec2& b) const;
-  // The same by testing every attenuator: the reference for tests and benchmarks.
+  // The same by testing every attenuator and wall: the reference for tests and benchmarks.
   ObstacleLoss obstacle_loss_exhaustive(const geometry::Vec2& a, const geometry::Vec2& b) const;
 
   const RadioParameters& parameters() const { return params_; }
   const std::vector<Attenuator>& attenuators() const { return attenuators_; }
+  const std::vector<RasterAttenuator>& rasters() const { return rasters_; }
+  const std::vector<MovingWall>& walls() const { return walls_; }
   const ObstacleIndex& index() const { return index_; }
 
  private:
-  // Marks attenuators already tested on the current path (a path meets one in several cells).
+  // Marks attenuators and walls already tested on the current path (a path meets one in several
+  // cells). Index ids: attenuators first, then walls.
   struct Visited {
     std::vector<uint32_t> stamp;
     uint32_t current = 0;
@@ -98,6 +135,8 @@ class RadioModel {
 
   RadioParameters params_;
   std::vector<Attenuator> attenuators_;
+  std::vector<RasterAttenuator> rasters_;
+  std::vector<MovingWall> walls_;
   ObstacleIndex index_;
 };
 
