@@ -4,6 +4,7 @@
 #include "common/dds/type_traits.hpp"
 #include "common/msg/clock.hpp"
 #include "common/msg/navigation.hpp"
+#include "common/msg/office.hpp"
 #include "common/msg/robot.hpp"
 #include "common/msg/simulation.hpp"
 #include "common/msg/perception.hpp"
@@ -12,6 +13,7 @@
 #include "common/msg/system.hpp"
 #include "idl/clock.h"
 #include "idl/navigation.h"
+#include "idl/office.h"
 #include "idl/robot.h"
 #include "idl/simulation.h"
 #include "idl/perception.h"
@@ -56,6 +58,10 @@ AUTONOMY_DDS_TYPE(msg::TeamDelivery, autonomy_TeamDelivery)
 AUTONOMY_DDS_TYPE(msg::DoorCommand, autonomy_DoorCommand)
 AUTONOMY_DDS_TYPE(msg::NavCancel, autonomy_NavCancel)
 AUTONOMY_DDS_TYPE(msg::MissionStatus, autonomy_MissionStatus)
+// The office: load/unload requests and answers, object ground truth.
+AUTONOMY_DDS_TYPE(msg::HandoverRequest, autonomy_HandoverRequest)
+AUTONOMY_DDS_TYPE(msg::HandoverStatus, autonomy_HandoverStatus)
+AUTONOMY_DDS_TYPE(msg::ObjectState, autonomy_ObjectState)
 
 }  // namespace autonomy::dds
 

@@ -40,6 +40,11 @@ inline constexpr TopicSpec<msg::TeamDelivery> team_inbox{"autonomy/team/inbox", 
 inline constexpr TopicSpec<msg::DoorCommand> door_command{"autonomy/sim/door_command", QosClass::Command};
 inline constexpr TopicSpec<msg::NavCancel> nav_cancel{"autonomy/nav/cancel", QosClass::Command};
 inline constexpr TopicSpec<msg::MissionStatus> mission_status{"autonomy/mission/status", QosClass::State};
+// The office: robots ask the simulator to load and unload objects; where every object is (truth).
+inline constexpr TopicSpec<msg::HandoverRequest> handover_request{"autonomy/office/handover_request",
+                                                                  QosClass::Request};
+inline constexpr TopicSpec<msg::HandoverStatus> handover_status{"autonomy/office/handover_status", QosClass::Reply};
+inline constexpr TopicSpec<msg::ObjectState> truth_object{"autonomy/truth/object", QosClass::State};
 
 // Calls visit(spec) for every topic of the catalogue: tools use it to find a topic's type by name.
 template <typename Visitor>
@@ -68,6 +73,9 @@ void for_each_topic(Visitor&& visit) {
   visit(door_command);
   visit(nav_cancel);
   visit(mission_status);
+  visit(handover_request);
+  visit(handover_status);
+  visit(truth_object);
 }
 
 }  // namespace autonomy::dds::topics

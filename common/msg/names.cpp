@@ -1,6 +1,7 @@
 // Human-readable names of the message enums, as logs and JSON show them.
 #include "common/msg/clock.hpp"
 #include "common/msg/navigation.hpp"
+#include "common/msg/office.hpp"
 #include "common/msg/robot.hpp"
 #include "common/msg/simulation.hpp"
 #include "common/msg/system.hpp"
@@ -31,6 +32,18 @@ const char* to_string(GoalState s) {
     case GoalState::Preempted: return "preempted";
     case GoalState::Rejected: return "rejected";
     case GoalState::Cancelled: return "cancelled";
+  }
+  return "?";
+}
+
+const char* to_string(HandoverKind k) { return k == HandoverKind::Load ? "load" : "unload"; }
+
+const char* to_string(HandoverState s) {
+  switch (s) {
+    case HandoverState::Accepted: return "accepted";
+    case HandoverState::Rejected: return "rejected";
+    case HandoverState::Completed: return "completed";
+    case HandoverState::Failed: return "failed";
   }
   return "?";
 }

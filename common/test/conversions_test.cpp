@@ -123,6 +123,65 @@ TEST(ConversionsTest, WorldV2TypesRoundTrip) {
   }
 }
 
+TEST(ConversionsTest, OfficeTypesRoundTrip) {
+  for (const Variant v : {Variant::Full, Variant::Empty}) {
+    expect_round_trip(test::make_handover_request(v));
+    expect_round_trip(test::make_handover_status(v));
+    expect_round_trip(test::make_object_state(v));
+  }
+}
+
+TEST(ConversionsTest, OfficeTypesToCFieldsKeysAndEnums) {
+  {
+    autonomy_HandoverRequest c{};
+    Arena arena;
+    const auto value = test::make_handover_request(Variant::Full);  // outlives c, which points into it
+    DdsType<msg::HandoverRequest>::to_c(value, c, arena);
+    EXPECT_EQ(str(c.request_id), test::kUtf8A);
+    EXPECT_EQ(str(c.requester), test::kUtf8B);
+    EXPECT_EQ(str(c.robot_id), test::kUtf8C);
+    EXPECT_EQ(c.kind, autonomy_HANDOVER_UNLOAD);
+    EXPECT_EQ(str(c.place), "michael-desk");
+    EXPECT_EQ(str(c.object_id), "letter-1");
+  }
+  {
+    autonomy_HandoverStatus c{};
+    Arena arena;
+    const auto value = test::make_handover_status(Variant::Full);  // outlives c, which points into it
+    DdsType<msg::HandoverStatus>::to_c(value, c, arena);
+    EXPECT_EQ(c.state, autonomy_HANDOVER_COMPLETED);
+    EXPECT_EQ(str(c.reason), "robot_moved_away");
+    EXPECT_EQ(str(c.helper), "Michael");
+    EXPECT_EQ(c.sim_time_ns, 45'000'000'001);
+    EXPECT_EQ(c.completes_at_ns, 45'000'000'002);
+  }
+  {
+    autonomy_ObjectState c{};
+    Arena arena;
+    const auto value = test::make_object_state(Variant::Full);  // outlives c, which points into it
+    DdsType<msg::ObjectState>::to_c(value, c, arena);
+    EXPECT_EQ(str(c.object_id), test::kUtf8A);
+    EXPECT_EQ(str(c.carrier), "rhino");
+    EXPECT_EQ(c.tick, 1001);
+  }
+  for (const auto& [value, c] : {std::pair{msg::HandoverState::Accepted, autonomy_HANDOVER_ACCEPTED},
+                                 std::pair{msg::HandoverState::Rejected, autonomy_HANDOVER_REJECTED},
+                                 std::pair{msg::HandoverState::Completed, autonomy_HANDOVER_COMPLETED},
+                                 std::pair{msg::HandoverState::Failed, autonomy_HANDOVER_FAILED}}) {
+    msg::HandoverStatus m;
+    m.state = value;
+    EXPECT_EQ(round_trip(m).state, value);
+    autonomy_HandoverStatus out{};
+    Arena arena;
+    DdsType<msg::HandoverStatus>::to_c(m, out, arena);
+    EXPECT_EQ(out.state, c) << msg::to_string(value);
+  }
+  EXPECT_EQ(DdsType<msg::HandoverRequest>::descriptor()->m_nkeys, 0u);
+  EXPECT_EQ(DdsType<msg::HandoverStatus>::descriptor()->m_nkeys, 0u);
+  EXPECT_EQ(DdsType<msg::ObjectState>::descriptor()->m_nkeys, 1u);  // object_id
+  EXPECT_STREQ(DdsType<msg::ObjectState>::type_name(), "autonomy::ObjectState");
+}
+
 TEST(ConversionsTest, WorldV2TypesToCFields) {
   {
     autonomy_RangeScan c{};

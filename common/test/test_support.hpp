@@ -3,6 +3,7 @@
 // its default), a field-wise view for comparing them, and the loopback DDS profile.
 #include "common/msg/clock.hpp"
 #include "common/msg/navigation.hpp"
+#include "common/msg/office.hpp"
 #include "common/msg/robot.hpp"
 #include "common/msg/simulation.hpp"
 #include "common/msg/perception.hpp"
@@ -288,6 +289,45 @@ inline msg::DoorCommand make_door_command(Variant v) {
   return m;
 }
 
+inline msg::HandoverRequest make_handover_request(Variant v) {
+  msg::HandoverRequest m;
+  m.request_id = s(v, kUtf8A);
+  m.requester = s(v, kUtf8B);
+  m.robot_id = s(v, kUtf8C);
+  m.kind = msg::HandoverKind::Unload;  // default is Load
+  m.place = s(v, "michael-desk");
+  m.object_id = s(v, "letter-1");
+  return m;
+}
+
+inline msg::HandoverStatus make_handover_status(Variant v) {
+  msg::HandoverStatus m;
+  m.request_id = s(v, kUtf8A);
+  m.robot_id = s(v, kUtf8B);
+  m.kind = msg::HandoverKind::Unload;
+  m.place = s(v, kUtf8C);
+  m.object_id = s(v, "book-2");
+  m.state = msg::HandoverState::Completed;  // default is Rejected
+  m.reason = s(v, "robot_moved_away");
+  m.detail = s(v, kUtf8A);
+  m.helper = s(v, "Michael");
+  m.tick = 909;
+  m.sim_time_ns = 45'000'000'001;
+  m.completes_at_ns = 45'000'000'002;
+  return m;
+}
+
+inline msg::ObjectState make_object_state(Variant v) {
+  msg::ObjectState m;
+  m.object_id = s(v, kUtf8A);
+  m.kind = s(v, "book");
+  m.colour = s(v, kUtf8B);
+  m.place = s(v, kUtf8C);
+  m.carrier = s(v, "rhino");
+  m.tick = 1001;
+  return m;
+}
+
 // Field-wise views: tuples compare with == and GoogleTest prints them field by field.
 inline auto fields(const msg::Heartbeat& m) {
   return std::make_tuple(m.service, m.instance, m.host, m.pid, static_cast<int>(m.state), m.uptime_s, m.period_ms);
@@ -359,6 +399,17 @@ inline auto fields(const msg::TeamDelivery& m) {
                          m.hops);
 }
 inline auto fields(const msg::DoorCommand& m) { return std::make_tuple(m.door_id, m.angle, m.source); }
+inline auto fields(const msg::HandoverRequest& m) {
+  return std::make_tuple(m.request_id, m.requester, m.robot_id, static_cast<int>(m.kind), m.place, m.object_id);
+}
+inline auto fields(const msg::HandoverStatus& m) {
+  return std::make_tuple(m.request_id, m.robot_id, static_cast<int>(m.kind), m.place, m.object_id,
+                         static_cast<int>(m.state), m.reason, m.detail, m.helper, m.tick, m.sim_time_ns,
+                         m.completes_at_ns);
+}
+inline auto fields(const msg::ObjectState& m) {
+  return std::make_tuple(m.object_id, m.kind, m.colour, m.place, m.carrier, m.tick);
+}
 
 #ifdef AUTONOMY_LOOPBACK_URI
 // The loopback Cyclone profile (deploy/dds/loopback.xml); call before creating a participant.

@@ -66,6 +66,35 @@ bool same_door_state(const msg::DoorState& a, const msg::DoorState& b) {
 // Separate from the world's streams (door schedules, sensor noise), so sending messages does not
 // change what robots sense.
 constexpr uint64_t kDeliveryStreamSalt = 0x7465616d6d736773ull;  // "teammsgs"
+// Handover durations: their own stream too.
+constexpr uint64_t kOfficeStreamSalt = 0x6f66666963657321ull;  // "office!!"
+
+msg::HandoverStatus to_msg(const office::DeskAnswer& a, int64_t tick) {
+  msg::HandoverStatus s;
+  s.request_id = a.request_id;
+  s.robot_id = a.robot_id;
+  s.kind = a.kind == office::HandoverKind::unload ? msg::HandoverKind::Unload : msg::HandoverKind::Load;
+  s.place = a.place;
+  s.object_id = a.object_id;
+  switch (a.state) {
+    case office::DeskAnswerState::accepted: s.state = msg::HandoverState::Accepted; break;
+    case office::DeskAnswerState::rejected: s.state = msg::HandoverState::Rejected; break;
+    case office::DeskAnswerState::completed: s.state = msg::HandoverState::Completed; break;
+    case office::DeskAnswerState::failed: s.state = msg::HandoverState::Failed; break;
+  }
+  s.reason = a.reason;
+  s.detail = a.detail;
+  s.helper = a.helper;
+  s.tick = tick;
+  s.sim_time_ns = to_ns(a.time_s);
+  s.completes_at_ns = a.state == office::DeskAnswerState::rejected ? 0 : to_ns(a.completes_at_s);
+  return s;
+}
+
+msg::ObjectState to_msg(const office::ObjectItem& o, int64_t tick) {
+  const bool carried = o.location.kind == office::ObjectLocation::Kind::carrier;
+  return {o.id, o.kind, o.colour, carried ? "" : o.location.name, carried ? o.location.name : "", tick};
+}
 
 }  // namespace
 
@@ -117,7 +146,13 @@ SimulatorNode::SimulatorNode(service::Service& service, Scenario scenario, Simul
       door_command_reader_(service.participant(), door_command_topic_),
       outbox_reader_(service.participant(), outbox_topic_),
       goal_status_reader_(service.participant(), goal_status_topic_),
-      mission_status_reader_(service.participant(), mission_status_topic_) {
+      mission_status_reader_(service.participant(), mission_status_topic_),
+      handover_request_topic_(service.participant(), dds::topics::handover_request),
+      handover_status_topic_(service.participant(), dds::topics::handover_status),
+      object_truth_topic_(service.participant(), dds::topics::truth_object),
+      handover_status_writer_(service.participant(), handover_status_topic_),
+      object_truth_writer_(service.participant(), object_truth_topic_),
+      handover_request_reader_(service.participant(), handover_request_topic_) {
   if (options_.radio_period_ticks < 1) throw std::invalid_argument("radio period must be at least 1 tick");
   delivery_rng_.seed(options_.settings.seed ^ kDeliveryStreamSalt);
   if (!options_.metrics_prefix.empty()) {
@@ -133,6 +168,13 @@ SimulatorNode::SimulatorNode(service::Service& service, Scenario scenario, Simul
 
   const WorldSpec& spec = world_.spec();
   map_writer_.write({spec.name, spec.width, spec.height, spec.obstacles});
+  if (scenario_.office) {
+    const office::OfficeSpec& o = *scenario_.office;
+    office_.emplace(o, options_.settings.seed ^ kOfficeStreamSalt);
+    spdlog::info("office: {} places, {} people, {} objects, {} loading stations; the day starts at {}",
+                 o.places.size(), o.people.size(), o.objects.size(), o.stations.size(),
+                 office::format_clock(o.clock.day_start_s));
+  }
 
   auto& loop = service.loop();
   loop.on_samples<msg::VelocityCommand>(cmd_reader_, [this](auto s) { on_commands(std::move(s)); });
@@ -143,6 +185,8 @@ SimulatorNode::SimulatorNode(service::Service& service, Scenario scenario, Simul
   loop.on_samples<msg::TeamMessage>(outbox_reader_, [this](auto s) { on_outbox(std::move(s)); });
   loop.on_samples<msg::GoalStatus>(goal_status_reader_, [this](auto s) { on_goal_status(std::move(s)); });
   loop.on_samples<msg::MissionStatus>(mission_status_reader_, [this](auto s) { on_mission_status(std::move(s)); });
+  loop.on_samples<msg::HandoverRequest>(handover_request_reader_,
+                                        [this](auto s) { on_handover_requests(std::move(s)); });
   loop.every(kHousekeepingPeriod, [this] { on_timer(); });
   loop.every(kStatusPeriod, [this] { publish_status(); });
 
@@ -334,6 +378,7 @@ void SimulatorNode::open_tick() {
   for (const auto& r : robots) publish_robot_state(r);
   publish_perception(robots);
   publish_door_changes();
+  update_office(robots);
   if (tick_ > 0) record_metrics(robots);
   const double now_s = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
   barrier_.begin_tick(tick_, now_s);
@@ -574,6 +619,56 @@ void SimulatorNode::publish_door_changes() {
     door_truth_writer_.write(now);
     published_doors_[i] = std::move(now);
   }
+}
+
+// --- Office: load and unload ------------------------------------------------------------------
+
+void SimulatorNode::on_handover_requests(std::vector<dds::Sample<msg::HandoverRequest>> samples) {
+  std::vector<msg::HandoverRequest> requests;
+  for (auto& s : samples)
+    if (s.valid) requests.push_back(std::move(s.value));
+  // Arrival order within a batch depends on the network; the order of serving must not.
+  std::stable_sort(requests.begin(), requests.end(), [](const auto& a, const auto& b) {
+    return std::tie(a.robot_id, a.request_id) < std::tie(b.robot_id, b.request_id);
+  });
+  const double now_s = static_cast<double>(tick_) * options_.settings.step_s;
+  for (const auto& r : requests) {
+    office::DeskRequest request{r.request_id, r.robot_id, office::HandoverKind::load, r.place, r.object_id};
+    if (r.kind == msg::HandoverKind::Unload)
+      request.kind = office::HandoverKind::unload;
+    else if (r.kind != msg::HandoverKind::Load)
+      request.kind = static_cast<office::HandoverKind>(-1);  // the desk rejects it as malformed
+    std::optional<office::RobotAtDesk> robot;
+    if (const auto status = world_.robot(r.robot_id)) {
+      const auto spec = world_.robot_spec(r.robot_id);
+      const std::uint32_t capacity = spec ? spec->capacity : 0;
+      robot = office::RobotAtDesk{status->pose.position(),
+                                  static_cast<int>(std::min<std::uint32_t>(capacity, 1u << 30))};
+    }
+    const office::DeskAnswer answer =
+        office_ ? office_->request(request, robot, now_s) : office::no_office_answer(request, now_s);
+    spdlog::info("{} request '{}' from '{}' for robot '{}' ({} of '{}' at '{}') at tick {}: {}{}",
+                 answer.state == office::DeskAnswerState::rejected ? "rejected" : "answered", r.request_id,
+                 r.requester, r.robot_id, office::to_string(request.kind), r.object_id, r.place, tick_,
+                 answer.reason.empty() ? "" : answer.reason + ": ", answer.detail);
+    publish_handover(answer);
+  }
+}
+
+void SimulatorNode::update_office(const std::vector<RobotStatus>& robots) {
+  if (!office_) return;
+  std::map<std::string, geometry::Vec2> positions;
+  for (const auto& r : robots) positions.emplace(r.id, r.pose.position());
+  for (const office::DeskAnswer& a : office_->advance(static_cast<double>(tick_) * options_.settings.step_s, positions)) {
+    spdlog::info("handover '{}' of robot '{}' {} at tick {}: {}", a.request_id, a.robot_id, office::to_string(a.state),
+                 tick_, a.detail);
+    publish_handover(a);
+  }
+  for (const office::ObjectItem& o : office_->changed_objects()) object_truth_writer_.write(to_msg(o, tick_));
+}
+
+void SimulatorNode::publish_handover(const office::DeskAnswer& answer) {
+  handover_status_writer_.write(to_msg(answer, tick_));
 }
 
 // --- Metrics ----------------------------------------------------------------------------------

@@ -10,14 +10,18 @@
 // What a tick publishes before its clock, in this order: radio links and team connectivity that
 // changed (every radio_period_ticks), team messages due by now (autonomy/team/inbox), robot states
 // (ground truth), perception of robots with sensors (range scan, pose estimate, door
-// observations), door ground truth that changed. Team messages from autonomy/team/outbox are
-// decided (route, loss, delay) when they arrive, with the radio of the current tick.
+// observations), door ground truth that changed, then the office: handovers that completed or
+// failed by now (autonomy/office/handover_status) and objects that moved (autonomy/truth/object).
+// Team messages from autonomy/team/outbox are decided (route, loss, delay) when they arrive, with
+// the radio of the current tick; so are load/unload requests (autonomy/office/handover_request),
+// against the robots' true positions and the simulated time of the current tick.
 #include "common/dds/reader.hpp"
 #include "common/dds/topics.hpp"
 #include "common/dds/writer.hpp"
 #include "common/service/service.hpp"
 #include "simulator/core/lockstep_barrier.hpp"
 #include "simulator/core/world.hpp"
+#include "simulator/office/handover_desk.hpp"
 #include "simulator/radio/connectivity.hpp"
 #include "simulator/radio/message_relay.hpp"
 #include "simulator/radio/radio_model.hpp"
@@ -67,6 +71,7 @@ class SimulatorNode {
   void on_outbox(std::vector<dds::Sample<msg::TeamMessage>> samples);
   void on_goal_status(std::vector<dds::Sample<msg::GoalStatus>> samples);
   void on_mission_status(std::vector<dds::Sample<msg::MissionStatus>> samples);
+  void on_handover_requests(std::vector<dds::Sample<msg::HandoverRequest>> samples);
   void on_timer();
 
   bool lockstep() const { return options_.settings.mode == ClockMode::Lockstep; }
@@ -82,6 +87,9 @@ class SimulatorNode {
   void deliver_due_messages();
   void publish_perception(const std::vector<RobotStatus>& robots);
   void publish_door_changes();
+  // The office at the current tick: completions and failures, then objects that moved.
+  void update_office(const std::vector<RobotStatus>& robots);
+  void publish_handover(const office::DeskAnswer& answer);
   void record_metrics(const std::vector<RobotStatus>& robots);
   bool connected_to_teammate(const std::string& robot) const;
   void write_metrics() const;
@@ -172,6 +180,16 @@ class SimulatorNode {
   dds::Reader<msg::TeamMessage> outbox_reader_;
   dds::Reader<msg::GoalStatus> goal_status_reader_;
   dds::Reader<msg::MissionStatus> mission_status_reader_;
+
+  // The office (scenario people, objects, loading stations); absent without office content, when
+  // every handover request is rejected (no_office).
+  std::optional<office::HandoverDesk> office_;
+  dds::Topic<msg::HandoverRequest> handover_request_topic_;
+  dds::Topic<msg::HandoverStatus> handover_status_topic_;
+  dds::Topic<msg::ObjectState> object_truth_topic_;
+  dds::Writer<msg::HandoverStatus> handover_status_writer_;
+  dds::Writer<msg::ObjectState> object_truth_writer_;
+  dds::Reader<msg::HandoverRequest> handover_request_reader_;
 };
 
 }  // namespace autonomy::sim

@@ -5,6 +5,8 @@
 #include "simulator/core/number_format.hpp"
 #include "simulator/core/robot_id.hpp"
 #include "simulator/core/shapes.hpp"
+#include "simulator/office/office_spec.hpp"
+#include "simulator/office/time_of_day.hpp"
 
 #include "common/config/text_format.hpp"
 #include "common/grid/map_loader.hpp"
@@ -59,6 +61,7 @@ class ScenarioChecker {
     places(file, root, out);
     waypoints(file, root, out);
     radio(file, root, out);
+    office(file, root, out);
     simulation(file.simulation(), root.nested("simulation"), out);
     out.world.seed = out.simulation.seed;
     return out;
@@ -361,7 +364,22 @@ class ScenarioChecker {
                                      " is outside the bounds of room '" + p.room() + "'");
         ok = false;
       }
-      if (ok) out.places.push_back({p.name(), p.room(), position});
+      office::Place place{p.name(), office::PlaceKind::desk, p.room(), position, 1.0};
+      switch (p.kind()) {
+        case config::PLACE_KIND_UNSPECIFIED:
+        case config::DESK: place.kind = office::PlaceKind::desk; break;
+        case config::TABLE: place.kind = office::PlaceKind::table; break;
+        case config::STATION: place.kind = office::PlaceKind::station; break;
+        default:
+          error(at.at("kind"), who + ": unknown kind value " + std::to_string(static_cast<int>(p.kind())));
+          ok = false;
+      }
+      place.radius = positive(p.has_radius(), p.radius(), 1.0, who + ": radius", at.at("radius"));
+      ok = ok && std::isfinite(place.radius) && place.radius > 0.0;
+      if (ok) {
+        out.places.push_back({p.name(), p.room(), position});
+        office_places_.push_back({std::move(place), at.at("name")});
+      }
     }
   }
 
@@ -442,6 +460,201 @@ class ScenarioChecker {
     field(r.has_weak_link_delay_s(), r.weak_link_delay_s(), "weak_link_delay_s", Rule::NonNegative,
           out.weak_link_delay_s);
     field(r.has_jitter_s(), r.jitter_s(), "jitter_s", Rule::NonNegative, out.jitter_s);
+  }
+
+  // --- Office: people, objects, loading stations (simulator/office) ---------------------------
+
+  // The place named `name` among those that passed, or an error at `where` (a room named by
+  // mistake gets a hint).
+  const office::Place* office_place(const std::string& who, const std::string& name, Position where) {
+    for (const auto& [p, at] : office_places_)
+      if (p.name == name) return &p;
+    std::string text = who + ": unknown place '" + name + "'";
+    if (room_lines_.count(name) != 0) text += " (a room; name a place in it)";
+    error(where, text);
+    return nullptr;
+  }
+
+  // A handover time model; absent means 10 s.
+  office::HandoverTimeModel handover_time(bool present, const config::HandoverTime& t, const std::string& who,
+                                          const Locator& at) {
+    if (!present) return office::HandoverTimeModel::fixed(10.0);
+    const std::string what = who + ": handover_time";
+    const auto at_least = [&](double value, double bound, const std::string& field, const std::string& bound_text,
+                              Position where) {
+      if (std::isfinite(value) && value >= bound) return true;
+      error(where, what + " " + field + " must be >= " + bound_text + " (got " + format_number(value) + ")");
+      return false;
+    };
+    switch (t.model_case()) {
+      case config::HandoverTime::kFixedS:
+        at_least(t.fixed_s(), 0.0, "fixed_s", "0", at.at("fixed_s"));
+        return office::HandoverTimeModel::fixed(t.fixed_s());
+      case config::HandoverTime::kUniform: {
+        const config::UniformTime& u = t.uniform();
+        const Locator ul = at.nested("uniform");
+        if (at_least(u.min_s(), 0.0, "uniform min_s", "0", ul.at("min_s")))
+          at_least(u.max_s(), u.min_s(), "uniform max_s", "min_s " + format_number(u.min_s()), ul.at("max_s"));
+        return office::HandoverTimeModel::uniform(u.min_s(), u.max_s());
+      }
+      case config::HandoverTime::kNormal: {
+        const config::NormalTime& n = t.normal();
+        const Locator nl = at.nested("normal");
+        const double max_s = n.has_max_s() ? n.max_s() : n.mean_s() + 4.0 * n.sd_s();
+        at_least(n.mean_s(), 0.0, "normal mean_s", "0", nl.at("mean_s"));
+        at_least(n.sd_s(), 0.0, "normal sd_s", "0", nl.at("sd_s"));
+        if (at_least(n.min_s(), 0.0, "normal min_s", "0", nl.at("min_s")) && n.has_max_s())
+          at_least(max_s, n.min_s(), "normal max_s", "min_s " + format_number(n.min_s()), nl.at("max_s"));
+        return office::HandoverTimeModel::normal(n.mean_s(), n.sd_s(), n.min_s(), max_s);
+      }
+      case config::HandoverTime::MODEL_NOT_SET: break;
+    }
+    error(at.self(), what + " names no model (fixed_s, uniform or normal)");
+    return office::HandoverTimeModel::fixed(10.0);
+  }
+
+  // A time of day written in the file, or an error at `where`.
+  std::optional<double> clock_time(const std::string& text, const std::string& what, Position where) {
+    if (const auto t = office::parse_clock(text)) return t;
+    error(where, what + " '" + text + "' is not a time of day HH:MM or HH:MM:SS (00:00 .. 24:00)");
+    return std::nullopt;
+  }
+
+  void office(const config::Scenario& file, const Locator& root, Scenario& out) {
+    const std::size_t errors_before = errors_.size();
+    office::OfficeSpec spec;
+    if (!file.day_start().empty()) {
+      if (const auto t = clock_time(file.day_start(), "day_start", root.at("day_start"))) {
+        if (*t >= office::kSecondsPerDay)
+          error(root.at("day_start"), "day_start '" + file.day_start() + "' must be before 24:00");
+        spec.clock.day_start_s = *t;
+      }
+    }
+    if (file.people_size() == 0 && file.objects_size() == 0 && file.loading_stations_size() == 0) return;
+
+    // Rooms and places share the office's one namespace of places.
+    for (const RoomSpec& r : out.rooms) {
+      office::Place room{r.name, office::PlaceKind::room, "", {0.0, 0.0}, 1.0};
+      const geometry::Rect area = r.bounds.value_or(geometry::Rect{0.0, 0.0, out.world.width, out.world.height});
+      room.position = {0.5 * (area.min_x + area.max_x), 0.5 * (area.min_y + area.max_y)};
+      room.radius = std::max(1.0, 0.5 * std::hypot(area.max_x - area.min_x, area.max_y - area.min_y));
+      if (!std::isfinite(room.radius)) room.radius = 1.0;  // the world's size was reported already
+      spec.places.push_back(std::move(room));
+    }
+    for (const auto& [p, at] : office_places_) {
+      if (room_lines_.count(p.name) != 0) {
+        error(at, "place '" + p.name + "' has the name of a room (line " + std::to_string(room_lines_.at(p.name)) +
+                      "); with people, objects or loading stations they share one namespace");
+        continue;
+      }
+      spec.places.push_back(p);
+    }
+
+    std::map<std::string, int> people;
+    for (int i = 0; i < file.people_size(); ++i) {
+      const config::Person& p = file.people(i);
+      const Locator at = root.nested("people", i);
+      if (!unique_name("person", p.name(), at.at("name"), people)) continue;
+      const std::string who = "person '" + p.name() + "'";
+      office::Person person;
+      person.name = p.name();
+      person.desk = p.desk();
+      if (p.desk().empty())
+        error(at.self(), who + ": desk is missing");
+      else
+        office_place(who, p.desk(), at.at("desk"));
+      std::optional<office::DailyInterval> previous;
+      for (int k = 0; k < p.presence_size(); ++k) {
+        const config::DailyInterval& d = p.presence(k);
+        const Locator il = at.nested("presence", k);
+        const auto start = clock_time(d.start(), who + ": presence start", il.at("start"));
+        const auto end = clock_time(d.end(), who + ": presence end", il.at("end"));
+        if (!start || !end) continue;
+        const office::DailyInterval interval{*start, *end};
+        const std::string range = d.start() + "-" + d.end();
+        if (*start >= *end) {
+          error(il.self(), who + ": presence " + range + (*start > *end ? " ends before it starts" : " is empty"));
+          continue;
+        }
+        if (previous && interval.start_s < previous->end_s) {
+          error(il.self(), who + ": presence " + range + " overlaps or comes before the previous interval " +
+                               office::format_clock(previous->start_s) + "-" + office::format_clock(previous->end_s));
+          continue;
+        }
+        previous = interval;
+        person.presence.push_back(interval);
+      }
+      person.handover_time = handover_time(p.has_handover_time(), p.handover_time(), who, at.nested("handover_time"));
+      spec.people.push_back(std::move(person));
+    }
+
+    std::map<std::string, int> stations;
+    for (int i = 0; i < file.loading_stations_size(); ++i) {
+      const config::LoadingStation& s = file.loading_stations(i);
+      const Locator at = root.nested("loading_stations", i);
+      if (s.place().empty()) {
+        error(at.self(), "loading station: place is missing");
+        continue;
+      }
+      const std::string who = "loading station at '" + s.place() + "'";
+      if (!office_place(who, s.place(), at.at("place"))) continue;
+      if (const auto [it, fresh] = stations.emplace(s.place(), at.at("place").line); !fresh) {
+        error(at.at("place"), "duplicate loading station at '" + s.place() + "' (first defined at line " +
+                                  std::to_string(it->second) + ")");
+        continue;
+      }
+      spec.stations.push_back(
+          {s.place(), handover_time(s.has_handover_time(), s.handover_time(), who, at.nested("handover_time"))});
+    }
+
+    std::map<std::string, const RobotSpec*> robots;
+    for (const auto* list : {&out.world.robots_at_start, &out.world.known_robots})
+      for (const RobotSpec& r : *list) robots.emplace(r.id, &r);
+    std::map<std::string, std::uint32_t> carried;  // robot id -> objects it carries at the start
+    std::map<std::string, int> objects;
+    for (int i = 0; i < file.objects_size(); ++i) {
+      const config::OfficeObject& o = file.objects(i);
+      const Locator at = root.nested("objects", i);
+      if (const auto problem = robot_id_problem(o.id())) {
+        std::string text = *problem;
+        text.replace(0, 5, "object");  // "robot id ..." -> "object id ..."
+        error(at.at("id"), text);
+        continue;
+      }
+      if (const auto [it, fresh] = objects.emplace(o.id(), at.at("id").line); !fresh) {
+        error(at.at("id"), "duplicate object id " + o.id() + " (first defined at line " + std::to_string(it->second) + ")");
+        continue;
+      }
+      const std::string who = "object '" + o.id() + "'";
+      if (o.kind().empty()) error(at.self(), who + ": kind is missing (letter, book, envelope, ...)");
+      office::ObjectItem item{o.id(), o.kind(), o.colour(), {}};
+      switch (o.location_case()) {
+        case config::OfficeObject::kPlace:
+          office_place(who, o.place(), at.at("place"));
+          item.location = office::ObjectLocation::at_place(o.place());
+          break;
+        case config::OfficeObject::kCarrier: {
+          item.location = office::ObjectLocation::carried_by(o.carrier());
+          const auto robot = robots.find(o.carrier());
+          if (robot == robots.end()) {
+            error(at.at("carrier"), who + ": carrier '" + o.carrier() + "' is not a robot of this scenario");
+          } else if (const std::uint32_t n = ++carried[o.carrier()]; n > robot->second->capacity) {
+            error(at.at("carrier"), who + ": robot " + o.carrier() + " would carry " + std::to_string(n) +
+                                        " objects, its capacity is " + std::to_string(robot->second->capacity));
+          }
+          break;
+        }
+        case config::OfficeObject::LOCATION_NOT_SET:
+          error(at.self(), who + ": place or carrier is missing");
+          break;
+      }
+      spec.objects.push_back(std::move(item));
+    }
+
+    if (errors_.size() != errors_before) return;
+    // Everything above is checked with its position; the office's own rules are the backstop.
+    for (const std::string& problem : office::office_spec_problems(spec)) error(root.self(), "office: " + problem);
+    if (errors_.size() == errors_before) out.office = std::move(spec);
   }
 
   static std::string world_text(const WorldSpec& w) {
@@ -629,6 +842,8 @@ class ScenarioChecker {
   std::map<std::string, int> room_lines_;   // room name -> line of its definition
   std::string base_dir_;                    // of the scenario file, with a trailing '/', or ""
   std::vector<RobotSpec> placed_;
+  // Places that passed their checks, as the office sees them, with where their name is written.
+  std::vector<std::pair<office::Place, Position>> office_places_;
 };
 
 }  // namespace

@@ -3,6 +3,7 @@
 // and meaning are both checked here, every problem is reported with its file position, and only
 // plain structs go inward. Cores never see protobuf types.
 #include "simulator/core/world_spec.hpp"
+#include "simulator/office/office_spec.hpp"
 #include "simulator/scenario/scenario_content.hpp"
 #include "simulator/scenario/scenario_error.hpp"
 #include "simulator/scenario/simulation_settings.hpp"
@@ -20,6 +21,9 @@ struct Scenario {
   std::vector<PlaceSpec> places;
   std::vector<WaypointSpec> waypoints;
   RadioSettings radio;
+  // The office (people, objects, loading stations) when the file declares any, checked: its
+  // places are the file's rooms (kind room, at the centre of their bounds) and places.
+  std::optional<office::OfficeSpec> office;
 };
 
 struct [[nodiscard]] ScenarioLoadResult {

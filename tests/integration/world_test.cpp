@@ -8,6 +8,8 @@
 //     71    WorldTest.ClosedDoorStopsRobotUntilOpened
 //     72    WorldTest.RadioLinkLostBehindBuildingAndRegained
 //     73    WorldTest.TeamMessagesDroppedWhileDisconnected
+//     74    WorldTest.OfficeLoadAtADeskWithThePersonPresentCompletes
+//     75    WorldTest.OfficeRequestsNobodyCanServeAreRejectedWithReasons
 // (ctest names them integration.<suite>.<test>.)
 #include "tests/support/process_test.hpp"
 
@@ -32,6 +34,8 @@ enum Domain : int {
   kDomainDoor = 71,
   kDomainRadio = 72,
   kDomainTeamMessages = 73,
+  kDomainOfficeLoad = 74,
+  kDomainOfficeRejected = 75,
 };
 
 
@@ -161,6 +165,55 @@ std::string text(const std::vector<bool>& v) {
   std::string out;
   for (bool b : v) out += std::string(out.empty() ? "" : " -> ") + (b ? "connected" : "disconnected");
   return out.empty() ? "(none)" : out;
+}
+
+// One room with two desks. The run starts at 09:00: Anna is in (all day), Bob only from 14:00.
+// r1 starts at Bob's desk.
+constexpr const char* kOfficeScenario = R"pb(
+name: "office-handover"
+world { width: 20.0 height: 8.0 }
+rooms { name: "A-1" bounds { min_x: 0 min_y: 0 max_x: 20 max_y: 8 } }
+places { name: "anna-desk" room: "A-1" position { x: 12.0 y: 4.0 } radius: 0.6 }
+places { name: "bob-desk" room: "A-1" position { x: 3.0 y: 6.0 } }
+day_start: "09:00"
+people {
+  name: "Anna"
+  desk: "anna-desk"
+  presence { start: "08:00" end: "18:00" }
+  handover_time { fixed_s: 2.5 }
+}
+people {
+  name: "Bob"
+  desk: "bob-desk"
+  presence { start: "14:00" end: "18:00" }
+}
+objects { id: "letter-1" kind: "letter" colour: "red" place: "anna-desk" }
+objects { id: "book-1" kind: "book" colour: "green" place: "bob-desk" }
+objects { id: "envelope-1" kind: "envelope" colour: "white" place: "anna-desk" }
+robots {
+  id: "r1"
+  kinematics: HOLONOMIC
+  start { x: 3.0 y: 6.0 theta: 0.0 }
+  spawn_at_start: true
+  capacity: 1
+}
+simulation { mode: LOCKSTEP step_s: 0.05 seed: 11 }
+)pb";
+
+msg::HandoverRequest handover(const std::string& id, const std::string& robot, msg::HandoverKind kind,
+                              const std::string& place, const std::string& object) {
+  return {id, "world_test", robot, kind, place, object};
+}
+
+std::vector<msg::HandoverStatus> answers_to(const Recorder<msg::HandoverStatus>& r, const std::string& request_id) {
+  return r.matching([&](const msg::HandoverStatus& s) { return s.request_id == request_id; });
+}
+
+std::optional<msg::ObjectState> last_object_state(const Recorder<msg::ObjectState>& r, const std::string& id) {
+  std::optional<msg::ObjectState> last;
+  for (const auto& o : r.all())
+    if (o.object_id == id) last = o;
+  return last;
 }
 
 // (a) A closed door stops a robot whose planner does not know about doors; opened by a door
@@ -397,6 +450,165 @@ TEST_F(WorldTest, TeamMessagesDroppedWhileDisconnected) {
   }));
   EXPECT_TRUE(delivered("lost-1").empty()) << "a message crossed the building";
   EXPECT_GE(sim_status.all().back().team_messages_delivered, 2u);
+}
+
+// (d) The office: r1 drives to Anna's desk, asks for the letter lying there, and gets it after
+// Anna's handover time (2.5 s of simulated time); the object's ground truth then names r1.
+TEST_F(WorldTest, OfficeLoadAtADeskWithThePersonPresentCompletes) {
+  join(kDomainOfficeLoad);
+  const std::string scenario = dir().file("office.pbtxt");
+  write_file(scenario, kOfficeScenario);
+  Recorder<msg::Heartbeat> beats(participant(), dds::topics::heartbeat);
+  Recorder<msg::GoalStatus> goals(participant(), dds::topics::goal_status);
+  Recorder<msg::RobotState> states(participant(), dds::topics::robot_state);
+  Recorder<msg::HandoverStatus> answers(participant(), dds::topics::handover_status);
+  Recorder<msg::ObjectState> objects(participant(), dds::topics::truth_object);
+  dds::Topic<msg::NavGoal> goal_topic(participant(), dds::topics::nav_goal);
+  dds::Writer<msg::NavGoal> goal_writer(participant(), goal_topic);
+  dds::Topic<msg::HandoverRequest> request_topic(participant(), dds::topics::handover_request);
+  dds::Writer<msg::HandoverRequest> requests(participant(), request_topic);
+  const auto poll_all = [&] {
+    goals.poll();
+    states.poll();
+    answers.poll();
+    objects.poll();
+  };
+
+  start_simulator(scenario, {"--wait-for", "behavior/r1"});
+  auto& behavior = start_behavior("r1");
+  ASSERT_TRUE(await_ready(beats, behavior));
+  ASSERT_TRUE(await("the ground truth of both objects", [&] {
+    poll_all();
+    return last_object_state(objects, "letter-1") && last_object_state(objects, "book-1");
+  }));
+  EXPECT_EQ(last_object_state(objects, "letter-1")->place, "anna-desk");
+  EXPECT_EQ(last_object_state(objects, "letter-1")->carrier, "");
+  EXPECT_EQ(last_object_state(objects, "letter-1")->kind, "letter");
+  EXPECT_EQ(last_object_state(objects, "letter-1")->colour, "red");
+
+  ASSERT_TRUE(send_goal(goal_writer, "r1", "to-anna", 12.0, 4.0));
+  ASSERT_TRUE(await("r1 at Anna's desk", [&] {
+    poll_all();
+    return ended(last_goal_state(goals, "to-anna"));
+  }, 90s));
+  ASSERT_EQ(last_goal_state(goals, "to-anna"), GoalState::Reached);
+
+  ASSERT_TRUE(requests.wait_for_readers(1, kDeadline));
+  requests.write(handover("load-1", "r1", msg::HandoverKind::Load, "anna-desk", "letter-1"));
+  ASSERT_TRUE(await("load-1 accepted, then finished", [&] {
+    poll_all();
+    const auto a = answers_to(answers, "load-1");
+    return a.size() >= 2 || (a.size() == 1 && a[0].state == msg::HandoverState::Rejected);
+  })) << answers_to(answers, "load-1").size() << " answers";
+  const auto a = answers_to(answers, "load-1");
+  ASSERT_EQ(a.size(), 2u);
+  const msg::HandoverStatus& accepted = a[0];
+  const msg::HandoverStatus& completed = a[1];
+  ASSERT_EQ(accepted.state, msg::HandoverState::Accepted) << accepted.reason << ": " << accepted.detail;
+  EXPECT_EQ(accepted.robot_id, "r1");
+  EXPECT_EQ(accepted.kind, msg::HandoverKind::Load);
+  EXPECT_EQ(accepted.place, "anna-desk");
+  EXPECT_EQ(accepted.object_id, "letter-1");
+  EXPECT_EQ(accepted.helper, "Anna");
+  EXPECT_EQ(accepted.completes_at_ns - accepted.sim_time_ns, 2'500'000'000);
+  ASSERT_EQ(completed.state, msg::HandoverState::Completed) << completed.reason << ": " << completed.detail;
+  EXPECT_EQ(completed.reason, "");
+  EXPECT_EQ(completed.helper, "Anna");
+  EXPECT_EQ(completed.sim_time_ns, accepted.completes_at_ns);
+  EXPECT_GT(completed.sim_time_ns, accepted.sim_time_ns);
+  EXPECT_GT(completed.tick, accepted.tick);
+
+  ASSERT_TRUE(await("letter-1 carried by r1 in the ground truth", [&] {
+    poll_all();
+    return last_object_state(objects, "letter-1")->carrier == "r1";
+  }));
+  EXPECT_EQ(last_object_state(objects, "letter-1")->place, "");
+  EXPECT_EQ(last_object_state(objects, "letter-1")->tick, completed.tick);
+  EXPECT_EQ(last_object_state(objects, "book-1")->place, "bob-desk");  // untouched
+
+  // r1 can carry one object: a second load is refused, and the answer says why.
+  requests.write(handover("load-2", "r1", msg::HandoverKind::Load, "anna-desk", "envelope-1"));
+  ASSERT_TRUE(await("load-2 answered", [&] {
+    poll_all();
+    return !answers_to(answers, "load-2").empty();
+  }));
+  EXPECT_EQ(answers_to(answers, "load-2")[0].state, msg::HandoverState::Rejected);
+  EXPECT_EQ(answers_to(answers, "load-2")[0].reason, "robot_full");
+  EXPECT_EQ(answers_to(answers, "load-2")[0].detail, "robot r1 carries 1 objects, its capacity is 1");
+}
+
+// (e) Requests nobody can serve are rejected at once with their reason, and the simulator keeps
+// running: nobody at Bob's desk at 09:00, r1 away from Anna's desk, an unknown robot, a malformed
+// robot id. A repeated request id gets the same answer again.
+TEST_F(WorldTest, OfficeRequestsNobodyCanServeAreRejectedWithReasons) {
+  join(kDomainOfficeRejected);
+  const std::string scenario = dir().file("office.pbtxt");
+  write_file(scenario, kOfficeScenario);
+  Recorder<msg::HandoverStatus> answers(participant(), dds::topics::handover_status);
+  Recorder<msg::ObjectState> objects(participant(), dds::topics::truth_object);
+  Recorder<msg::SimulatorStatus> sim_status(participant(), dds::topics::sim_status);
+  dds::Topic<msg::HandoverRequest> request_topic(participant(), dds::topics::handover_request);
+  dds::Writer<msg::HandoverRequest> requests(participant(), request_topic);
+  const auto poll_all = [&] {
+    answers.poll();
+    objects.poll();
+    sim_status.poll();
+  };
+  const auto only_answer = [&](const std::string& id) {
+    const auto a = answers_to(answers, id);
+    return a.empty() ? msg::HandoverStatus{} : a.front();
+  };
+
+  start_simulator(scenario, {});
+  ASSERT_TRUE(requests.wait_for_readers(1, kDeadline));
+  requests.write(handover("nobody", "r1", msg::HandoverKind::Load, "bob-desk", "book-1"));
+  requests.write(handover("away", "r1", msg::HandoverKind::Load, "anna-desk", "letter-1"));
+  requests.write(handover("ghost", "r9", msg::HandoverKind::Load, "anna-desk", "letter-1"));
+  requests.write(handover("malformed", "r 1", msg::HandoverKind::Unload, "anna-desk", "letter-1"));
+  ASSERT_TRUE(await("four answers", [&] {
+    poll_all();
+    return answers.all().size() >= 4;
+  }));
+  for (const auto& a : answers.all()) {
+    EXPECT_EQ(a.state, msg::HandoverState::Rejected) << a.request_id;
+    EXPECT_EQ(a.helper, "") << a.request_id;
+    EXPECT_EQ(a.completes_at_ns, 0) << a.request_id;
+  }
+  EXPECT_EQ(only_answer("nobody").reason, "nobody_present");
+  EXPECT_NE(only_answer("nobody").detail.find("nobody at bob-desk at 09:"), std::string::npos)
+      << only_answer("nobody").detail;
+  EXPECT_NE(only_answer("nobody").detail.find("(somebody is back at 14:00)"), std::string::npos)
+      << only_answer("nobody").detail;
+  EXPECT_EQ(only_answer("away").reason, "robot_not_at_place");
+  EXPECT_NE(only_answer("away").detail.find("from anna-desk (must be within 0.6 m)"), std::string::npos)
+      << only_answer("away").detail;
+  EXPECT_EQ(only_answer("ghost").reason, "unknown_robot");
+  EXPECT_EQ(only_answer("malformed").reason, "invalid_request");
+  EXPECT_EQ(only_answer("malformed").kind, msg::HandoverKind::Unload);
+
+  // Asked again: the same answer, nothing started.
+  requests.write(handover("nobody", "r1", msg::HandoverKind::Load, "bob-desk", "book-1"));
+  ASSERT_TRUE(await("the repeated answer", [&] {
+    poll_all();
+    return answers_to(answers, "nobody").size() == 2;
+  }));
+  EXPECT_EQ(answers_to(answers, "nobody")[1].reason, "nobody_present");
+  EXPECT_EQ(answers_to(answers, "nobody")[1].sim_time_ns, answers_to(answers, "nobody")[0].sim_time_ns);
+
+  // Still running, and nothing moved.
+  ASSERT_TRUE(await("a simulator status", [&] {
+    poll_all();
+    return !sim_status.all().empty();
+  }));
+  const int64_t seen_at = sim_status.all().back().tick;
+  ASSERT_TRUE(await("20 more ticks", [&] {
+    poll_all();
+    return sim_status.all().back().tick >= seen_at + 20;
+  }));
+  ASSERT_TRUE(last_object_state(objects, "book-1"));
+  EXPECT_EQ(last_object_state(objects, "book-1")->place, "bob-desk");
+  EXPECT_EQ(last_object_state(objects, "letter-1")->place, "anna-desk");
+  EXPECT_EQ(answers.all().size(), 5u);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include "common/geometry/geometry.hpp"
 #include "common/msg/clock.hpp"
 #include "common/msg/navigation.hpp"
+#include "common/msg/office.hpp"
 #include "common/msg/robot.hpp"
 #include "common/msg/simulation.hpp"
 #include "common/msg/perception.hpp"
@@ -43,6 +44,15 @@ struct EnumValues<msg::GoalState> {
   static constexpr std::array values{msg::GoalState::Accepted, msg::GoalState::Active,    msg::GoalState::Reached,
                                      msg::GoalState::Blocked,  msg::GoalState::Preempted, msg::GoalState::Rejected,
                                      msg::GoalState::Cancelled};
+};
+template <>
+struct EnumValues<msg::HandoverKind> {
+  static constexpr std::array values{msg::HandoverKind::Load, msg::HandoverKind::Unload};
+};
+template <>
+struct EnumValues<msg::HandoverState> {
+  static constexpr std::array values{msg::HandoverState::Accepted, msg::HandoverState::Rejected,
+                                     msg::HandoverState::Completed, msg::HandoverState::Failed};
 };
 
 // visit(v, m) calls v.key(name, member) for key fields and v.field(name, member) for the others;
@@ -408,6 +418,56 @@ struct Fields<msg::DoorCommand> {
     v.key("door_id", m.door_id);
     v.field("angle", m.angle);
     v.field("source", m.source);
+  }
+};
+
+// --- The office: load/unload requests and answers, object ground truth ------------------------
+
+template <>
+struct Fields<msg::HandoverRequest> {
+  static constexpr const char* name = "HandoverRequest";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("request_id", m.request_id);
+    v.field("requester", m.requester);
+    v.field("robot_id", m.robot_id);
+    v.field("kind", m.kind);
+    v.field("place", m.place);
+    v.field("object_id", m.object_id);
+  }
+};
+
+template <>
+struct Fields<msg::HandoverStatus> {
+  static constexpr const char* name = "HandoverStatus";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("request_id", m.request_id);
+    v.field("robot_id", m.robot_id);
+    v.field("kind", m.kind);
+    v.field("place", m.place);
+    v.field("object_id", m.object_id);
+    v.field("state", m.state);
+    v.field("reason", m.reason);
+    v.field("detail", m.detail);
+    v.field("helper", m.helper);
+    v.field("tick", m.tick);
+    v.field("sim_time_ns", m.sim_time_ns);
+    v.field("completes_at_ns", m.completes_at_ns);
+  }
+};
+
+template <>
+struct Fields<msg::ObjectState> {
+  static constexpr const char* name = "ObjectState";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.key("object_id", m.object_id);
+    v.field("kind", m.kind);
+    v.field("colour", m.colour);
+    v.field("place", m.place);
+    v.field("carrier", m.carrier);
+    v.field("tick", m.tick);
   }
 };
 

@@ -2,6 +2,7 @@
 // line announces ("# expect: line:col: message", the message as a prefix), and the shipped
 // scenarios in deploy/scenarios/ load and build a World.
 #include "simulator/core/world.hpp"
+#include "simulator/office/office_state.hpp"
 #include "simulator/scenario/scenario_loader.hpp"
 
 #include <gtest/gtest.h>
@@ -44,13 +45,20 @@ INSTANTIATE_TEST_SUITE_P(Files, BadScenario,
                                            "missing_map.pbtxt", "door_script_backwards.pbtxt",
                                            "place_unknown_room.pbtxt", "place_in_obstacle.pbtxt",
                                            "duplicate_waypoint.pbtxt", "bad_sensor.pbtxt",
-                                           "bad_area.pbtxt", "bad_radio.pbtxt", "syntax_error.pbtxt"),
+                                           "bad_area.pbtxt", "bad_radio.pbtxt", "syntax_error.pbtxt",
+                                           // The office: people, objects, loading stations.
+                                           "person_unknown_desk.pbtxt", "duplicate_person.pbtxt",
+                                           "presence_backwards.pbtxt", "presence_overlap.pbtxt",
+                                           "presence_bad_clock.pbtxt", "negative_handover_time.pbtxt",
+                                           "station_uniform_backwards.pbtxt", "object_unknown_place.pbtxt",
+                                           "duplicate_object.pbtxt", "object_unknown_carrier.pbtxt",
+                                           "carrier_over_capacity.pbtxt"),
                          [](const auto& info) { return info.param.substr(0, info.param.find('.')); });
 
 TEST(BadScenarioFiles, EveryFileInTheFolderIsListed) {
   int files = 0;
   for (const auto& entry : fs::directory_iterator(kBad)) files += entry.path().extension() == ".pbtxt";
-  EXPECT_EQ(files, 15);
+  EXPECT_EQ(files, 26);  // 15 of the world, 11 of the office
 }
 
 Scenario load_shipped(const std::string& name) {
@@ -79,6 +87,17 @@ TEST(ShippedScenarios, OfficeFloorHasTheCourierPapersRoomsDoorsAndPlaces) {
   ASSERT_TRUE(rhino.has_value());
   EXPECT_EQ(rhino->capacity, 3u);
   EXPECT_EQ(rhino->kind, "courier");
+  // The office: people at their desks, objects on desks and the mail room's tray.
+  ASSERT_TRUE(s.office.has_value());
+  EXPECT_EQ(s.office->people.size(), 6u);
+  EXPECT_EQ(s.office->objects.size(), 7u);
+  ASSERT_EQ(s.office->stations.size(), 1u);
+  EXPECT_EQ(s.office->stations[0].place, "mail-tray");
+  const office::OfficeState office(*s.office);
+  EXPECT_EQ(office.people_present("michael-desk", 0.0), std::vector<std::string>{});  // 08:30
+  EXPECT_EQ(office.people_present("michael-desk", 1800.0), std::vector<std::string>{"Michael"});  // 09:00
+  EXPECT_TRUE(office.object("book-green")->location.is_at("librarian-desk"));
+  EXPECT_EQ(office.place("michael-desk")->room, "A-120");
   // Every door is reachable through its doorway from the hallway: sight from the hallway centre
   // line in front of it to a point 1.5 m into the room.
   for (const DoorSpec& d : s.world.doors) {

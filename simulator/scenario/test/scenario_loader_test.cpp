@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 
@@ -232,6 +233,130 @@ robots { id: "r1" start { x: 1 y: 1 } }
             (Errors{"s.pbtxt:1:14: simulation: step_s must be positive (got 0.0)",
                     "s.pbtxt:2:9: world: width must be positive (got -1.0)",
                     "s.pbtxt:3:1: robot r1: kinematics must be HOLONOMIC or UNICYCLE"}));
+}
+
+// --- Office content ---------------------------------------------------------------------------
+
+const std::string kOffice = R"(world { width: 10 height: 5 }
+rooms { name: "A-110" bounds { min_x: 0 min_y: 0 max_x: 6 max_y: 4 } }
+places { name: "anna-desk" room: "A-110" position { x: 2 y: 2 } radius: 0.8 }
+places { name: "mailroom" room: "A-110" position { x: 5 y: 1 } kind: STATION }
+places { name: "table" room: "A-110" position { x: 4 y: 3 } kind: TABLE }
+robots { id: "r1" kinematics: HOLONOMIC start { x: 8 y: 2 } capacity: 2 }
+)";
+
+TEST(ScenarioLoader, OfficeContentBecomesAnOfficeSpec) {
+  const std::string text = kOffice + R"(day_start: "09:00"
+people {
+  name: "Anna"
+  desk: "anna-desk"
+  presence { start: "09:00" end: "12:00" }
+  presence { start: "13:00" end: "24:00" }
+  handover_time { normal { mean_s: 20 sd_s: 5 min_s: 5 } }
+}
+people { name: "Bob" desk: "table" }
+loading_stations { place: "mailroom" handover_time { uniform { min_s: 2 max_s: 4 } } }
+objects { id: "letter-1" kind: "letter" colour: "red" place: "anna-desk" }
+objects { id: "book-1" kind: "book" carrier: "r1" }
+)";
+  const ScenarioLoadResult result = load_scenario_text(text, "office.pbtxt");
+  ASSERT_TRUE(result.ok()) << result.error_text();
+  ASSERT_TRUE(result.scenario->office.has_value());
+  const office::OfficeSpec& o = *result.scenario->office;
+  EXPECT_DOUBLE_EQ(o.clock.day_start_s, 9 * 3600.0);
+
+  // The room first (centre of its bounds, half its diagonal), then the places.
+  ASSERT_EQ(o.places.size(), 4u);
+  EXPECT_EQ(o.places[0].name, "A-110");
+  EXPECT_EQ(o.places[0].kind, office::PlaceKind::room);
+  EXPECT_EQ(o.places[0].position, geometry::Vec2(3.0, 2.0));
+  EXPECT_DOUBLE_EQ(o.places[0].radius, std::hypot(6.0, 4.0) / 2);
+  EXPECT_EQ(o.places[1].name, "anna-desk");
+  EXPECT_EQ(o.places[1].kind, office::PlaceKind::desk);
+  EXPECT_EQ(o.places[1].room, "A-110");
+  EXPECT_DOUBLE_EQ(o.places[1].radius, 0.8);
+  EXPECT_EQ(o.places[2].kind, office::PlaceKind::station);
+  EXPECT_DOUBLE_EQ(o.places[2].radius, 1.0);  // default
+  EXPECT_EQ(o.places[3].kind, office::PlaceKind::table);
+
+  ASSERT_EQ(o.people.size(), 2u);
+  const office::Person& anna = o.people[0];
+  EXPECT_EQ(anna.desk, "anna-desk");
+  ASSERT_EQ(anna.presence.size(), 2u);
+  EXPECT_DOUBLE_EQ(anna.presence[0].start_s, 9 * 3600.0);
+  EXPECT_DOUBLE_EQ(anna.presence[1].end_s, 86400.0);
+  EXPECT_EQ(anna.handover_time.kind, office::HandoverTimeModel::Kind::normal);
+  EXPECT_DOUBLE_EQ(anna.handover_time.mean_s, 20.0);
+  EXPECT_DOUBLE_EQ(anna.handover_time.min_s, 5.0);
+  EXPECT_DOUBLE_EQ(anna.handover_time.max_s, 40.0);  // absent: mean + 4 sd
+  const office::Person& bob = o.people[1];
+  EXPECT_TRUE(bob.presence.empty());
+  EXPECT_EQ(bob.handover_time.kind, office::HandoverTimeModel::Kind::fixed);
+  EXPECT_DOUBLE_EQ(bob.handover_time.mean_s, 10.0);  // default
+
+  ASSERT_EQ(o.stations.size(), 1u);
+  EXPECT_EQ(o.stations[0].place, "mailroom");
+  EXPECT_EQ(o.stations[0].handover_time.kind, office::HandoverTimeModel::Kind::uniform);
+  EXPECT_DOUBLE_EQ(o.stations[0].handover_time.max_s, 4.0);
+
+  ASSERT_EQ(o.objects.size(), 2u);
+  EXPECT_EQ(o.objects[0].id, "letter-1");
+  EXPECT_EQ(o.objects[0].kind, "letter");
+  EXPECT_EQ(o.objects[0].colour, "red");
+  EXPECT_TRUE(o.objects[0].location.is_at("anna-desk"));
+  EXPECT_TRUE(o.objects[1].location.is_carried_by("r1"));
+}
+
+TEST(ScenarioLoader, WithoutPeopleObjectsOrStationsThereIsNoOffice) {
+  const ScenarioLoadResult result = load_scenario_text(kOffice, "s.pbtxt");
+  ASSERT_TRUE(result.ok()) << result.error_text();
+  EXPECT_FALSE(result.scenario->office.has_value());
+}
+
+TEST(ScenarioLoader, OfficeProblemsAreEachLocated) {
+  const std::string text = kOffice + R"(day_start: "25:00"
+people { desk: "anna-desk" }
+people { name: "Anna" }
+people {
+  name: "Bob"
+  desk: "nowhere"
+  presence { start: "10:00" end: "10:00" }
+  handover_time { }
+}
+people { name: "Cleo" desk: "table" handover_time { normal { mean_s: 5 sd_s: -1 } } }
+loading_stations { handover_time { fixed_s: 1 } }
+loading_stations { place: "mailroom" }
+loading_stations { place: "mailroom" }
+objects { id: "bad id" kind: "letter" place: "table" }
+objects { id: "letter-2" place: "table" }
+objects { id: "letter-3" kind: "letter" }
+)";
+  EXPECT_EQ(errors_of(text),
+            (Errors{"s.pbtxt:7:1: day_start '25:00' is not a time of day HH:MM or HH:MM:SS (00:00 .. 24:00)",
+                    "s.pbtxt:8:1: person name is empty",
+                    "s.pbtxt:9:1: person 'Anna': desk is missing",
+                    "s.pbtxt:12:3: person 'Bob': unknown place 'nowhere'",
+                    "s.pbtxt:13:3: person 'Bob': presence 10:00-10:00 is empty",
+                    "s.pbtxt:14:3: person 'Bob': handover_time names no model (fixed_s, uniform or normal)",
+                    "s.pbtxt:16:72: person 'Cleo': handover_time normal sd_s must be >= 0 (got -1.0)",
+                    "s.pbtxt:17:1: loading station: place is missing",
+                    "s.pbtxt:19:20: duplicate loading station at 'mailroom' (first defined at line 18)",
+                    "s.pbtxt:20:11: object id 'bad id' has characters outside [A-Za-z0-9_.-]",
+                    "s.pbtxt:21:1: object 'letter-2': kind is missing (letter, book, envelope, ...)",
+                    "s.pbtxt:22:1: object 'letter-3': place or carrier is missing"}));
+}
+
+TEST(ScenarioLoader, WithAnOfficeRoomsAndPlacesShareOneNamespace) {
+  const std::string text = R"(world { width: 10 height: 5 }
+rooms { name: "A-1" }
+places { name: "A-1" room: "A-1" position { x: 1 y: 1 } }
+objects { id: "letter-1" kind: "letter" place: "A-1" }
+)";
+  EXPECT_EQ(errors_of(text),
+            (Errors{"s.pbtxt:3:10: place 'A-1' has the name of a room (line 2); with people, objects or loading "
+                    "stations they share one namespace"}));
+  // Without office content the same names are fine.
+  EXPECT_TRUE(load_scenario_text(text.substr(0, text.find("objects")), "s.pbtxt").ok());
 }
 
 TEST(ScenarioLoader, FileIsReadAndNamedByItsPath) {

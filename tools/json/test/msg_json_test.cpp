@@ -60,6 +60,9 @@ TEST(MsgJson, EveryTypeRoundTrips) {
   expect_round_trip(test::make_team_message(test::Variant::Full));
   expect_round_trip(test::make_team_delivery(test::Variant::Full));
   expect_round_trip(test::make_door_command(test::Variant::Full));
+  expect_round_trip(test::make_handover_request(test::Variant::Full));
+  expect_round_trip(test::make_handover_status(test::Variant::Full));
+  expect_round_trip(test::make_object_state(test::Variant::Full));
 }
 
 TEST(MsgJson, EnumsAreLowerCaseNames) {
