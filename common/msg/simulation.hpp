@@ -25,11 +25,35 @@ struct SpawnReply {
   std::string reason;
 };
 
+struct MapPoint {
+  double x = 0.0;
+  double y = 0.0;
+};
+
+struct MapPolygon {
+  std::string name;
+  std::vector<MapPoint> vertices;
+};
+
+// An occupancy raster in the world frame; `blocked` holds cols * rows bytes (1 = blocked),
+// row-major from the bottom row. (Run-length coded on the wire: see idl/simulation.idl.)
+struct MapRaster {
+  std::string name;
+  double origin_x = 0.0;
+  double origin_y = 0.0;
+  double resolution = 1.0;
+  uint32_t cols = 0;
+  uint32_t rows = 0;
+  std::vector<uint8_t> blocked;
+};
+
 struct WorldMap {
   std::string name;
   double width = 0.0;
   double height = 0.0;
   std::vector<geometry::Rect> obstacles;
+  std::vector<MapPolygon> polygons;
+  std::vector<MapRaster> rasters;
 };
 
 struct SimulatorStatus {

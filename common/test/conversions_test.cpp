@@ -84,6 +84,46 @@ TEST(ConversionsTest, WorldMapRoundTrip) {
   expect_round_trip(one);
 }
 
+TEST(ConversionsTest, WorldMapRastersTravelAsRunsThatAlternateFromFree) {
+  autonomy_WorldMap c{};
+  Arena arena;
+  const auto value = test::make_world_map(Variant::Full);
+  DdsType<msg::WorldMap>::to_c(value, c, arena);
+  ASSERT_EQ(c.rasters._length, 2u);
+  // 1 1 0 0 0 1 0 1 1 1 1 0 -> free 0, blocked 2, free 3, blocked 1, free 1, blocked 4, free 1.
+  const std::vector<uint32_t> expected = {0, 2, 3, 1, 1, 4, 1};
+  const auto& runs = c.rasters._buffer[0].runs;
+  EXPECT_EQ(std::vector<uint32_t>(runs._buffer, runs._buffer + runs._length), expected);
+  EXPECT_EQ(c.rasters._buffer[1].runs._length, 1u);  // all free: one run
+  EXPECT_EQ(c.rasters._buffer[1].runs._buffer[0], 4u);
+}
+
+TEST(ConversionsTest, WorldMapRasterWhoseRunsDoNotCoverItArrivesEmpty) {
+  // A sample that claims 1000 x 1000 cells but codes only 10 must not turn into a million
+  // guessed cells; one whose runs overshoot is cut to its size.
+  uint32_t short_runs[] = {4, 6};
+  uint32_t long_runs[] = {1, 10};
+  autonomy_MapRaster rasters[2] = {};
+  rasters[0].name = const_cast<char*>("short");
+  rasters[0].resolution = 1.0;
+  rasters[0].cols = 1000;
+  rasters[0].rows = 1000;
+  rasters[0].runs = {2, 2, short_runs, false};
+  rasters[1].name = const_cast<char*>("long");
+  rasters[1].resolution = 1.0;
+  rasters[1].cols = 2;
+  rasters[1].rows = 2;
+  rasters[1].runs = {2, 2, long_runs, false};
+  autonomy_WorldMap c{};
+  c.name = const_cast<char*>("m");
+  c.rasters = {2, 2, rasters, false};
+  const msg::WorldMap v = DdsType<msg::WorldMap>::from_c(c);
+  ASSERT_EQ(v.rasters.size(), 2u);
+  EXPECT_EQ(v.rasters[0].cols, 0u);
+  EXPECT_TRUE(v.rasters[0].blocked.empty());
+  EXPECT_EQ(v.rasters[1].blocked, (std::vector<uint8_t>{0, 1, 1, 1}));
+}
+
 TEST(ConversionsTest, SimulatorStatusRoundTrip) {
   expect_round_trip(test::make_sim_status(Variant::Full));
   expect_round_trip(test::make_sim_status(Variant::Empty));

@@ -135,7 +135,13 @@ inline msg::WorldMap make_world_map(Variant v) {
   m.name = s(v, kUtf8C);
   m.width = 40.5;
   m.height = 30.25;
-  if (v == Variant::Full) m.obstacles = {{1.0, 2.0, 3.0, 4.0}, {5.5, 6.5, 7.5, 8.5}, {-1.0, -2.0, 0.5, 0.25}};
+  if (v == Variant::Full) {
+    m.obstacles = {{1.0, 2.0, 3.0, 4.0}, {5.5, 6.5, 7.5, 8.5}, {-1.0, -2.0, 0.5, 0.25}};
+    m.polygons = {{kUtf8A, {{1.0, 1.0}, {4.0, 1.5}, {2.0, 5.25}}}, {"", {}}};
+    // First cell blocked (a leading empty run on the wire), runs of several lengths, last free.
+    m.rasters = {{kUtf8B, -2.5, 3.0, 0.05, 4, 3, {1, 1, 0, 0, 0, 1, 0, 1, 1, 1, 1, 0}},
+                 {"all free", 0.0, 0.0, 1.0, 2, 2, {0, 0, 0, 0}}};
+  }
   return m;
 }
 
@@ -354,7 +360,14 @@ inline auto fields(const msg::SpawnReply& m) {
 inline auto fields(const msg::WorldMap& m) {
   std::vector<std::array<double, 4>> rects;
   for (const auto& r : m.obstacles) rects.push_back({r.min_x, r.min_y, r.max_x, r.max_y});
-  return std::make_tuple(m.name, m.width, m.height, rects);
+  std::vector<std::pair<std::string, std::vector<std::array<double, 2>>>> polygons;
+  for (const auto& p : m.polygons) {
+    polygons.push_back({p.name, {}});
+    for (const auto& v : p.vertices) polygons.back().second.push_back({v.x, v.y});
+  }
+  std::vector<std::tuple<std::string, double, double, double, uint32_t, uint32_t, std::vector<uint8_t>>> rasters;
+  for (const auto& r : m.rasters) rasters.emplace_back(r.name, r.origin_x, r.origin_y, r.resolution, r.cols, r.rows, r.blocked);
+  return std::make_tuple(m.name, m.width, m.height, rects, polygons, rasters);
 }
 inline auto fields(const msg::SimulatorStatus& m) {
   return std::make_tuple(m.tick, m.sim_time_ns, m.robots, m.lockstep_participants, m.commands_applied,

@@ -31,24 +31,17 @@ struct NamedMap {
   WorldMap world;
 };
 
-// A ROS map's occupied (and unknown) cells as rectangles, one per horizontal run.
+// A ROS map as the world, its lower-left corner at (0, 0) whatever the YAML's origin says (plan
+// coordinates are metres from that corner).
 NamedMap from_ros_map(const grid::OccupancyMap& m, const std::string& name) {
   const auto& r = m.raster;
-  NamedMap out{name, WorldMap{r.width() * r.resolution_m(), r.height() * r.resolution_m(), {}}};
-  const double res = r.resolution_m();
+  auto placed = std::make_shared<grid::OccupancyRaster>(r.width(), r.height(), r.resolution_m());
   for (int row = 0; row < r.height(); ++row) {
-    int col = 0;
-    while (col < r.width()) {
-      if (!r.blocked({col, row})) {
-        ++col;
-        continue;
-      }
-      const int begin = col;
-      while (col < r.width() && r.blocked({col, row})) ++col;
-      out.world.obstacles.push_back(geometry::Rect{begin * res, row * res, col * res, (row + 1) * res});
+    for (int col = 0; col < r.width(); ++col) {
+      if (r.blocked({col, row})) placed->set_blocked({col, row}, true);
     }
   }
-  return out;
+  return {name, WorldMap{r.width() * r.resolution_m(), r.height() * r.resolution_m(), {}, {}, {std::move(placed)}}};
 }
 
 int build(const std::string& scenario, const std::string& map_yaml, const std::vector<double>& goal,
@@ -62,7 +55,8 @@ int build(const std::string& scenario, const std::string& map_yaml, const std::v
       return 1;
     }
     const auto& w = loaded.scenario->world;
-    map = {w.name, WorldMap{w.width, w.height, w.obstacles}};
+    map = {w.name, WorldMap{w.width, w.height, w.obstacles, w.polygons, {}}};
+    for (const auto& layer : w.rasters) map.world.rasters.push_back(layer.raster);
   } else {
     const auto loaded = grid::load_ros_map(map_yaml);
     if (!loaded.ok()) {

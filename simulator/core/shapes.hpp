@@ -1,56 +1,20 @@
 #pragma once
-// Polygons and the few exact plane tests the world needs beyond rectangles: where a ray first
-// meets a segment or a disc, how far a point is from a segment, whether a disc overlaps a polygon.
+// The simulator's names for the shared polygon and ray tests (common/geometry/shapes.hpp): the
+// world, its sensors and the radio model use them as sim::Polygon, sim::ray_segment, ...
 // Conventions follow free_space.hpp: touching is not overlapping (distance == radius is free).
-#include "common/geometry/geometry.hpp"
-
-#include <limits>
-#include <optional>
-#include <string>
-#include <vector>
+#include "common/geometry/shapes.hpp"
 
 namespace autonomy::sim {
 
-inline constexpr double kNoHit = std::numeric_limits<double>::infinity();
-
-// A simple polygon (closed implicitly, no self-intersections, either orientation, convex or not).
-struct Polygon {
-  std::string name;  // for error messages and reports; may be empty
-  std::vector<geometry::Vec2> vertices;
-
-  geometry::Rect bounds() const;
-};
-
-// Why `vertices` is not a usable simple polygon (fewer than 3 vertices, a non-finite coordinate,
-// (near) zero area, two edges that cross or overlap), or nothing when it is usable.
-std::optional<std::string> polygon_problem(const std::vector<geometry::Vec2>& vertices);
-
-// Even-odd rule; points on the boundary may count either way.
-bool polygon_contains(const std::vector<geometry::Vec2>& vertices, const geometry::Vec2& p);
-
-double segment_distance(const geometry::Vec2& p, const geometry::Vec2& a, const geometry::Vec2& b);
-
-// The disc overlaps the polygon: its centre is inside or an edge is closer than `radius`.
-bool disc_overlaps_polygon(const std::vector<geometry::Vec2>& vertices, const geometry::Vec2& center,
-                           double radius);
-
-// Ray origin + t * dir (dir a unit vector), t >= 0: the smallest t at which it meets the segment
-// a-b, or kNoHit. A ray running along the segment meets it at its first point.
-double ray_segment(const geometry::Vec2& origin, const geometry::Vec2& dir, const geometry::Vec2& a,
-                   const geometry::Vec2& b);
-
-// The smallest t >= 0 at which the ray meets the disc's boundary, 0 when the origin is inside,
-// kNoHit when it misses.
-double ray_circle(const geometry::Vec2& origin, const geometry::Vec2& dir,
-                  const geometry::Vec2& center, double radius);
-
-// Segments a-b and c-d share a point.
-bool segments_intersect(const geometry::Vec2& a, const geometry::Vec2& b, const geometry::Vec2& c,
-                        const geometry::Vec2& d);
-
-// 2D cross product (z of the 3D one).
-inline double cross(const geometry::Vec2& a, const geometry::Vec2& b) {
-  return a.x() * b.y() - a.y() * b.x();
-}
+using geometry::cross;
+using geometry::disc_overlaps_polygon;
+using geometry::kNoHit;
+using geometry::Polygon;
+using geometry::polygon_contains;
+using geometry::polygon_problem;
+using geometry::ray_circle;
+using geometry::ray_segment;
+using geometry::segment_distance;
+using geometry::segments_intersect;
 
 }  // namespace autonomy::sim

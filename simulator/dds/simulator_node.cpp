@@ -1,5 +1,7 @@
 #include "simulator/dds/simulator_node.hpp"
 
+#include "simulator/dds/map_message.hpp"
+
 #include "simulator/dds/radio_setup.hpp"
 #include "simulator/report/run_svg.hpp"
 
@@ -167,7 +169,7 @@ SimulatorNode::SimulatorNode(service::Service& service, Scenario scenario, Simul
   }
 
   const WorldSpec& spec = world_.spec();
-  map_writer_.write({spec.name, spec.width, spec.height, spec.obstacles});
+  map_writer_.write(map_message(spec));
   if (scenario_.office) {
     const office::OfficeSpec& o = *scenario_.office;
     office_.emplace(o, options_.settings.seed ^ kOfficeStreamSalt);

@@ -197,6 +197,43 @@ struct Fields<geometry::Rect> {
 };
 
 template <>
+struct Fields<msg::MapPoint> {
+  static constexpr const char* name = "MapPoint";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("x", m.x);
+    v.field("y", m.y);
+  }
+};
+
+template <>
+struct Fields<msg::MapPolygon> {
+  static constexpr const char* name = "MapPolygon";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("name", m.name);
+    v.field("vertices", m.vertices);
+  }
+};
+
+// JSON shows the cells decoded (one 0/1 per cell, row-major from the bottom row), not the
+// run-length code of the wire.
+template <>
+struct Fields<msg::MapRaster> {
+  static constexpr const char* name = "MapRaster";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("name", m.name);
+    v.field("origin_x", m.origin_x);
+    v.field("origin_y", m.origin_y);
+    v.field("resolution", m.resolution);
+    v.field("cols", m.cols);
+    v.field("rows", m.rows);
+    v.field("blocked", m.blocked);
+  }
+};
+
+template <>
 struct Fields<msg::WorldMap> {
   static constexpr const char* name = "WorldMap";
   template <typename V, typename M>
@@ -205,6 +242,8 @@ struct Fields<msg::WorldMap> {
     v.field("width", m.width);
     v.field("height", m.height);
     v.field("obstacles", m.obstacles);
+    v.field("polygons", m.polygons);
+    v.field("rasters", m.rasters);
   }
 };
 

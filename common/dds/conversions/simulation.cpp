@@ -1,5 +1,8 @@
 #include "common/dds/message_types.hpp"
 
+#include <algorithm>
+#include <vector>
+
 namespace autonomy::dds {
 
 void DdsType<msg::SpawnRequest>::to_c(const msg::SpawnRequest& v, C& out, Arena&) {
@@ -29,6 +32,42 @@ msg::SpawnReply DdsType<msg::SpawnReply>::from_c(const C& in) {
           from_c_str(in.reason)};
 }
 
+namespace {
+
+// Run-length code of a raster's cells (see MapRaster in idl/simulation.idl): alternating runs of
+// free and blocked cells, the first run free (possibly empty).
+std::vector<uint32_t> runs_of(const std::vector<uint8_t>& blocked) {
+  std::vector<uint32_t> runs;
+  uint8_t current = 0;
+  uint32_t length = 0;
+  for (const uint8_t cell : blocked) {
+    const uint8_t b = cell != 0 ? 1 : 0;
+    if (b != current) {
+      runs.push_back(length);
+      current = b;
+      length = 0;
+    }
+    ++length;
+  }
+  runs.push_back(length);
+  return runs;
+}
+
+// The cells of a run-length code; a code that does not add up to cols * rows is cut or padded
+// with free cells, so a bad sample cannot make a reader overrun or allocate without bound.
+std::vector<uint8_t> cells_of(const uint32_t* runs, uint32_t count, std::size_t cells) {
+  std::vector<uint8_t> blocked(cells, 0);
+  std::size_t at = 0;
+  for (uint32_t i = 0; i < count && at < cells; ++i) {
+    const std::size_t n = std::min<std::size_t>(runs[i], cells - at);
+    if (i % 2 == 1) std::fill_n(blocked.begin() + static_cast<std::ptrdiff_t>(at), n, uint8_t{1});
+    at += n;
+  }
+  return blocked;
+}
+
+}  // namespace
+
 void DdsType<msg::WorldMap>::to_c(const msg::WorldMap& v, C& out, Arena& arena) {
   out.name = c_str(v.name);
   out.width = v.width;
@@ -40,6 +79,36 @@ void DdsType<msg::WorldMap>::to_c(const msg::WorldMap& v, C& out, Arena& arena) 
     rects[i] = {r.min_x, r.min_y, r.max_x, r.max_y};
   }
   out.obstacles = {n, n, rects, false};
+
+  const uint32_t np = static_cast<uint32_t>(v.polygons.size());
+  auto* polygons = arena.allocate<autonomy_MapPolygon>(np);
+  for (uint32_t i = 0; i < np; ++i) {
+    const auto& p = v.polygons[i];
+    const uint32_t nv = static_cast<uint32_t>(p.vertices.size());
+    auto* vertices = arena.allocate<autonomy_MapPoint>(nv);
+    for (uint32_t k = 0; k < nv; ++k) vertices[k] = {p.vertices[k].x, p.vertices[k].y};
+    polygons[i].name = c_str(p.name);
+    polygons[i].vertices = {nv, nv, vertices, false};
+  }
+  out.polygons = {np, np, polygons, false};
+
+  const uint32_t nr = static_cast<uint32_t>(v.rasters.size());
+  auto* rasters = arena.allocate<autonomy_MapRaster>(nr);
+  for (uint32_t i = 0; i < nr; ++i) {
+    const auto& r = v.rasters[i];
+    const std::vector<uint32_t> runs = runs_of(r.blocked);
+    const uint32_t nruns = static_cast<uint32_t>(runs.size());
+    auto* buffer = arena.allocate<uint32_t>(nruns);
+    std::copy(runs.begin(), runs.end(), buffer);
+    rasters[i].name = c_str(r.name);
+    rasters[i].origin_x = r.origin_x;
+    rasters[i].origin_y = r.origin_y;
+    rasters[i].resolution = r.resolution;
+    rasters[i].cols = r.cols;
+    rasters[i].rows = r.rows;
+    rasters[i].runs = {nruns, nruns, buffer, false};
+  }
+  out.rasters = {nr, nr, rasters, false};
 }
 
 msg::WorldMap DdsType<msg::WorldMap>::from_c(const C& in) {
@@ -51,6 +120,30 @@ msg::WorldMap DdsType<msg::WorldMap>::from_c(const C& in) {
   for (uint32_t i = 0; i < in.obstacles._length; ++i) {
     const auto& r = in.obstacles._buffer[i];
     v.obstacles.push_back({r.min_x, r.min_y, r.max_x, r.max_y});
+  }
+  for (uint32_t i = 0; i < in.polygons._length; ++i) {
+    const auto& p = in.polygons._buffer[i];
+    msg::MapPolygon polygon{from_c_str(p.name), {}};
+    for (uint32_t k = 0; k < p.vertices._length; ++k) {
+      polygon.vertices.push_back({p.vertices._buffer[k].x, p.vertices._buffer[k].y});
+    }
+    v.polygons.push_back(std::move(polygon));
+  }
+  for (uint32_t i = 0; i < in.rasters._length; ++i) {
+    const auto& r = in.rasters._buffer[i];
+    msg::MapRaster raster{from_c_str(r.name), r.origin_x, r.origin_y, r.resolution, r.cols, r.rows, {}};
+    const std::size_t cells = static_cast<std::size_t>(r.cols) * r.rows;
+    std::size_t coded = 0;
+    for (uint32_t k = 0; k < r.runs._length; ++k) coded += r.runs._buffer[k];
+    // Allocate only what the runs describe: a sample claiming huge dimensions with few runs
+    // keeps its claimed size only if the runs cover it.
+    raster.blocked = cells_of(r.runs._buffer, r.runs._length, std::min(cells, coded));
+    if (raster.blocked.size() != cells) {
+      raster.cols = 0;  // inconsistent sample: readers see an empty raster rather than a wrong one
+      raster.rows = 0;
+      raster.blocked.clear();
+    }
+    v.rasters.push_back(std::move(raster));
   }
   return v;
 }

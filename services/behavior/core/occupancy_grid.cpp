@@ -38,6 +38,17 @@ OccupancyGrid::OccupancyGrid(const WorldMap& world, double resolution_m, double 
       throw std::invalid_argument("obstacle rectangles must be finite with min < max");
     }
   }
+  for (const auto& p : world.polygons) {
+    if (const auto problem = geometry::polygon_problem(p.vertices)) {
+      throw std::invalid_argument("polygon '" + p.name + "': " + *problem);
+    }
+  }
+  for (const auto& r : world.rasters) {
+    if (!r || !positive_finite(r->resolution_m()) || r->origin().yaw != 0.0 || !std::isfinite(r->origin().x) ||
+        !std::isfinite(r->origin().y)) {
+      throw std::invalid_argument("occupancy rasters must exist, have a positive resolution and no rotation");
+    }
+  }
 
   geometry_ = GridGeometry(cells_covering(world.width_m, resolution_m),
                            cells_covering(world.height_m, resolution_m), resolution_m);
@@ -59,17 +70,52 @@ OccupancyGrid::OccupancyGrid(const WorldMap& world, double resolution_m, double 
   // Visit only the cells under each grown obstacle's bounding box; the exact test is the distance
   // to the rectangle, so corners are rounded as they are for a circular robot.
   for (const auto& o : world.obstacles) {
-    const auto box = o.inflated(r);
-    const int c0 = std::max(0, static_cast<int>(std::floor(box.min_x / resolution_m)));
-    const int r0 = std::max(0, static_cast<int>(std::floor(box.min_y / resolution_m)));
-    const int c1 = std::min(geometry_.cols() - 1, static_cast<int>(std::floor(box.max_x / resolution_m)));
-    const int r1 = std::min(geometry_.rows() - 1, static_cast<int>(std::floor(box.max_y / resolution_m)));
-    for (int row = r0; row <= r1; ++row) {
-      for (int col = c0; col <= c1; ++col) {
-        if (geometry::distance(o, geometry_.centre({col, row})) <= r) {
-          blocked_[geometry_.index({col, row})] = 1;
-        }
+    block_cells_near(o.inflated(r), [&](const geometry::Vec2& c) { return geometry::distance(o, c) <= r; });
+  }
+  // A polygon blocks the cells whose centre is inside it or within r of one of its edges.
+  for (const auto& p : world.polygons) {
+    const auto& v = p.vertices;
+    block_cells_near(p.bounds().inflated(r), [&](const geometry::Vec2& c) {
+      if (geometry::polygon_contains(v, c)) return true;
+      for (std::size_t i = 0; i < v.size(); ++i) {
+        if (geometry::segment_distance(c, v[i], v[(i + 1) % v.size()]) <= r) return true;
       }
+      return false;
+    });
+  }
+  // A raster's blocked cells are squares. Inside a block of them only the cells under each square
+  // need marking; only squares on the block's border (a free or outside 4-neighbour) can be the
+  // nearest obstacle of a cell outside, so only they are grown by r.
+  for (const auto& raster : world.rasters) {
+    const grid::OccupancyRaster& m = *raster;
+    const double res = m.resolution_m();
+    const auto free_at = [&](int col, int row) { return !m.contains({col, row}) || !m.blocked({col, row}); };
+    for (int row = 0; row < m.height(); ++row) {
+      for (int col = 0; col < m.width(); ++col) {
+        if (!m.blocked({col, row})) continue;
+        const geometry::Rect square{m.origin().x + col * res, m.origin().y + row * res,
+                                    m.origin().x + (col + 1) * res, m.origin().y + (row + 1) * res};
+        const bool border = free_at(col - 1, row) || free_at(col + 1, row) || free_at(col, row - 1) ||
+                            free_at(col, row + 1);
+        const double grow = border ? r : 0.0;
+        block_cells_near(square.inflated(grow),
+                         [&](const geometry::Vec2& c) { return geometry::distance(square, c) <= grow; });
+      }
+    }
+  }
+}
+
+template <typename Blocks>
+void OccupancyGrid::block_cells_near(const geometry::Rect& box, Blocks&& blocks) {
+  const double res = geometry_.resolution_m();
+  const int c0 = std::max(0, static_cast<int>(std::floor(box.min_x / res)));
+  const int r0 = std::max(0, static_cast<int>(std::floor(box.min_y / res)));
+  const int c1 = std::min(geometry_.cols() - 1, static_cast<int>(std::floor(box.max_x / res)));
+  const int r1 = std::min(geometry_.rows() - 1, static_cast<int>(std::floor(box.max_y / res)));
+  for (int row = r0; row <= r1; ++row) {
+    for (int col = c0; col <= c1; ++col) {
+      auto& cell = blocked_[geometry_.index({col, row})];
+      if (cell == 0 && blocks(geometry_.centre({col, row}))) cell = 1;
     }
   }
 }

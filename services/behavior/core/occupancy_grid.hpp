@@ -1,5 +1,6 @@
 #pragma once
-// Which cells a robot's centre may occupy. The world's obstacles are grown by the inflation radius
+// Which cells a robot's centre may occupy. The world's obstacles (rectangles, polygons, raster
+// cells) are grown by the inflation radius
 // (robot radius plus a safety margin), so that the robot can be planned as a point: a cell is
 // blocked when its centre lies within that distance of an obstacle or of the world's border.
 //
@@ -45,6 +46,9 @@ class OccupancyGrid {
 
  private:
   OccupancyGrid() = default;
+  // Marks the cells under `box` whose centre `blocks(centre)` says is too close to an obstacle.
+  template <typename Blocks>
+  void block_cells_near(const geometry::Rect& box, Blocks&& blocks);
 
   GridGeometry geometry_;
   double width_m_ = 0.0;

@@ -1,9 +1,14 @@
 #pragma once
 // The static world as the behavior controller receives it (autonomy/map): a rectangle
-// [0, width] x [0, height] with axis-aligned obstacles. A plain value; the DDS node converts the
-// IDL sample into it at the edge.
+// [0, width] x [0, height] with obstacles of three kinds, as the scenario declared them:
+// axis-aligned rectangles, simple polygons (buildings, walls) and occupancy rasters (ROS maps;
+// blocked cells are obstacles, cells outside a raster are free). A plain value; the DDS node
+// converts the IDL sample into it at the edge. Rasters are shared: copies are cheap.
 #include "common/geometry/geometry.hpp"
+#include "common/geometry/shapes.hpp"
+#include "common/grid/occupancy_raster.hpp"
 
+#include <memory>
 #include <vector>
 
 namespace autonomy::behavior {
@@ -12,6 +17,8 @@ struct WorldMap {
   double width_m = 0.0;
   double height_m = 0.0;
   std::vector<geometry::Rect> obstacles;
+  std::vector<geometry::Polygon> polygons;
+  std::vector<std::shared_ptr<const grid::OccupancyRaster>> rasters;  // origin yaw 0
 };
 
 }  // namespace autonomy::behavior

@@ -73,11 +73,26 @@ TEST(MsgJson, EnumsAreLowerCaseNames) {
   EXPECT_EQ(to_json(spawn_reply())["status"], "accepted");
 }
 
+TEST(MsgJson, MapShapesRoundTripWithRasterCellsDecoded) {
+  msg::WorldMap m = world_map();
+  m.polygons = {{"hall", {{1.0, 2.0}, {3.0, 2.0}, {2.0, 4.5}}}};
+  m.rasters = {{"floor.yaml", -1.0, 0.5, 0.25, 3, 1, {0, 1, 1}}};
+  const Json j = to_json(m);
+  EXPECT_EQ(j["polygons"][0]["vertices"][2].dump(), R"({"x":2.0,"y":4.5})");
+  EXPECT_EQ(j["rasters"][0]["blocked"].dump(), "[0,1,1]");
+  const auto back = from_json<msg::WorldMap>(j);
+  ASSERT_EQ(back.polygons.size(), 1u);
+  EXPECT_EQ(back.polygons[0].vertices[2].y, 4.5);
+  ASSERT_EQ(back.rasters.size(), 1u);
+  EXPECT_EQ(back.rasters[0].blocked, (std::vector<uint8_t>{0, 1, 1}));
+  EXPECT_EQ(back.rasters[0].origin_x, -1.0);
+}
+
 TEST(MsgJson, FieldsKeepTheirTypesAndOrder) {
   const Json j = to_json(world_map());
   EXPECT_EQ(j.dump(),
             R"({"name":"office","width":60.0,"height":20.0,"obstacles":[{"min_x":0.0,"min_y":0.0,"max_x":1.0,)"
-            R"("max_y":1.0},{"min_x":2.5,"min_y":3.5,"max_x":4.5,"max_y":5.5}]})");
+            R"("max_y":1.0},{"min_x":2.5,"min_y":3.5,"max_x":4.5,"max_y":5.5}],"polygons":[],"rasters":[]})");
   EXPECT_TRUE(to_json(heartbeat())["pid"].is_number_integer());
   EXPECT_TRUE(to_json(robot_state())["in_collision"].is_boolean());
 }

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <memory>
 #include <stdexcept>
 
 namespace autonomy::behavior {
@@ -47,6 +49,61 @@ TEST(OccupancyGrid, InflationIsADistanceSoCornersAreRounded) {
   EXPECT_FALSE(grid.blocked({1, 1}));  // centre (1.5, 1.5) is 0.707 m from its corner
   EXPECT_FALSE(grid.blocked({4, 4}));
   EXPECT_TRUE(grid.blocked({0, 3}));  // border: centre x = 0.5 < 0.6
+}
+
+TEST(OccupancyGrid, PolygonBlocksItsInsideAndCellsWithinTheRadiusOfAnEdge) {
+  // A right triangle (2,4)-(6,4)-(2,8): its hypotenuse is the line x + y = 10.
+  WorldMap world{10.0, 10.0};
+  world.polygons.push_back({"wedge", {Vec2{2.0, 4.0}, Vec2{6.0, 4.0}, Vec2{2.0, 8.0}}});
+  const OccupancyGrid grid(world, 1.0, 0.6);
+  EXPECT_TRUE(grid.blocked({2, 4}));   // centre (2.5, 4.5): inside
+  EXPECT_TRUE(grid.blocked({4, 5}));   // (4.5, 5.5): on the hypotenuse
+  EXPECT_TRUE(grid.blocked({3, 3}));   // (3.5, 3.5): 0.5 m below the bottom edge
+  EXPECT_FALSE(grid.blocked({3, 2}));  // (3.5, 2.5): 1.5 m below it
+  // (5.5, 5.5) lies 0.707 m beyond the hypotenuse: outside the 0.6 m radius.
+  EXPECT_FALSE(grid.blocked({5, 5}));
+  EXPECT_FALSE(grid.blocked({6, 8}));
+  // A larger radius reaches it.
+  EXPECT_TRUE(OccupancyGrid(world, 1.0, 0.75).blocked({5, 5}));
+}
+
+TEST(OccupancyGrid, RasterCellsBlockLikeTheSameSquaresGivenAsRectangles) {
+  // A random 20 x 15 raster of 0.5 m cells placed at (1.5, 2.0): growing its cells must give the
+  // same grid as growing one rectangle per blocked cell (the interior shortcut changes nothing).
+  auto raster = std::make_shared<grid::OccupancyRaster>(20, 15, 0.5, grid::RasterOrigin{1.5, 2.0, 0.0});
+  WorldMap as_rects{14.0, 11.0};
+  std::uint32_t state = 12345;
+  for (int row = 0; row < 15; ++row) {
+    for (int col = 0; col < 20; ++col) {
+      state = state * 1103515245u + 12345u;
+      if ((state >> 16) % 3 != 0) continue;  // about a third blocked, in clumps and alone
+      raster->set_blocked({col, row}, true);
+      as_rects.obstacles.push_back(Rect{1.5 + col * 0.5, 2.0 + row * 0.5, 2.0 + col * 0.5, 2.5 + row * 0.5});
+    }
+  }
+  WorldMap as_raster{14.0, 11.0};
+  as_raster.rasters.push_back(raster);
+  for (const double inflation : {0.0, 0.3, 0.8}) {
+    const OccupancyGrid a(as_raster, 0.25, inflation);
+    const OccupancyGrid b(as_rects, 0.25, inflation);
+    int blocked = 0;
+    for (int row = 0; row < a.geometry().rows(); ++row) {
+      for (int col = 0; col < a.geometry().cols(); ++col) {
+        ASSERT_EQ(a.blocked({col, row}), b.blocked({col, row})) << col << "," << row << " at " << inflation;
+        blocked += a.blocked({col, row}) ? 1 : 0;
+      }
+    }
+    EXPECT_GT(blocked, 100);
+  }
+}
+
+TEST(OccupancyGrid, RejectsACrossingPolygonAndARotatedRaster) {
+  WorldMap bow{10.0, 10.0};
+  bow.polygons.push_back({"bow", {Vec2{1.0, 1.0}, Vec2{5.0, 5.0}, Vec2{5.0, 1.0}, Vec2{1.0, 5.0}}});
+  EXPECT_THROW(OccupancyGrid(bow, 1.0, 0.0), std::invalid_argument);
+  WorldMap turned{10.0, 10.0};
+  turned.rasters.push_back(std::make_shared<grid::OccupancyRaster>(2, 2, 1.0, grid::RasterOrigin{0.0, 0.0, 0.5}));
+  EXPECT_THROW(OccupancyGrid(turned, 1.0, 0.0), std::invalid_argument);
 }
 
 TEST(OccupancyGrid, OutsideTheGridCountsAsBlocked) {

@@ -1,30 +1,30 @@
-#include "simulator/core/shapes.hpp"
+#include "common/geometry/shapes.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace autonomy::sim {
+namespace autonomy::geometry {
 
 namespace {
 
 // Orientation of c relative to a-b with a relative tolerance: +1 left, -1 right, 0 collinear.
-int orientation(const geometry::Vec2& a, const geometry::Vec2& b, const geometry::Vec2& c) {
+int orientation(const Vec2& a, const Vec2& b, const Vec2& c) {
   const double v = cross(b - a, c - a);
   const double scale = (b - a).norm() * (c - a).norm();
   if (std::abs(v) <= 1e-12 * scale) return 0;
   return v > 0.0 ? 1 : -1;
 }
 
-bool on_segment(const geometry::Vec2& a, const geometry::Vec2& b, const geometry::Vec2& p) {
+bool on_segment(const Vec2& a, const Vec2& b, const Vec2& p) {
   return std::min(a.x(), b.x()) <= p.x() && p.x() <= std::max(a.x(), b.x()) &&
          std::min(a.y(), b.y()) <= p.y() && p.y() <= std::max(a.y(), b.y());
 }
 
 }  // namespace
 
-geometry::Rect Polygon::bounds() const {
-  geometry::Rect r{kNoHit, kNoHit, -kNoHit, -kNoHit};
-  for (const geometry::Vec2& v : vertices) {
+Rect Polygon::bounds() const {
+  Rect r{kNoHit, kNoHit, -kNoHit, -kNoHit};
+  for (const Vec2& v : vertices) {
     r.min_x = std::min(r.min_x, v.x());
     r.min_y = std::min(r.min_y, v.y());
     r.max_x = std::max(r.max_x, v.x());
@@ -33,8 +33,8 @@ geometry::Rect Polygon::bounds() const {
   return r;
 }
 
-bool segments_intersect(const geometry::Vec2& a, const geometry::Vec2& b, const geometry::Vec2& c,
-                        const geometry::Vec2& d) {
+bool segments_intersect(const Vec2& a, const Vec2& b, const Vec2& c,
+                        const Vec2& d) {
   const int o1 = orientation(a, b, c);
   const int o2 = orientation(a, b, d);
   const int o3 = orientation(c, d, a);
@@ -44,10 +44,10 @@ bool segments_intersect(const geometry::Vec2& a, const geometry::Vec2& b, const 
          (o3 == 0 && on_segment(c, d, a)) || (o4 == 0 && on_segment(c, d, b));
 }
 
-std::optional<std::string> polygon_problem(const std::vector<geometry::Vec2>& v) {
+std::optional<std::string> polygon_problem(const std::vector<Vec2>& v) {
   const std::size_t n = v.size();
   if (n < 3) return "has " + std::to_string(n) + " vertices; a polygon needs at least 3";
-  for (const geometry::Vec2& p : v) {
+  for (const Vec2& p : v) {
     if (!std::isfinite(p.x()) || !std::isfinite(p.y())) return std::string("has a vertex that is not finite");
   }
   double twice_area = 0.0;
@@ -57,17 +57,17 @@ std::optional<std::string> polygon_problem(const std::vector<geometry::Vec2>& v)
     if (v[i] == v[(i + 1) % n]) return "repeats vertex " + std::to_string(i);
   }
   for (std::size_t i = 0; i < n; ++i) {
-    const geometry::Vec2& a = v[i];
-    const geometry::Vec2& b = v[(i + 1) % n];
+    const Vec2& a = v[i];
+    const Vec2& b = v[(i + 1) % n];
     for (std::size_t j = i + 1; j < n; ++j) {
       const bool adjacent = j == i + 1 || (i == 0 && j == n - 1);
-      const geometry::Vec2& c = v[j];
-      const geometry::Vec2& d = v[(j + 1) % n];
+      const Vec2& c = v[j];
+      const Vec2& d = v[(j + 1) % n];
       if (adjacent) {
         // Neighbours share a vertex; they must not fold back onto each other.
-        const geometry::Vec2& shared = j == i + 1 ? b : a;
-        const geometry::Vec2& p = j == i + 1 ? a : b;
-        const geometry::Vec2& q = j == i + 1 ? d : c;
+        const Vec2& shared = j == i + 1 ? b : a;
+        const Vec2& p = j == i + 1 ? a : b;
+        const Vec2& q = j == i + 1 ? d : c;
         if (orientation(p, shared, q) == 0 && (p - shared).dot(q - shared) > 0.0) {
           return "edges " + std::to_string(i) + " and " + std::to_string(j) + " overlap";
         }
@@ -81,7 +81,7 @@ std::optional<std::string> polygon_problem(const std::vector<geometry::Vec2>& v)
   return std::nullopt;
 }
 
-bool polygon_contains(const std::vector<geometry::Vec2>& v, const geometry::Vec2& p) {
+bool polygon_contains(const std::vector<Vec2>& v, const Vec2& p) {
   bool inside = false;
   for (std::size_t i = 0, j = v.size() - 1; i < v.size(); j = i++) {
     if ((v[i].y() > p.y()) != (v[j].y() > p.y()) &&
@@ -92,14 +92,14 @@ bool polygon_contains(const std::vector<geometry::Vec2>& v, const geometry::Vec2
   return inside;
 }
 
-double segment_distance(const geometry::Vec2& p, const geometry::Vec2& a, const geometry::Vec2& b) {
-  const geometry::Vec2 ab = b - a;
+double segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 ab = b - a;
   const double len2 = ab.squaredNorm();
   const double t = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
   return (p - (a + t * ab)).norm();
 }
 
-bool disc_overlaps_polygon(const std::vector<geometry::Vec2>& v, const geometry::Vec2& center,
+bool disc_overlaps_polygon(const std::vector<Vec2>& v, const Vec2& center,
                            double radius) {
   for (std::size_t i = 0, j = v.size() - 1; i < v.size(); j = i++) {
     if (segment_distance(center, v[j], v[i]) < radius) return true;
@@ -107,10 +107,10 @@ bool disc_overlaps_polygon(const std::vector<geometry::Vec2>& v, const geometry:
   return polygon_contains(v, center);
 }
 
-double ray_segment(const geometry::Vec2& o, const geometry::Vec2& dir, const geometry::Vec2& a,
-                   const geometry::Vec2& b) {
-  const geometry::Vec2 e = b - a;
-  const geometry::Vec2 w = a - o;
+double ray_segment(const Vec2& o, const Vec2& dir, const Vec2& a,
+                   const Vec2& b) {
+  const Vec2 e = b - a;
+  const Vec2 w = a - o;
   const double denom = cross(dir, e);
   if (denom == 0.0) {
     // Parallel: a hit only when collinear, at the nearer endpoint ahead of the origin.
@@ -127,9 +127,9 @@ double ray_segment(const geometry::Vec2& o, const geometry::Vec2& dir, const geo
   return t;
 }
 
-double ray_circle(const geometry::Vec2& o, const geometry::Vec2& dir, const geometry::Vec2& center,
+double ray_circle(const Vec2& o, const Vec2& dir, const Vec2& center,
                   double radius) {
-  const geometry::Vec2 m = o - center;
+  const Vec2 m = o - center;
   const double c = m.squaredNorm() - radius * radius;
   if (c <= 0.0) return 0.0;
   const double b = m.dot(dir);
@@ -139,4 +139,4 @@ double ray_circle(const geometry::Vec2& o, const geometry::Vec2& dir, const geom
   return -b - std::sqrt(disc);
 }
 
-}  // namespace autonomy::sim
+}  // namespace autonomy::geometry

@@ -1,0 +1,30 @@
+#include "simulator/dds/map_message.hpp"
+
+namespace autonomy::sim {
+
+msg::WorldMap map_message(const WorldSpec& spec) {
+  msg::WorldMap m{spec.name, spec.width, spec.height, spec.obstacles, {}, {}};
+  for (const Polygon& p : spec.polygons) {
+    msg::MapPolygon out{p.name, {}};
+    for (const auto& v : p.vertices) out.vertices.push_back({v.x(), v.y()});
+    m.polygons.push_back(std::move(out));
+  }
+  for (const RasterLayer& layer : spec.rasters) {
+    const grid::OccupancyRaster& r = *layer.raster;
+    msg::MapRaster out{layer.name,
+                       r.origin().x,
+                       r.origin().y,
+                       r.resolution_m(),
+                       static_cast<uint32_t>(r.width()),
+                       static_cast<uint32_t>(r.height()),
+                       {}};
+    out.blocked.resize(r.cell_count());
+    for (int row = 0; row < r.height(); ++row) {
+      for (int col = 0; col < r.width(); ++col) out.blocked[r.index({col, row})] = r.blocked({col, row}) ? 1 : 0;
+    }
+    m.rasters.push_back(std::move(out));
+  }
+  return m;
+}
+
+}  // namespace autonomy::sim
