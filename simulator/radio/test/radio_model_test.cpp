@@ -1,4 +1,5 @@
 #include "simulator/radio/radio_model.hpp"
+#include "simulator/radio/test/hand_parameters.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,17 +13,7 @@ namespace {
 using geometry::Rect;
 using geometry::Vec2;
 
-RadioParameters hand_parameters() {
-  RadioParameters p;  // the defaults, spelled out for the hand computations below
-  p.tx_power_dbm = 20.0;
-  p.reference_distance_m = 1.0;
-  p.reference_loss_db = 40.05;
-  p.path_loss_exponent = 3.0;
-  p.receiver_sensitivity_dbm = -90.0;
-  p.wall_loss_db = 12.0;
-  p.inside_loss_db_per_m = 0.5;
-  return p;
-}
+using test::hand_parameters;
 
 TEST(FreeSpace, ReferenceLossIsFriisAtOneMetreAnd2400MHz) {
   // 20 log10(4 pi * 1 m * 2.4e9 Hz / 299792458 m/s) = 20 log10(100.6066) = 40.0520

@@ -3,6 +3,7 @@
 // walk against the slow reference on random maps and segments.
 #include "simulator/radio/radio_model.hpp"
 #include "simulator/radio/raster_attenuator.hpp"
+#include "simulator/radio/test/hand_parameters.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,17 +17,7 @@ namespace {
 
 using geometry::Vec2;
 
-RadioParameters hand_parameters() {
-  RadioParameters p;  // the defaults, spelled out for the hand computations below
-  p.tx_power_dbm = 20.0;
-  p.reference_distance_m = 1.0;
-  p.reference_loss_db = 40.05;
-  p.path_loss_exponent = 3.0;
-  p.receiver_sensitivity_dbm = -90.0;
-  p.wall_loss_db = 12.0;
-  p.inside_loss_db_per_m = 0.5;
-  return p;
-}
+using test::hand_parameters;
 
 // Blocks columns [c0, c1] of every row.
 void block_columns(grid::OccupancyRaster& g, int c0, int c1) {
