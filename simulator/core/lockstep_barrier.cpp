@@ -38,6 +38,7 @@ LockstepBarrier::AckOutcome LockstepBarrier::on_ack(const std::string& participa
 
 bool LockstepBarrier::on_command(const std::string& source, Tick tick) {
   if (stale(tick)) return false;
+  if (members_.count(source) == 0 && dropped_.count(source) == 0) return false;
   ++ticks_[tick].received[source];
   return true;
 }

@@ -219,10 +219,10 @@ void SimulatorNode::on_commands(std::vector<dds::Sample<msg::VelocityCommand>> s
   for (auto& s : samples) {
     if (!s.valid) continue;
     msg::VelocityCommand& c = s.value;
-    const auto members = barrier_.participants();
-    const bool synchronised = lockstep() && c.tick >= tick_ &&
-                              std::binary_search(members.begin(), members.end(), c.source);
-    if (synchronised && barrier_.on_command(c.source, c.tick)) {
+    // The barrier counts commands of its participants, including dropped ones that may be about
+    // to rejoin; others (tools, unregistered processes) are applied at the next step.
+    const bool synchronised = lockstep() && c.tick >= tick_ && barrier_.on_command(c.source, c.tick);
+    if (synchronised) {
       commands_by_tick_[c.tick].push_back(std::move(c));
     } else {
       unsynchronised_commands_.push_back(std::move(c));

@@ -16,6 +16,7 @@
 //     68    ShutdownTest.SigtermStopsSimulatorAndBehaviorCleanly
 //     69    SystemTest.DeterminismSameRunGivesIdenticalTrajectory
 //     70    SystemTest.SpawnBadPoseIsRejected
+//     59    SystemTest.LockstepStalledBehaviorRejoinsAndStaysInStep
 // (ctest names them integration.<suite>.<test>.)
 #include "tests/support/process_test.hpp"
 
@@ -31,6 +32,7 @@
 #include <list>
 #include <memory>
 #include <sstream>
+#include <thread>
 
 namespace autonomy::test {
 namespace {
@@ -49,6 +51,7 @@ enum Domain : int {
   kDomainSigterm = 68,
   kDomainDeterminism = 69,
   kDomainBadSpawn = 70,
+  kDomainStalledBehavior = 59,
 };
 
 // The demo scenario (deploy/scenarios/demo.pbtxt), built into the simulator.
@@ -417,6 +420,64 @@ TEST_F(SystemTest, LockstepKilledBehaviorDoesNotHangSimulator) {
   const auto last = *last_state_of(states, "r1");
   EXPECT_LE(std::hypot(last.x - kGoalX, last.y - kGoalY), kGoalTolerance + 0.05);
   expect_states_consistent(states.all(), "r1");
+}
+
+// A behavior frozen (SIGSTOP) past the ack timeout is dropped; once it runs again its next ack
+// rejoins it and it stays in step. Its command for the rejoining tick may arrive before that ack
+// (this once left the barrier owing a command: dropped again every tick, one tick per 2 s).
+TEST_F(SystemTest, LockstepStalledBehaviorRejoinsAndStaysInStep) {
+  join(kDomainStalledBehavior);
+  Recorder<msg::Heartbeat> beats(participant(), dds::topics::heartbeat);
+  Recorder<msg::SimClock> clock(participant(), dds::topics::clock);
+  Recorder<msg::SimulatorStatus> sim_status(participant(), dds::topics::sim_status);
+  auto poll_all = [&] {
+    clock.poll();
+    sim_status.poll();
+  };
+  // Wandering forever keeps the behavior commanding every tick, so every ack announces a command.
+  {
+    std::ofstream mission(dir().file("wander.pbtxt"));
+    mission << "name: \"wander\" robot: \"r1\" initial_state: \"w\" states { name: \"w\" wander {} }\n";
+  }
+  // The demo world with a 0.5 s ack timeout: the freeze below must outlast it but not the DDS
+  // lease (2 s in loopback.xml), after which the process would count as gone, not slow.
+  {
+    std::string scenario = read_file(std::string(AUTONOMY_SOURCE_DIR) + "/deploy/scenarios/demo.pbtxt");
+    const std::string from = "ack_timeout_s: 2.0";
+    ASSERT_NE(scenario.find(from), std::string::npos);
+    scenario.replace(scenario.find(from), from.size(), "ack_timeout_s: 0.5");
+    std::ofstream(dir().file("scenario.pbtxt")) << scenario;
+  }
+  start_simulator({"--config", dir().file("scenario.pbtxt"), "--wait-for", "behavior/r1"});
+  auto& behavior = start_behavior("r1", {"--mission", dir().file("wander.pbtxt")});
+  ASSERT_TRUE(await_ready(beats, behavior));
+  ASSERT_TRUE(await("lockstep running with behavior/r1", [&] {
+    poll_all();
+    return last_tick(clock) > 20;
+  }));
+
+  behavior.signal(SIGSTOP);
+  std::this_thread::sleep_for(1200ms);
+  behavior.signal(SIGCONT);
+  ASSERT_TRUE(await("the simulator to have dropped the frozen behavior/r1", [&] {
+    poll_all();
+    const auto s = last_status(sim_status);
+    return s && s->participants_dropped == 1;
+  }));
+  ASSERT_TRUE(await("behavior/r1 rejoined", [&] {
+    poll_all();
+    const auto s = last_status(sim_status);
+    return s && contains(s->lockstep_participants, "behavior/r1");
+  }));
+  const int64_t tick_at_rejoin = last_tick(clock);
+  ASSERT_TRUE(await("200 more ticks in lockstep with behavior/r1", [&] {
+    poll_all();
+    return last_tick(clock) > tick_at_rejoin + 200;
+  }));
+  const auto s = last_status(sim_status);
+  ASSERT_TRUE(s.has_value());
+  EXPECT_EQ(s->participants_dropped, 1u) << "dropped again after rejoining";
+  EXPECT_TRUE(contains(s->lockstep_participants, "behavior/r1"));
 }
 
 // 6. Bad velocity commands are rejected with a reason and counted; the robot does not move.

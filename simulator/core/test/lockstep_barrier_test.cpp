@@ -79,6 +79,27 @@ TEST_F(Barrier, DroppedParticipantRejoinsByAckingTheCurrentTick) {
   EXPECT_TRUE(barrier.complete(2));
 }
 
+// The order a dropped participant's samples arrive in when it wakes up: the command for the
+// current tick first, then the ack that rejoins it and announces that command.
+TEST_F(Barrier, DroppedParticipantsCommandBeforeItsRejoiningAckCounts) {
+  EXPECT_EQ(barrier.on_ack("a", 1, 0), Ack::Counted);
+  ASSERT_EQ(barrier.expire(1, 103.0, 2.0), Names{"b"});
+  barrier.end_tick(1);
+  barrier.begin_tick(2, 103.0);
+  EXPECT_EQ(barrier.on_ack("a", 2, 0), Ack::Counted);
+  EXPECT_TRUE(barrier.on_command("b", 2));
+  EXPECT_EQ(barrier.on_ack("b", 2, 1), Ack::Rejoined);
+  EXPECT_TRUE(barrier.complete(2));
+}
+
+TEST_F(Barrier, CommandsFromStrangersAndRemovedParticipantsAreNotCounted) {
+  barrier.remove("b");
+  EXPECT_FALSE(barrier.on_command("b", 1));
+  EXPECT_FALSE(barrier.on_command("stranger", 1));
+  EXPECT_EQ(barrier.on_ack("a", 1, 0), Ack::Counted);
+  EXPECT_TRUE(barrier.complete(1));
+}
+
 TEST_F(Barrier, OldAcksAndCommandsAreIgnored) {
   barrier.end_tick(1);
   barrier.begin_tick(2, 100.1);
