@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   std::string mode_override;
   std::string metrics;
   int radio_period = 1;
+  bool stop_when_finished = false;
   return service::run_service(
       argc, argv, "simulator", "World and clock simulator: robots, obstacles, lockstep or paced time",
       service::InstanceFlag::Instance,
@@ -33,6 +34,8 @@ int main(int argc, char** argv) {
         app.add_option("--radio-period", radio_period, "Recompute the radio link table every N ticks")
             ->check(CLI::PositiveNumber)
             ->option_text("N (1)");
+        app.add_flag("--stop-when-finished", stop_when_finished,
+                     "Stop once every robot reports its mission finished (or its goal reached)");
         app.add_option("--mode", mode_override, "Override the scenario's clock mode")
             ->check(CLI::IsMember({"lockstep", "paced"}));
         app.footer("Without --config the built-in demo scenario (deploy/scenarios/demo.pbtxt) runs.");
@@ -57,6 +60,7 @@ int main(int argc, char** argv) {
         run.picture_svg = picture;
         run.metrics_prefix = metrics;
         run.radio_period_ticks = radio_period;
+        run.stop_when_finished = stop_when_finished;
         return std::make_unique<sim::SimulatorNode>(service, std::move(*loaded.scenario), run);
       });
 }

@@ -324,7 +324,19 @@ void SimulatorNode::advance() {
     finished_ = true;
     spdlog::info("reached tick {}, the configured end of the run", tick_);
     service_.stop();
+  } else if (options_.stop_when_finished && every_robot_finished()) {
+    finished_ = true;
+    spdlog::info("every robot finished at tick {}: end of the run", tick_);
+    service_.stop();
   }
+}
+
+bool SimulatorNode::every_robot_finished() const {
+  const std::vector<RobotStatus> robots = world_.robots();
+  return !robots.empty() && std::all_of(robots.begin(), robots.end(), [&](const RobotStatus& r) {
+    const auto reached = goal_reached_.find(r.id);
+    return reached != goal_reached_.end() && reached->second;
+  });
 }
 
 void SimulatorNode::apply_commands(const std::vector<msg::VelocityCommand>& commands) {

@@ -48,6 +48,9 @@ struct SimulatorRunOptions {
   // from its first tick.
   std::vector<std::string> wait_for_participants;
   std::optional<int64_t> max_ticks;  // stop the service after this tick
+  // Stop the service once every robot in the world reports its mission finished (or its goal
+  // reached), so that an experiment's run time is its mission time.
+  bool stop_when_finished = false;
   std::string trajectory_csv;         // tick,time_s,robot,x,y,theta per robot per tick, if set
   std::string picture_svg;            // an SVG picture of the run written at exit, if set
   // Metrics (simulator/report/run_metrics.hpp) written at exit to PREFIX.csv and PREFIX.json.
@@ -78,6 +81,7 @@ class SimulatorNode {
   bool holding_start() const;
   void advance_while_complete();
   void advance();  // applies commands, steps the world, opens the next tick
+  bool every_robot_finished() const;  // the world has robots and each reported finished
   void apply_commands(const std::vector<msg::VelocityCommand>& commands);
   void handle_spawns();
   void open_tick();  // publishes state and clock of tick_, starts the barrier's tick

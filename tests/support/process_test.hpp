@@ -3,7 +3,7 @@
 // observer participant, and the project's programs started as child processes that are killed
 // and reaped at the end whatever happens (their output tails are printed when the test failed).
 // Needs AUTONOMY_SOURCE_DIR, AUTONOMY_SIMULATOR_BIN and AUTONOMY_BEHAVIOR_BIN from CMake.
-#include "tests/support/child_process.hpp"
+#include "tests/support/test_dir.hpp"
 #include "tests/support/dds_observer.hpp"
 
 #include <gtest/gtest.h>

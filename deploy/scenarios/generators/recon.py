@@ -23,19 +23,36 @@ def f(v):
     return f"{v:g}"
 
 
+def attenuating_areas():
+    """The alleys and the parked cars: [(name, (x0, y0, x1, y1), dB/m, entry dB)]. The mission
+    generator (deploy/missions/generators/recon_missions.py) uses the same rectangles."""
+    areas = []
+    for side, xs in (("west", LEFT_X), ("east", RIGHT_X)):
+        for i in range(len(xs) - 1):   # north-south alleys between blocks
+            areas.append((f"alley-{side}-ns-{i}", (xs[i][1], BLOCK_Y[0][0], xs[i + 1][0], BLOCK_Y[-1][1]), 1.5, 6.0))
+        for j in range(len(BLOCK_Y) - 1):   # east-west alleys
+            areas.append((f"alley-{side}-ew-{j}", (xs[0][0], BLOCK_Y[j][1], xs[-1][1], BLOCK_Y[j + 1][0]), 1.5, 6.0))
+    areas.append(("parked-cars-west", (STREET[0], 60, STREET[0] + 3, 240), 2.0, 3.0))
+    areas.append(("parked-cars-east", (STREET[1] - 3, 60, STREET[1], 240), 2.0, 3.0))
+    return areas
+
+
 def main():
     buildings = []  # (name, vertices)
     for side, xs in (("west", LEFT_X), ("east", RIGHT_X)):
         for j, (y0, y1) in enumerate(BLOCK_Y):
             for i, (x0, x1) in enumerate(xs):
                 name = f"{side}-{j}-{i}"
-                if (i + j) % 3 == 1:   # an L-shaped building: the corner away from the street cut out
+                if (i + j) % 3 == 1:
+                    # An L-shaped building: the north corner away from the street cut out. The yard
+                    # opens towards the goal, so it is no box canyon for a robot heading north
+                    # (a yard opening south traps a purely reactive robot for good).
                     cut_x = x0 + (x1 - x0) * 0.5
                     cut_y = y0 + (y1 - y0) * 0.5
                     if side == "west":
-                        v = [(x0, cut_y), (cut_x, cut_y), (cut_x, y0), (x1, y0), (x1, y1), (x0, y1)]
+                        v = [(x0, y0), (x1, y0), (x1, y1), (cut_x, y1), (cut_x, cut_y), (x0, cut_y)]
                     else:
-                        v = [(x0, y0), (cut_x, y0), (cut_x, cut_y), (x1, cut_y), (x1, y1), (x0, y1)]
+                        v = [(x0, y0), (x1, y0), (x1, cut_y), (cut_x, cut_y), (cut_x, y1), (x0, y1)]
                 else:
                     v = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
                 buildings.append((name, v))
@@ -65,14 +82,7 @@ def main():
                  "image: recon.pgm\nresolution: 1.0\norigin: [0.0, 0.0, 0.0]\n"
                  "occupied_thresh: 0.65\nfree_thresh: 0.196\nnegate: 0\n")
 
-    areas = []  # (name, (x0, y0, x1, y1), dB/m, entry dB)
-    for side, xs in (("west", LEFT_X), ("east", RIGHT_X)):
-        for i in range(len(xs) - 1):   # north-south alleys between blocks
-            areas.append((f"alley-{side}-ns-{i}", (xs[i][1], BLOCK_Y[0][0], xs[i + 1][0], BLOCK_Y[-1][1]), 1.5, 6.0))
-        for j in range(len(BLOCK_Y) - 1):   # east-west alleys
-            areas.append((f"alley-{side}-ew-{j}", (xs[0][0], BLOCK_Y[j][1], xs[-1][1], BLOCK_Y[j + 1][0]), 1.5, 6.0))
-    areas.append(("parked-cars-west", (STREET[0], 60, STREET[0] + 3, 240), 2.0, 3.0))
-    areas.append(("parked-cars-east", (STREET[1] - 3, 60, STREET[1], 240), 2.0, 3.0))
+    areas = attenuating_areas()
 
     out = ["""# The reconnaissance area of the robot-teams paper (internalized-plans-robot-teams.txt,
 # section 4): 250 x 250 m at 1 m. Robots start along the bottom edge in a 250 x 50 m open area,

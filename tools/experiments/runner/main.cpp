@@ -1,96 +1,49 @@
 // experiment_runner: the six configurations of Wagner & Arkin's Table 1, N trials each, through
-// the real processes (simulator + three behavior controllers) over DDS in lockstep. Writes
-// OUT/trials.csv (one row per trial), OUT/report.md (mean ± sd, Welch t-tests) and per trial the
-// simulator's metrics (OUT/<cfg>-<trial>.json/.csv) and picture (OUT/<cfg>-<trial>.svg).
-#include "tools/experiments/stats/report.hpp"
+// the real processes (simulator + three behavior controllers) over DDS in lockstep. Trials run
+// several at a time, each on a DDS domain of its own. Writes OUT/trials.csv (one row per trial, in
+// trial order), OUT/report.md (mean ± sd, Welch t-tests, a typical run's picture per
+// configuration) and per trial the simulator's metrics and picture (OUT/<cfg>-<trial>.json/.svg).
+#include "tools/experiments/runner/trial.hpp"
 
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
-
-#include <signal.h>
-#include <sys/prctl.h>
-#include <sys/wait.h>
-#include <fcntl.h>
-#include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <iostream>
+#include <mutex>
+#include <optional>
 #include <random>
-#include <regex>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
 
 namespace fs = std::filesystem;
+using autonomy::experiments::TrialSetup;
 using autonomy::stats::TrialRecord;
 
 namespace {
 
-const std::vector<std::string> kRobots = {"r1", "r2", "r3"};
+struct PlannedTrial {
+  std::string configuration;
+  int trial = 0;
+  uint64_t seed = 0;
+};
 
-// A started child: stdout and stderr into `log`, SIGKILL when the runner dies.
-pid_t spawn(const std::string& program, const std::vector<std::string>& args,
-            const std::string& log) {
-  std::vector<std::string> argv_s = {program};
-  argv_s.insert(argv_s.end(), args.begin(), args.end());
-  const pid_t parent = getpid();
-  const pid_t pid = fork();
-  if (pid < 0) throw std::runtime_error("fork failed");
-  if (pid == 0) {
-    prctl(PR_SET_PDEATHSIG, SIGKILL);
-    if (getppid() != parent) _exit(127);
-    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (fd >= 0) {
-      dup2(fd, 1);
-      dup2(fd, 2);
-      close(fd);
-    }
-    std::vector<char*> argv;
-    for (auto& a : argv_s) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    execv(program.c_str(), argv.data());
-    std::perror(("exec " + program).c_str());
-    _exit(127);
-  }
-  return pid;
-}
-
-// Waits up to `timeout` for pid; returns true with the raw status when it ended.
-bool wait_for(pid_t pid, std::chrono::seconds timeout, int* status) {
-  const auto deadline = std::chrono::steady_clock::now() + timeout;
-  while (true) {
-    const pid_t r = waitpid(pid, status, WNOHANG);
-    if (r == pid) return true;
-    if (r < 0) return true;
-    if (std::chrono::steady_clock::now() >= deadline) return false;
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  }
-}
-
-void stop(pid_t pid) {
-  int status = 0;
-  if (waitpid(pid, &status, WNOHANG) != 0) return;
-  kill(pid, SIGTERM);
-  if (!wait_for(pid, std::chrono::seconds(3), &status)) {
-    kill(pid, SIGKILL);
-    waitpid(pid, &status, 0);
-  }
-}
-
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p);
-  if (!in) throw std::runtime_error("cannot read " + p.string());
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+struct Options {
+  int trials = 30;
+  uint64_t seed = 1;
+  std::string out = "experiment-out";
+  std::string source_dir = AUTONOMY_SOURCE_DIR;
+  std::string scenario = "deploy/scenarios/recon.pbtxt";
+  int domain = 60;
+  int jobs = 4;
+  std::vector<std::string> only;
+};
 
 void write_text(const fs::path& p, const std::string& text) {
   std::ofstream out(p);
@@ -98,200 +51,146 @@ void write_text(const fs::path& p, const std::string& text) {
   if (!out) throw std::runtime_error("cannot write " + p.string());
 }
 
-// The scenario without its own robots (the behavior processes attach r1..r3 at --start) and with
-// map paths made absolute so the copy can live in the output folder.
-std::string scenario_for_attached_robots(const fs::path& scenario) {
-  std::string text = read_text(scenario);
-  // Remove top-level `robots { ... }` blocks (brace-matched).
-  std::string out;
-  size_t i = 0;
-  while (i < text.size()) {
-    const bool line_start = i == 0 || text[i - 1] == '\n';
-    if (line_start && text.compare(i, 6, "robots") == 0) {
-      const size_t open = text.find('{', i);
-      if (open == std::string::npos) break;
-      int depth = 0;
-      size_t j = open;
-      for (; j < text.size(); ++j) {
-        if (text[j] == '{') ++depth;
-        if (text[j] == '}' && --depth == 0) break;
-      }
-      i = j + 1;
-      continue;
+// Every trial of the selected configurations, in the paper's order, seeds drawn in that order
+// (so a trial's seed does not depend on how many run at once).
+std::vector<PlannedTrial> plan_trials(const Options& o) {
+  std::vector<PlannedTrial> out;
+  std::mt19937_64 seeds(o.seed);
+  for (const auto& cfg : autonomy::stats::table1_configurations()) {
+    const bool selected = o.only.empty() || std::find(o.only.begin(), o.only.end(), cfg.id) != o.only.end();
+    for (int t = 0; t < o.trials; ++t) {
+      const uint64_t seed = seeds();
+      if (selected) out.push_back({cfg.id, t, seed});
     }
-    out += text[i++];
   }
-  const std::string base = fs::absolute(scenario).parent_path().string() + "/";
-  static const std::regex kYaml(R"re(yaml:\s*"([^/"][^"]*)")re");
-  return std::regex_replace(out, kYaml, "yaml: \"" + base + "$1\"");
+  return out;
 }
 
-struct Options {
-  int trials = 30;
-  uint64_t seed = 1;
-  std::string out = "experiment-out";
-  std::string bin_dir;
-  std::string source_dir;
-  std::string scenario = "deploy/scenarios/recon.pbtxt";
-  int max_ticks = 4000;
-  int domain = 60;
-  double start_min_x = 10.0, start_max_x = 240.0, start_y = 3.0;
-  int timeout_s = 900;
-  std::vector<std::string> only;
-};
-
-TrialRecord run_trial(const Options& o, const autonomy::stats::Configuration& cfg, int trial,
-                      uint64_t seed, const fs::path& scenario_copy) {
-  const fs::path out(o.out);
-  const std::string stem = cfg.id + "-" + std::to_string(trial);
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> x_dist(o.start_min_x, o.start_max_x);
-  std::vector<double> xs;
-  for (size_t k = 0; k < kRobots.size(); ++k) xs.push_back(x_dist(rng));
-
-  const std::string domain = std::to_string(o.domain);
-  const fs::path logs = out / "logs";
-  std::vector<std::string> sim_args = {"--config", scenario_copy.string(), "--domain", domain,
-                                       "--log-dir", logs.string(), "--max-ticks",
-                                       std::to_string(o.max_ticks), "--metrics",
-                                       (out / stem).string(), "--svg",
-                                       (out / (stem + ".svg")).string(), "--wait-for"};
-  for (const auto& r : kRobots) sim_args.push_back("behavior/" + r);
-  fs::remove(out / (stem + ".json"));
-  const pid_t sim = spawn(o.bin_dir + "/simulator", sim_args, (logs / (stem + "-sim.out")).string());
-  std::vector<pid_t> behaviors;
-  for (size_t k = 0; k < kRobots.size(); ++k) {
-    const std::string& r = kRobots[k];
-    const fs::path mission =
-        fs::path(o.source_dir) / "deploy/missions" / (cfg.id + "_" + r + ".pbtxt");
-    char x[32], y[32];
-    std::snprintf(x, sizeof x, "%.3f", xs[k]);
-    std::snprintf(y, sizeof y, "%.3f", o.start_y);
-    behaviors.push_back(spawn(o.bin_dir + "/behavior",
-                              {"--robot", r, "--mission", mission.string(), "--start", x, y,
-                               "--domain", domain, "--log-dir", logs.string()},
-                              (logs / (stem + "-" + r + ".out")).string()));
+// One typical run per configuration (the trial whose mission time is nearest the median), its
+// picture copied to typical-<cfg>.svg; returns the report's section.
+std::string typical_runs(const std::vector<TrialRecord>& records, const fs::path& out) {
+  std::string md = "\n## Typical runs\n\nThe trial whose mission time is nearest the configuration's median.\n\n";
+  for (const auto& cfg : autonomy::stats::table1_configurations()) {
+    std::vector<const TrialRecord*> mine;
+    for (const auto& r : records)
+      if (r.configuration == cfg.id) mine.push_back(&r);
+    if (mine.empty()) continue;
+    std::vector<double> times;
+    for (const auto* r : mine) times.push_back(r->mission_time_s);
+    std::sort(times.begin(), times.end());
+    const double median = times[times.size() / 2];
+    const TrialRecord* typical = mine.front();
+    for (const auto* r : mine)
+      if (std::fabs(r->mission_time_s - median) < std::fabs(typical->mission_time_s - median)) typical = r;
+    const std::string to = "typical-" + cfg.id + ".svg";
+    std::error_code ec;
+    fs::copy_file(out / (cfg.id + "-" + std::to_string(typical->trial) + ".svg"), out / to,
+                  fs::copy_options::overwrite_existing, ec);
+    if (!ec) md += "- " + cfg.label + " (trial " + std::to_string(typical->trial) + "): ![" + cfg.id + "](" + to + ")\n";
   }
-  // Wait for the simulator (it stops at --max-ticks); a behavior that ends first is a failure.
-  int status = 0;
-  bool ended = false;
-  std::string early;
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(o.timeout_s);
-  while (!ended && early.empty() && std::chrono::steady_clock::now() < deadline) {
-    ended = waitpid(sim, &status, WNOHANG) == sim;
-    for (size_t k = 0; k < behaviors.size() && !ended; ++k) {
-      int bs = 0;
-      if (behaviors[k] > 0 && waitpid(behaviors[k], &bs, WNOHANG) == behaviors[k]) {
-        behaviors[k] = -1;
-        early = kRobots[k];
-      }
-    }
-    if (!ended) std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  }
-  if (!ended) stop(sim);
-  for (pid_t b : behaviors) {
-    if (b > 0) stop(b);
-  }
-  if (!early.empty()) {
-    throw std::runtime_error(stem + ": behavior " + early + " ended early (see " +
-                             (logs / (stem + "-" + early + ".out")).string() + ")");
-  }
-  if (!ended) throw std::runtime_error(stem + ": simulator did not finish in time");
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    throw std::runtime_error(stem + ": simulator failed (see " + (logs / (stem + "-sim.out")).string() + ")");
-  }
-  const auto j = nlohmann::json::parse(read_text(out / (stem + ".json")));
-  TrialRecord rec;
-  rec.configuration = cfg.id;
-  rec.trial = trial;
-  rec.seed = seed;
-  rec.mission_time_s = j.at("team").at("mission_time_s").get<double>();
-  rec.distance_m = j.at("team").at("distance_m").get<double>();
-  // Time connected: summed over the robots (each robot's time connected to a teammate).
-  for (const auto& r : j.at("robots")) rec.time_connected_s += r.at("time_connected_s").get<double>();
-  rec.percent_time_fully_connected = j.at("team").at("percent_time_fully_connected").get<double>();
-  rec.coverage_percent = j.at("team").at("percent_covered").get<double>();
-  return rec;
+  return md;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   Options o;
-  const fs::path self = fs::canonical("/proc/self/exe");
-  o.bin_dir = self.parent_path().string();
-  o.source_dir = AUTONOMY_SOURCE_DIR;
+  TrialSetup setup;
+  setup.bin_dir = fs::canonical("/proc/self/exe").parent_path().string();
+  int timeout_s = 600;
   CLI::App app{"Runs the six configurations of the robot-teams paper's Table 1 through the real processes"};
-  app.add_option("--trials", o.trials, "Trials per configuration")->check(CLI::PositiveNumber);
-  app.add_option("--seed", o.seed, "Seed of the random start positions");
-  app.add_option("--out", o.out, "Output folder");
-  app.add_option("--max-ticks", o.max_ticks, "Simulator ticks per trial (0.1 s each in recon)");
-  app.add_option("--domain", o.domain, "DDS domain id for the runs")->check(CLI::Range(0, 232));
-  app.add_option("--bin-dir", o.bin_dir, "Folder holding simulator and behavior");
-  app.add_option("--source-dir", o.source_dir, "Project folder (deploy/ lives there)");
-  app.add_option("--timeout", o.timeout_s, "Seconds one trial may take");
-  app.add_option("--only", o.only, "Run only these configuration ids");
+  app.add_option("--trials", o.trials, "Trials per configuration")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("--seed", o.seed, "Seed of the random start positions")->capture_default_str();
+  app.add_option("--out", o.out, "Output folder")->capture_default_str();
+  app.add_option("--jobs", o.jobs, "Trials run at once (each on its own DDS domain)")
+      ->check(CLI::Range(1, 32))
+      ->capture_default_str();
+  app.add_option("--max-ticks", setup.max_ticks, "Simulator ticks a trial may last (0.1 s each in recon)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--resolution", setup.grid_resolution_m, "The behaviors' planning grid resolution, m")
+      ->check(CLI::Range(0.05, 5.0))
+      ->capture_default_str();
+  app.add_option("--domain", o.domain, "First DDS domain id; job k uses domain + k")
+      ->check(CLI::Range(0, 232))
+      ->capture_default_str();
+  app.add_option("--bin-dir", setup.bin_dir, "Folder holding simulator and behavior")->capture_default_str();
+  app.add_option("--source-dir", o.source_dir, "Project folder (deploy/ lives there)")->capture_default_str();
+  app.add_option("--scenario", o.scenario, "Scenario, relative to the project folder")->capture_default_str();
+  app.add_option("--timeout", timeout_s, "Seconds one trial may take")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("--only", o.only, "Run only these configuration ids")
+      ->check(CLI::IsMember([] {
+        std::vector<std::string> ids;
+        for (const auto& c : autonomy::stats::table1_configurations()) ids.push_back(c.id);
+        return ids;
+      }()));
   CLI11_PARSE(app, argc, argv);
+  if (o.domain + o.jobs - 1 > 232) {
+    std::fprintf(stderr, "experiment_runner: --domain %d with --jobs %d needs domains up to %d (232 at most)\n",
+                 o.domain, o.jobs, o.domain + o.jobs - 1);
+    return 2;
+  }
 
   try {
-    fs::create_directories(fs::path(o.out) / "logs");
-    const fs::path scenario_copy = fs::path(o.out) / "scenario.pbtxt";
-    write_text(scenario_copy,
-               scenario_for_attached_robots(fs::path(o.source_dir) / o.scenario));
+    const fs::path out(o.out);
+    fs::create_directories(out / "logs");
+    setup.out_dir = fs::absolute(out);
+    setup.missions_dir = fs::path(o.source_dir) / "deploy/missions";
+    setup.scenario = setup.out_dir / "scenario.pbtxt";
+    setup.timeout = std::chrono::seconds(timeout_s);
+    // All children on this host: the loopback profile unless the caller chose one.
+    if (std::getenv("CYCLONEDDS_URI") == nullptr)
+      setup.dds_uri = "file://" + (fs::path(o.source_dir) / "deploy/dds/loopback.xml").string();
+    write_text(setup.scenario,
+               autonomy::experiments::scenario_for_attached_robots(fs::path(o.source_dir) / o.scenario));
+
+    const std::vector<PlannedTrial> planned = plan_trials(o);
+    std::vector<std::optional<TrialRecord>> results(planned.size());
+    std::atomic<size_t> next{0};
+    std::mutex print;
+    int done = 0, failures = 0;
+    const auto begin = std::chrono::steady_clock::now();
+    const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count(); };
+    std::printf("%zu trials (%d per configuration), %d at a time, output in %s\n", planned.size(), o.trials, o.jobs,
+                o.out.c_str());
+    std::fflush(stdout);
+
+    std::vector<std::thread> slots;
+    for (int slot = 0; slot < o.jobs; ++slot) {
+      slots.emplace_back([&, slot] {
+        for (size_t i = next++; i < planned.size(); i = next++) {
+          const PlannedTrial& p = planned[i];
+          std::string line;
+          try {
+            results[i] = autonomy::experiments::run_trial(setup, p.configuration, p.trial, p.seed, o.domain + slot);
+            const TrialRecord& r = *results[i];
+            char buf[256];
+            std::snprintf(buf, sizeof buf, "mission %6.1f s%s  distance %6.1f m  fully connected %5.1f%%  coverage %4.1f%%",
+                          r.mission_time_s, r.all_finished ? "" : " (unfinished)", r.distance_m,
+                          r.percent_time_fully_connected, r.coverage_percent);
+            line = buf;
+          } catch (const std::exception& e) {
+            line = std::string("FAILED: ") + e.what();
+          }
+          std::lock_guard<std::mutex> lock(print);
+          ++done;
+          if (!results[i]) ++failures;
+          const double t = elapsed();
+          std::printf("[%3d/%zu] %-14s trial %2d  %s  (%.0f s, about %.0f s left)\n", done, planned.size(),
+                      p.configuration.c_str(), p.trial, line.c_str(), t, t / done * (planned.size() - done));
+          std::fflush(stdout);
+        }
+      });
+    }
+    for (auto& s : slots) s.join();
 
     std::vector<TrialRecord> records;
-    std::ofstream csv(fs::path(o.out) / "trials.csv");
-    csv << autonomy::stats::csv_header() << std::flush;
-    std::mt19937_64 seeds(o.seed);
-    int failures = 0;
-    for (const auto& cfg : autonomy::stats::table1_configurations()) {
-      if (!o.only.empty() && std::find(o.only.begin(), o.only.end(), cfg.id) == o.only.end()) continue;
-      for (int t = 0; t < o.trials; ++t) {
-        const uint64_t seed = seeds();
-        const auto begin = std::chrono::steady_clock::now();
-        try {
-          const TrialRecord rec = run_trial(o, cfg, t, seed, scenario_copy);
-          records.push_back(rec);
-          csv << autonomy::stats::csv_row(rec) << std::flush;
-          const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-          std::printf("%-14s trial %3d/%d  mission %.1f s  distance %.1f m  fully connected %.1f%%  coverage %.1f%%  (%.0f s)\n",
-                      cfg.id.c_str(), t + 1, o.trials, rec.mission_time_s, rec.distance_m,
-                      rec.percent_time_fully_connected, rec.coverage_percent, secs);
-        } catch (const std::exception& e) {
-          ++failures;
-          std::printf("%-14s trial %3d/%d  FAILED: %s\n", cfg.id.c_str(), t + 1, o.trials, e.what());
-        }
-        std::fflush(stdout);
-      }
-    }
-    // One typical run per configuration: the trial whose mission time is nearest the median.
-    std::string pictures = "\n## Typical runs\n\nThe trial whose mission time is nearest the "
-                           "configuration's median.\n\n";
-    for (const auto& cfg : autonomy::stats::table1_configurations()) {
-      std::vector<const TrialRecord*> mine;
-      for (const auto& r : records) {
-        if (r.configuration == cfg.id) mine.push_back(&r);
-      }
-      if (mine.empty()) continue;
-      std::vector<double> times;
-      for (const auto* r : mine) times.push_back(r->mission_time_s);
-      std::sort(times.begin(), times.end());
-      const double median = times[times.size() / 2];
-      const TrialRecord* typical = mine.front();
-      for (const auto* r : mine) {
-        if (std::fabs(r->mission_time_s - median) < std::fabs(typical->mission_time_s - median)) typical = r;
-      }
-      const std::string from = cfg.id + "-" + std::to_string(typical->trial) + ".svg";
-      const std::string to = "typical-" + cfg.id + ".svg";
-      std::error_code ec;
-      fs::copy_file(fs::path(o.out) / from, fs::path(o.out) / to,
-                    fs::copy_options::overwrite_existing, ec);
-      if (!ec) pictures += "- " + cfg.label + " (trial " + std::to_string(typical->trial) + "): ![" + cfg.id + "](" + to + ")\n";
-    }
-    write_text(fs::path(o.out) / "report.md",
-               autonomy::stats::write_markdown_report(records) + pictures);
-    std::printf("wrote %s/trials.csv and %s/report.md (%zu trials, %d failed)\n", o.out.c_str(),
-                o.out.c_str(), records.size(), failures);
+    for (const auto& r : results)
+      if (r) records.push_back(*r);
+    write_text(out / "trials.csv", autonomy::stats::write_csv(records));
+    write_text(out / "report.md", autonomy::stats::write_markdown_report(records) + typical_runs(records, out));
+    std::printf("wrote %s/trials.csv and %s/report.md: %zu trials in %.1f s, %d failed\n", o.out.c_str(),
+                o.out.c_str(), records.size(), elapsed(), failures);
     return failures == 0 ? 0 : 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "experiment_runner: %s\n", e.what());

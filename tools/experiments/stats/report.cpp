@@ -1,5 +1,6 @@
 #include "tools/experiments/stats/report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -80,14 +81,14 @@ std::string label_of(const std::vector<Configuration>& configurations, const std
 std::string csv_header() {
   std::string out = "configuration,trial,seed";
   for (const auto& m : trial_metrics()) out += "," + m.key;
-  return out + "\n";
+  return out + ",finished\n";
 }
 
 std::string csv_row(const TrialRecord& record) {
   std::string out = record.configuration + "," + std::to_string(record.trial) + "," +
                     std::to_string(record.seed);
   for (const auto& m : trial_metrics()) out += "," + number(m.get(record));
-  return out + "\n";
+  return out + (record.all_finished ? ",1\n" : ",0\n");
 }
 
 std::string write_csv(const std::vector<TrialRecord>& records) {
@@ -113,14 +114,17 @@ std::string write_markdown_report(
   out << "# " << title << "\n\n";
 
   out << "## Mean ± standard deviation per configuration\n\n";
-  out << "| Configuration | n |";
+  out << "| Configuration | n | finished |";
   for (const auto& m : metrics) out << " " << m.label << " |";
-  out << "\n|---|---:|";
+  out << "\n|---|---:|---:|";
   for (size_t i = 0; i < metrics.size(); ++i) out << "---:|";
   out << "\n";
   for (const auto& c : configurations) {
     const size_t n = metric_values(records, c.id, metrics.front()).size();
-    out << "| " << c.label << " | " << n << " |";
+    const auto finished = std::count_if(records.begin(), records.end(), [&](const TrialRecord& r) {
+      return r.configuration == c.id && r.all_finished;
+    });
+    out << "| " << c.label << " | " << n << " | " << finished << " |";
     for (const auto& m : metrics) {
       const auto values = metric_values(records, c.id, m);
       if (values.empty()) {

@@ -34,6 +34,7 @@ struct TrialRecord {
   double time_connected_s = 0.0;
   double percent_time_fully_connected = 0.0;
   double coverage_percent = 0.0;
+  bool all_finished = true;   // every robot finished its mission before the run's tick limit
 };
 
 struct Metric {
@@ -45,7 +46,8 @@ struct Metric {
 // The per-trial metrics, in CSV column order.
 const std::vector<Metric>& trial_metrics();
 
-// "configuration,trial,seed,<metric keys>\n" then one row per record, in the given order.
+// "configuration,trial,seed,<metric keys>,finished\n" then one row per record, in the given
+// order (finished: 1 or 0).
 std::string csv_header();
 std::string csv_row(const TrialRecord& record);
 std::string write_csv(const std::vector<TrialRecord>& records);
@@ -54,7 +56,7 @@ std::string write_csv(const std::vector<TrialRecord>& records);
 std::vector<double> metric_values(const std::vector<TrialRecord>& records,
                                   const std::string& configuration, const Metric& metric);
 
-// Markdown: a title, a table (configuration, n, mean ± sd per metric) with one row per
+// Markdown: a title, a table (configuration, n, how many finished, mean ± sd per metric) with one row per
 // configuration of `configurations` (rows with no trials show n = 0 and "-"), and a table of
 // Welch t-tests (t, df, two-sided p per metric) for each pair in `pairs`.
 std::string write_markdown_report(

@@ -11,14 +11,19 @@ Plan::Plan(std::string name, Query query) : name_(std::move(name)), query_(std::
   if (!query_) throw std::invalid_argument("plan " + name_ + " has no query");
 }
 
-Plan Plan::from_field(std::string name, std::shared_ptr<const CostToGoField> field) {
+Plan Plan::from_field(std::string name, std::shared_ptr<const CostToGoField> field, double way_back_within_m) {
   if (!field) throw std::invalid_argument("plan " + name + " has no field");
-  return Plan(std::move(name), [field = std::move(field)](const geometry::Vec2& p) {
+  return Plan(std::move(name), [field = std::move(field), way_back_within_m](const geometry::Vec2& p) {
     PlanQuery q;
     const auto cell = field->geometry().cell_at(p);
     if (!cell) return q;
     q.cost = field->cost(*cell);
-    if (std::isfinite(q.cost)) q.advice = field->advice(*cell);
+    if (std::isfinite(q.cost)) {
+      q.advice = field->advice(*cell);
+    } else if (const auto back = field->nearest_reachable(p, way_back_within_m)) {
+      const geometry::Vec2 to = field->geometry().centre(*back) - p;
+      if (to.norm() > 1e-9) q.way_back = to.normalized();
+    }
     return q;
   });
 }
@@ -41,7 +46,7 @@ PlanSelection FixedPlanSelector::select(const PlanSet& plans, const geometry::Ve
   const PlanQuery q = plans.plans()[index_].query(position);
   s.plan = index_;
   s.cost = q.cost;
-  if (std::isfinite(q.cost)) s.advice = q.advice;
+  s.advice = std::isfinite(q.cost) ? q.advice : q.way_back;
   return s;
 }
 

@@ -38,6 +38,9 @@ namespace autonomy::behavior {
 struct PlanQuery {
   float cost = std::numeric_limits<float>::infinity();  // metres to the goal; +inf: no route
   geometry::Vec2 advice = geometry::Vec2::Zero();        // unit or zero
+  // Where cost is +inf but the plan's free space is near (the robot was pushed into an inflation
+  // margin or a constrained area by other schemas): the unit vector back to it; zero otherwise.
+  geometry::Vec2 way_back = geometry::Vec2::Zero();
 };
 
 // One internalized plan: a name (its constraint set, e.g. "obstacles+comm_attenuation") and a
@@ -49,8 +52,13 @@ class Plan {
   // Throws std::invalid_argument on an empty query.
   Plan(std::string name, Query query);
   // Queries the field at the cell holding the position: cost(cell) and advice(cell); outside the
-  // grid, +inf and zero. Throws std::invalid_argument on a null field.
-  static Plan from_field(std::string name, std::shared_ptr<const CostToGoField> field);
+  // grid, +inf and zero. Where the cost is +inf, way_back points at the nearest reachable cell
+  // within `way_back_within_m`. Throws std::invalid_argument on a null field.
+  static Plan from_field(std::string name, std::shared_ptr<const CostToGoField> field,
+                         double way_back_within_m = kWayBackWithinM);
+  // How far a plan looks for its free space from a blocked position: a few metres, the distance
+  // other schemas can push a robot over the edge of a plan before it notices.
+  static constexpr double kWayBackWithinM = 5.0;
 
   const std::string& name() const { return name_; }
   [[nodiscard]] PlanQuery query(const geometry::Vec2& position) const { return query_(position); }
@@ -96,8 +104,10 @@ class PlanSelector {
                                              const geometry::Vec2& position) const = 0;
 };
 
-// Always follows plan `index` (the outcome of a static choice). An index out of range gives no
-// advice rather than undefined behaviour.
+// Always follows plan `index` (the outcome of a static choice). Off the plan (cost +inf) its
+// advice is the way back, so a robot pushed into an area its plan avoids returns to the plan
+// instead of drifting on with no advice. An index out of range gives no advice rather than
+// undefined behaviour.
 class FixedPlanSelector final : public PlanSelector {
  public:
   explicit FixedPlanSelector(std::size_t index) : index_(index) {}

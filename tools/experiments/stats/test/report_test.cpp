@@ -37,26 +37,29 @@ TEST(ReportTest, ConfigurationsAndPairsAreConsistent) {
 TEST(ReportTest, Csv) {
   EXPECT_EQ(csv_header(),
             "configuration,trial,seed,mission_time_s,distance_m,time_connected_s,"
-            "percent_time_fully_connected,coverage_percent\n");
-  EXPECT_EQ(csv_row(record("reactive", 2, 66.5)), "reactive,2,102,66.5,20,5,52,12.5\n");
-  const std::string csv = write_csv({record("reactive", 0, 1.0), record("comm_serial", 1, 2.0)});
-  EXPECT_EQ(csv, csv_header() + "reactive,0,100,1,0,5,50,12.5\ncomm_serial,1,101,2,10,5,51,12.5\n");
+            "percent_time_fully_connected,coverage_percent,finished\n");
+  EXPECT_EQ(csv_row(record("reactive", 2, 66.5)), "reactive,2,102,66.5,20,5,52,12.5,1\n");
+  TrialRecord unfinished = record("comm_serial", 1, 2.0);
+  unfinished.all_finished = false;
+  const std::string csv = write_csv({record("reactive", 0, 1.0), unfinished});
+  EXPECT_EQ(csv, csv_header() + "reactive,0,100,1,0,5,50,12.5,1\ncomm_serial,1,101,2,10,5,51,12.5,0\n");
 }
 
 TEST(ReportTest, MarkdownHasMeansAndTests) {
-  const std::vector<TrialRecord> records = {
+  std::vector<TrialRecord> records = {
       record("reactive", 0, 60.0),   record("reactive", 1, 70.0),
       record("reactive", 2, 65.0),   record("plan_66_34", 0, 50.0),
       record("plan_66_34", 1, 48.0), record("plan_66_34", 2, 52.0),
       record("comm_serial", 0, 116.0),
   };
+  records[1].all_finished = false;  // reactive trial 1 ran out of ticks
   const std::string md = write_markdown_report(records, "Test");
   EXPECT_NE(md.find("# Test\n"), std::string::npos);
   // Reactive mission time: mean 65, sd 5.
-  EXPECT_NE(md.find("| Reactive only | 3 | 65.00 ± 5.00 |"), std::string::npos) << md;
-  EXPECT_NE(md.find("| 66:34 reactive:plan | 3 | 50.00 ± 2.00 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| Reactive only | 3 | 2 | 65.00 ± 5.00 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 66:34 reactive:plan | 3 | 3 | 50.00 ± 2.00 |"), std::string::npos) << md;
   // No trials: n = 0 and dashes.
-  EXPECT_NE(md.find("| Planning w/o comms | 0 | - |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| Planning w/o comms | 0 | 0 | - |"), std::string::npos) << md;
   // Every compared pair has a row.
   EXPECT_NE(md.find("| Reactive only vs 66:34 reactive:plan | t = "), std::string::npos) << md;
   EXPECT_NE(md.find("| Planning w/ comms, parallel vs Planning w/ comms, serial | n/a |"),

@@ -61,11 +61,32 @@ TEST(StaticSelection, ChoosesTheMostConstrainedPlanOnceAndKeepsIt) {
   const auto chosen = choose_static_plan(set, kStart);
   ASSERT_NE(chosen, nullptr);
   EXPECT_EQ(chosen->index(), 1u);
-  // Later, pushed into the attenuating area: static selection does not switch plans.
+  // Later, pushed into the attenuating area: static selection does not switch plans; its advice
+  // leads back out of the area, one cell, to where the plan has a route again.
   const PlanSelection s = chosen->select(set, kInComm);
   EXPECT_EQ(s.plan, 1u);
   EXPECT_FALSE(std::isfinite(s.cost));
-  EXPECT_EQ(s.advice, Vec2::Zero());
+  EXPECT_NEAR(s.advice.norm(), 1.0, 1e-12);
+  EXPECT_TRUE(std::isfinite(set.plans()[1].query(kInComm + s.advice).cost)) << s.advice.transpose();
+}
+
+TEST(Plan, WayBackLeadsToTheNearestCellWithARouteWithinReach) {
+  // Columns 2-3 of the top two rows are blocked: from cell (2, 2) the nearest free cell is (1, 2).
+  const Plan plan = Plan::from_field("comm", field({"..##.", "..##.", "....."}, Vec2(4.5, 1.5)));
+  const PlanQuery q = plan.query({2.5, 2.5});
+  EXPECT_FALSE(std::isfinite(q.cost));
+  EXPECT_EQ(q.advice, Vec2::Zero());
+  EXPECT_EQ(q.way_back, Vec2(-1.0, 0.0));
+  EXPECT_EQ(plan.query({0.5, 0.5}).way_back, Vec2::Zero());  // on the plan: no way back needed
+
+  // A 13 x 13 block in a 15 x 15 grid: from its middle the nearest free cell is 7 m away, beyond
+  // reach; near its west edge the way back is west.
+  std::vector<std::string> picture(13, "." + std::string(13, '#') + ".");
+  picture.insert(picture.begin(), std::string(15, '.'));
+  picture.push_back(std::string(15, '.'));
+  const Plan deep = Plan::from_field("deep", field(picture, Vec2(0.5, 0.5)), 5.0);
+  EXPECT_EQ(deep.query({7.5, 7.5}).way_back, Vec2::Zero());
+  EXPECT_EQ(deep.query({2.5, 7.5}).way_back, Vec2(-1.0, 0.0));
 }
 
 TEST(StaticSelection, FallsBackToTheLessConstrainedPlanWhenTheOtherHasNoRoute) {

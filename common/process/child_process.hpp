@@ -1,8 +1,8 @@
 #pragma once
-// A child process for integration tests: started with fork/exec with its own arguments and extra
+// A child process of a tool or a test: started with fork/exec with its own arguments and extra
 // environment, stdout and stderr into one log file. The destructor SIGKILLs and reaps a child that
-// is still running, so a failed assertion leaves no orphan; the child also gets SIGKILL when the
-// test process dies (PR_SET_PDEATHSIG), e.g. when ctest kills a test at its timeout.
+// is still running, so an error (or a failed assertion) leaves no orphan; the child also gets
+// SIGKILL when its parent dies (PR_SET_PDEATHSIG), e.g. when ctest kills a test at its timeout.
 #include <sys/types.h>
 
 #include <chrono>
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace autonomy::test {
+namespace autonomy::process {
 
 // How a child ended: exit code, or the signal that killed it.
 struct ExitStatus {
@@ -23,7 +23,7 @@ struct ExitStatus {
 
 class ChildProcess {
  public:
-  // Starts `program` with `args` (argv[1..]); `env` entries are added to (or override) the test's
+  // Starts `program` with `args` (argv[1..]); `env` entries are added to (or override) this process's
   // environment. stdout goes to `log_file`, stderr too unless `stderr_file` names another file.
   // Throws std::runtime_error when the program cannot be started.
   ChildProcess(std::string name, const std::string& program, const std::vector<std::string>& args,
@@ -61,17 +61,4 @@ class ChildProcess {
   std::optional<ExitStatus> status_;
 };
 
-// A folder of its own for one test: logs, trajectories. Removed when the test passed, kept (and
-// its path printed) when it failed.
-class TestDir {
- public:
-  explicit TestDir(const std::string& test_name);
-  ~TestDir();
-  const std::string& path() const { return path_; }
-  std::string file(const std::string& name) const { return path_ + "/" + name; }
-
- private:
-  std::string path_;
-};
-
-}  // namespace autonomy::test
+}  // namespace autonomy::process

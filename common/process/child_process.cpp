@@ -1,6 +1,4 @@
-#include "tests/support/child_process.hpp"
-
-#include <gtest/gtest.h>
+#include "common/process/child_process.hpp"
 
 #include <cerrno>
 #include <csignal>
@@ -18,7 +16,7 @@
 
 extern char** environ;
 
-namespace autonomy::test {
+namespace autonomy::process {
 
 std::string ExitStatus::describe() const {
   if (exited) return "exit code " + std::to_string(code);
@@ -30,7 +28,7 @@ ChildProcess::ChildProcess(std::string name, const std::string& program, const s
                            const std::string& stderr_file)
     : name_(std::move(name)), log_file_(log_file), stderr_file_(stderr_file.empty() ? log_file : stderr_file) {
   // Everything the child needs is prepared before fork: between fork and exec only
-  // async-signal-safe calls are allowed (the test process runs Cyclone's threads).
+  // async-signal-safe calls are allowed (the parent may run Cyclone's threads).
   std::vector<std::string> argv_store;
   argv_store.push_back(program);
   argv_store.insert(argv_store.end(), args.begin(), args.end());
@@ -73,14 +71,14 @@ ChildProcess::ChildProcess(std::string name, const std::string& program, const s
     throw std::runtime_error("fork failed: " + std::string(std::strerror(err)));
   }
   if (pid == 0) {
-    // Child. Die with the test process; undo the signal mask and dispositions it may have set.
+    // Child. Die with the parent; undo the signal mask and dispositions it may have set.
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);
     if (::getppid() != parent) ::_exit(127);
     sigset_t none;
     sigemptyset(&none);
     ::sigprocmask(SIG_SETMASK, &none, nullptr);
     for (int sig : {SIGINT, SIGTERM, SIGPIPE, SIGCHLD, SIGHUP}) ::signal(sig, SIG_DFL);
-    ::setpgid(0, 0);  // not in the terminal's group: a Ctrl-C on ctest reaches the test only
+    ::setpgid(0, 0);  // not in the terminal's group: a Ctrl-C reaches the parent only, which decides
     if (devnull >= 0) ::dup2(devnull, STDIN_FILENO);
     ::dup2(fd, STDOUT_FILENO);
     ::dup2(err_fd, STDERR_FILENO);
@@ -172,27 +170,4 @@ std::string ChildProcess::log_tail(std::size_t max_bytes) const {
   return out;
 }
 
-TestDir::TestDir(const std::string& test_name) {
-  std::string safe = test_name;
-  for (char& c : safe)
-    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-  const char* base = std::getenv("TMPDIR");
-  std::string templ = std::string(base && *base ? base : "/tmp") + "/autonomy-it-" + safe + "-XXXXXX";
-  std::vector<char> buf(templ.begin(), templ.end());
-  buf.push_back('\0');
-  if (!::mkdtemp(buf.data())) throw std::runtime_error("mkdtemp failed: " + std::string(std::strerror(errno)));
-  path_ = buf.data();
-}
-
-TestDir::~TestDir() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const bool failed = info != nullptr && info->result() != nullptr && info->result()->Failed();
-  if (failed || std::getenv("AUTONOMY_KEEP_TEST_DIRS") != nullptr) {
-    std::fprintf(stderr, "test files kept in %s\n", path_.c_str());
-    return;
-  }
-  std::error_code ec;
-  std::filesystem::remove_all(path_, ec);
-}
-
-}  // namespace autonomy::test
+}  // namespace autonomy::process

@@ -1,0 +1,143 @@
+#include "tools/experiments/runner/trial.hpp"
+
+#include "common/process/child_process.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <csignal>
+#include <cstdio>
+#include <fstream>
+#include <list>
+#include <random>
+#include <regex>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+namespace autonomy::experiments {
+
+namespace fs = std::filesystem;
+using process::ChildProcess;
+
+namespace {
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p);
+  if (!in) throw std::runtime_error("cannot read " + p.string());
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::string fixed(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3f", v);
+  return buf;
+}
+
+// SIGTERM, a grace period, then SIGKILL (the destructor's).
+void stop(ChildProcess& child) {
+  if (!child.running()) return;
+  child.signal(SIGTERM);
+  child.wait_for_exit(std::chrono::seconds(3));
+}
+
+}  // namespace
+
+std::vector<double> start_positions(const TrialSetup& setup, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> x(setup.start_min_x, setup.start_max_x);
+  std::vector<double> xs;
+  for (size_t k = 0; k < setup.robots.size(); ++k) xs.push_back(x(rng));
+  std::sort(xs.begin(), xs.end());
+  return xs;
+}
+
+stats::TrialRecord run_trial(const TrialSetup& setup, const std::string& configuration, int trial,
+                             std::uint64_t seed, int domain) {
+  const std::string stem = configuration + "-" + std::to_string(trial);
+  const fs::path logs = setup.out_dir / "logs";
+  const auto log = [&](const std::string& who) { return (logs / (stem + "-" + who + ".out")).string(); };
+  std::map<std::string, std::string> env;
+  if (!setup.dds_uri.empty()) env["CYCLONEDDS_URI"] = setup.dds_uri;
+  const std::string dom = std::to_string(domain);
+
+  std::vector<std::string> sim_args = {"--config", setup.scenario.string(), "--domain", dom, "--log-dir",
+                                       logs.string(), "--max-ticks", std::to_string(setup.max_ticks),
+                                       "--stop-when-finished", "--metrics", (setup.out_dir / stem).string(),
+                                       "--svg", (setup.out_dir / (stem + ".svg")).string(), "--wait-for"};
+  for (const auto& r : setup.robots) sim_args.push_back("behavior/" + r);
+  fs::remove(setup.out_dir / (stem + ".json"));
+
+  // std::list: children do not move once started.
+  std::list<ChildProcess> behaviors;
+  ChildProcess sim("simulator", setup.bin_dir + "/simulator", sim_args, env, log("sim"));
+  const std::vector<double> xs = start_positions(setup, seed);
+  for (size_t k = 0; k < setup.robots.size(); ++k) {
+    const std::string& r = setup.robots[k];
+    const fs::path mission = setup.missions_dir / (configuration + "_" + r + ".pbtxt");
+    behaviors.emplace_back("behavior " + r, setup.bin_dir + "/behavior",
+                           std::vector<std::string>{"--robot", r, "--mission", mission.string(), "--start",
+                                                    fixed(xs[k]), fixed(setup.start_y), "--resolution",
+                                                    fixed(setup.grid_resolution_m), "--domain", dom,
+                                                    "--log-dir", logs.string()},
+                           env, log(r));
+  }
+
+  // The simulator ends the run; a behavior that ends before it has failed.
+  const auto deadline = std::chrono::steady_clock::now() + setup.timeout;
+  std::string failed;
+  while (sim.running() && failed.empty()) {
+    for (auto& b : behaviors)
+      if (!b.running()) failed = b.name() + " ended early: " + b.status()->describe() + " (see " + b.log_file() + ")";
+    if (std::chrono::steady_clock::now() >= deadline) failed = "did not finish within the trial timeout";
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  stop(sim);
+  for (auto& b : behaviors) stop(b);
+  if (!failed.empty()) throw std::runtime_error(stem + ": " + failed);
+  if (!sim.status()->exited || sim.status()->code != 0)
+    throw std::runtime_error(stem + ": simulator failed, " + sim.status()->describe() + " (see " + log("sim") + ")");
+
+  const auto j = nlohmann::json::parse(read_text(setup.out_dir / (stem + ".json")));
+  stats::TrialRecord rec;
+  rec.configuration = configuration;
+  rec.trial = trial;
+  rec.seed = seed;
+  rec.mission_time_s = j.at("team").at("mission_time_s").get<double>();
+  rec.distance_m = j.at("team").at("distance_m").get<double>();
+  // Time connected: summed over the robots (each robot's time in contact with some teammate).
+  for (const auto& r : j.at("robots")) rec.time_connected_s += r.at("time_connected_s").get<double>();
+  rec.percent_time_fully_connected = j.at("team").at("percent_time_fully_connected").get<double>();
+  rec.coverage_percent = j.at("team").at("percent_covered").get<double>();
+  rec.all_finished = j.at("team").at("all_finished").get<bool>();
+  return rec;
+}
+
+std::string scenario_for_attached_robots(const fs::path& scenario) {
+  const std::string text = read_text(scenario);
+  std::string out;
+  size_t i = 0;
+  while (i < text.size()) {
+    const bool line_start = i == 0 || text[i - 1] == '\n';
+    if (line_start && text.compare(i, 6, "robots") == 0) {  // a top-level block: skip it, brace-matched
+      const size_t open = text.find('{', i);
+      if (open == std::string::npos) break;
+      int depth = 0;
+      size_t j = open;
+      for (; j < text.size(); ++j) {
+        if (text[j] == '{') ++depth;
+        if (text[j] == '}' && --depth == 0) break;
+      }
+      i = j + 1;
+      continue;
+    }
+    out += text[i++];
+  }
+  const std::string base = fs::absolute(scenario).parent_path().string() + "/";
+  static const std::regex kYaml(R"re(yaml:\s*"([^/"][^"]*)")re");
+  return std::regex_replace(out, kYaml, "yaml: \"" + base + "$1\"");
+}
+
+}  // namespace autonomy::experiments

@@ -1,0 +1,43 @@
+#pragma once
+// One trial of the robot-teams experiment: the real simulator and three behavior processes on a
+// DDS domain of their own, in lockstep, until every robot finished its mission (or the tick
+// limit); the simulator's metrics file becomes one TrialRecord.
+#include "tools/experiments/stats/report.hpp"
+
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace autonomy::experiments {
+
+// What every trial shares.
+struct TrialSetup {
+  std::string bin_dir;                   // simulator and behavior
+  std::filesystem::path missions_dir;    // <configuration>_<robot>.pbtxt
+  std::filesystem::path scenario;        // without robots of its own (see scenario_for_attached_robots)
+  std::filesystem::path out_dir;         // metrics, pictures; logs/ below it
+  std::string dds_uri;                   // CYCLONEDDS_URI of the children ("" inherits)
+  std::vector<std::string> robots = {"r1", "r2", "r3"};
+  int max_ticks = 4000;                  // the run ends here if the team has not finished
+  double grid_resolution_m = 1.0;        // the behaviors' planning grid
+  double start_min_x = 10.0, start_max_x = 240.0, start_y = 3.0;
+  std::chrono::seconds timeout{600};     // wall time one trial may take
+};
+
+// Random start x positions along the bottom edge, drawn from `seed`, sorted west to east (robot
+// k gets the k-th: each mission's dispersion waypoint lies on its robot's side).
+std::vector<double> start_positions(const TrialSetup& setup, std::uint64_t seed);
+
+// Runs trial `trial` of `configuration` on DDS domain `domain`. Writes <out>/<cfg>-<trial>.json,
+// .csv and .svg and logs/<cfg>-<trial>-*.out. Throws std::runtime_error naming the log to read
+// when a process fails or the trial times out.
+stats::TrialRecord run_trial(const TrialSetup& setup, const std::string& configuration, int trial,
+                             std::uint64_t seed, int domain);
+
+// The scenario text without its top-level `robots { ... }` blocks (the behaviors attach their
+// own) and with relative map paths made absolute, so that the copy can live anywhere.
+std::string scenario_for_attached_robots(const std::filesystem::path& scenario);
+
+}  // namespace autonomy::experiments
