@@ -210,11 +210,12 @@ TEST(MissionExecutor, StaticPlanChosenOnEntryAndBlendedWithReactiveGains) {
   EXPECT_NEAR(s.velocity.y(), -0.34 * kR, 1e-6);
   ASSERT_TRUE(s.plan.has_value());
   EXPECT_EQ(s.plan->plan, 1u);
-  // Pushed into the attenuating area: static selection keeps plan 1, which has no advice there.
+  // Pushed into the attenuating area (column 2, rows 1-2): static selection keeps plan 1, whose
+  // advice there is the way back out, to the nearest cell it affords a route from: (2, 0), south.
   const MissionStep inside = executor.step(robot(1.0, Vec2(2.5, 1.5), true));
   EXPECT_EQ(inside.plan->plan, 1u);
   EXPECT_NEAR(inside.velocity.x(), 0.66, 1e-9);
-  EXPECT_NEAR(inside.velocity.y(), 0.0, 1e-9);
+  EXPECT_NEAR(inside.velocity.y(), -0.34, 1e-9);
 }
 
 TEST(MissionExecutor, DynamicPlanReChosenEveryStep) {
