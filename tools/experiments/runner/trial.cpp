@@ -46,12 +46,20 @@ void stop(ChildProcess& child) {
 }  // namespace
 
 std::vector<double> start_positions(const TrialSetup& setup, std::uint64_t seed) {
+  const size_t n = setup.robots.size();
+  if (n > 1 && setup.min_start_spacing_m * static_cast<double>(n - 1) > setup.start_max_x - setup.start_min_x)
+    throw std::invalid_argument(std::to_string(n) + " robots do not fit " + fixed(setup.min_start_spacing_m) +
+                                " m apart between x = " + fixed(setup.start_min_x) + " and " + fixed(setup.start_max_x));
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> x(setup.start_min_x, setup.start_max_x);
-  std::vector<double> xs;
-  for (size_t k = 0; k < setup.robots.size(); ++k) xs.push_back(x(rng));
-  std::sort(xs.begin(), xs.end());
-  return xs;
+  while (true) {
+    std::vector<double> xs;
+    for (size_t k = 0; k < n; ++k) xs.push_back(x(rng));
+    std::sort(xs.begin(), xs.end());
+    bool spaced = true;
+    for (size_t k = 1; k < n; ++k) spaced = spaced && xs[k] - xs[k - 1] >= setup.min_start_spacing_m;
+    if (spaced) return xs;
+  }
 }
 
 stats::TrialRecord run_trial(const TrialSetup& setup, const std::string& configuration, int trial,

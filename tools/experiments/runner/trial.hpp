@@ -23,11 +23,14 @@ struct TrialSetup {
   int max_ticks = 4000;                  // the run ends here if the team has not finished
   double grid_resolution_m = 1.0;        // the behaviors' planning grid
   double start_min_x = 10.0, start_max_x = 240.0, start_y = 3.0;
+  double min_start_spacing_m = 3.0;      // robots must not be spawned on top of each other
   std::chrono::seconds timeout{600};     // wall time one trial may take
 };
 
-// Random start x positions along the bottom edge, drawn from `seed`, sorted west to east (robot
-// k gets the k-th: each mission's dispersion waypoint lies on its robot's side).
+// Random start x positions along the bottom edge, drawn from `seed`, at least
+// min_start_spacing_m apart (a draw with two closer is drawn again), sorted west to east (robot k
+// gets the k-th: each mission's dispersion waypoint lies on its robot's side). Throws
+// std::invalid_argument when the robots cannot fit that far apart.
 std::vector<double> start_positions(const TrialSetup& setup, std::uint64_t seed);
 
 // Runs trial `trial` of `configuration` on DDS domain `domain`. Writes <out>/<cfg>-<trial>.json,

@@ -1,0 +1,102 @@
+// The experiment runner end to end: a small run of the paper's six configurations (two trials
+// each) through the real simulator and behavior processes produces a well-formed CSV, a report
+// with every configuration and every compared pair, and the typical runs' pictures.
+//
+//   domain  test
+//   ------  -----------------------------------------------
+//   90-91   ExperimentTest.SmallRunWritesCsvReportAndPictures (the runner's two jobs)
+#include "tests/support/process_test.hpp"
+#include "tools/experiments/stats/report.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace autonomy::test {
+namespace {
+
+using namespace std::chrono_literals;
+
+std::vector<std::string> split(const std::string& line, char sep) {
+  std::vector<std::string> out;
+  std::stringstream ss(line);
+  std::string field;
+  while (std::getline(ss, field, sep)) out.push_back(field);
+  return out;
+}
+
+class ExperimentTest : public ProcessTest {};
+
+TEST_F(ExperimentTest, SmallRunWritesCsvReportAndPictures) {
+  join(90);
+  const std::string out = dir().file("experiment");
+  auto& runner = start("experiment_runner", AUTONOMY_EXPERIMENT_RUNNER_BIN,
+                       {"--trials", "2", "--seed", "5", "--jobs", "2", "--domain", "90", "--out", out}, false);
+  const auto ended = runner.wait_for_exit(std::chrono::minutes(6));
+  ASSERT_TRUE(ended.has_value()) << "the runner did not finish in 6 minutes";
+  ASSERT_TRUE(ended->exited && ended->code == 0) << ended->describe() << "\n" << runner.log_tail();
+  // Progress: one line per trial, counted up to the total.
+  const std::string progress = read_file(runner.log_file());
+  EXPECT_NE(progress.find("[ 12/12]"), std::string::npos) << progress;
+
+  // CSV: the header, then 2 rows per configuration in the paper's order, values in range.
+  std::stringstream csv(read_file(out + "/trials.csv"));
+  std::string line;
+  ASSERT_TRUE(std::getline(csv, line));
+  EXPECT_EQ(line + "\n", stats::csv_header());
+  const auto columns = split(line, ',');
+  std::map<std::string, int> rows_per_configuration;
+  std::vector<std::string> order;
+  std::set<std::string> seeds;
+  while (std::getline(csv, line)) {
+    const auto f = split(line, ',');
+    ASSERT_EQ(f.size(), columns.size()) << line;
+    if (order.empty() || order.back() != f[0]) order.push_back(f[0]);
+    ++rows_per_configuration[f[0]];
+    seeds.insert(f[2]);
+    const double mission_time = std::stod(f[3]), distance = std::stod(f[4]), connected = std::stod(f[5]);
+    const double fully = std::stod(f[6]), coverage = std::stod(f[7]);
+    EXPECT_GT(mission_time, 60.0) << line;  // 240 m at 2 m/s at best
+    EXPECT_LE(mission_time, 400.0) << line;  // the 4000-tick limit
+    EXPECT_GT(distance, 3 * 240.0) << line;  // three robots, each at least the straight line
+    EXPECT_GE(connected, 0.0) << line;
+    EXPECT_LE(connected, 3 * mission_time + 0.1) << line;
+    EXPECT_GE(fully, 0.0) << line;
+    EXPECT_LE(fully, 100.0) << line;
+    EXPECT_GT(coverage, 0.0) << line;
+    EXPECT_LT(coverage, 100.0) << line;
+    EXPECT_TRUE(f[8] == "0" || f[8] == "1") << line;
+  }
+  std::vector<std::string> expected_order;
+  for (const auto& c : stats::table1_configurations()) {
+    expected_order.push_back(c.id);
+    EXPECT_EQ(rows_per_configuration[c.id], 2) << c.id;
+  }
+  EXPECT_EQ(order, expected_order);
+  EXPECT_EQ(seeds.size(), 12u) << "every trial has its own seed";
+
+  // Report: every configuration with n = 2, every compared pair with a t-test, six pictures.
+  const std::string report = read_file(out + "/report.md");
+  for (const auto& c : stats::table1_configurations()) {
+    EXPECT_NE(report.find("| " + c.label + " | 2 |"), std::string::npos) << c.label << "\n" << report;
+    const std::string picture = out + "/typical-" + c.id + ".svg";
+    EXPECT_NE(report.find("(typical-" + c.id + ".svg)"), std::string::npos) << report;
+    const std::string svg = read_file(picture);
+    EXPECT_NE(svg.find("<svg"), std::string::npos) << picture;
+    EXPECT_NE(svg.find("</svg>"), std::string::npos) << picture;
+  }
+  for (const auto& [a, b] : stats::table1_compared_pairs()) {
+    std::string label_a, label_b;
+    for (const auto& c : stats::table1_configurations()) {
+      if (c.id == a) label_a = c.label;
+      if (c.id == b) label_b = c.label;
+    }
+    EXPECT_NE(report.find("| " + label_a + " vs " + label_b + " | t = "), std::string::npos) << report;
+  }
+}
+
+}  // namespace
+}  // namespace autonomy::test

@@ -1,0 +1,60 @@
+// The runner's pure parts: where the robots start, and the scenario copy the trials run on.
+#include "tools/experiments/runner/trial.hpp"
+
+#include "simulator/scenario/scenario_loader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+#include <stdexcept>
+
+namespace autonomy::experiments {
+namespace {
+
+TEST(StartPositions, SortedInsideTheStartLineAndSpacedApart) {
+  TrialSetup setup;
+  for (std::uint64_t seed = 0; seed < 500; ++seed) {
+    const std::vector<double> xs = start_positions(setup, seed);
+    ASSERT_EQ(xs.size(), 3u);
+    EXPECT_TRUE(std::is_sorted(xs.begin(), xs.end())) << "seed " << seed;
+    EXPECT_GE(xs.front(), setup.start_min_x);
+    EXPECT_LE(xs.back(), setup.start_max_x);
+    for (size_t k = 1; k < xs.size(); ++k) EXPECT_GE(xs[k] - xs[k - 1], setup.min_start_spacing_m) << "seed " << seed;
+  }
+}
+
+TEST(StartPositions, SameSeedSamePositionsOtherSeedOthers) {
+  TrialSetup setup;
+  EXPECT_EQ(start_positions(setup, 42), start_positions(setup, 42));
+  EXPECT_NE(start_positions(setup, 42), start_positions(setup, 43));
+}
+
+TEST(StartPositions, TightSpacingStillFitsAndImpossibleSpacingThrows) {
+  TrialSetup setup;
+  setup.start_min_x = 0.0;
+  setup.start_max_x = 10.0;
+  setup.min_start_spacing_m = 4.9;  // 3 robots in 10 m: only draws near 0, 5, 10 qualify
+  const std::vector<double> xs = start_positions(setup, 7);
+  EXPECT_GE(xs[1] - xs[0], 4.9);
+  EXPECT_GE(xs[2] - xs[1], 4.9);
+  setup.min_start_spacing_m = 5.1;
+  EXPECT_THROW(start_positions(setup, 7), std::invalid_argument);
+}
+
+TEST(ScenarioForAttachedRobots, ReconWithoutItsRobotsAndWithAnAbsoluteMapPath) {
+  const std::string text =
+      scenario_for_attached_robots(std::string(AUTONOMY_SOURCE_DIR) + "/deploy/scenarios/recon.pbtxt");
+  EXPECT_EQ(text.find("\nrobots {"), std::string::npos);
+  EXPECT_NE(text.find(std::string("yaml: \"") + AUTONOMY_SOURCE_DIR + "/deploy/scenarios/recon/recon.yaml\""),
+            std::string::npos);
+  // Still a valid scenario, loaded from anywhere: the same world, no robots of its own.
+  const sim::ScenarioLoadResult loaded = sim::load_scenario_text(text, "/tmp/elsewhere/scenario.pbtxt");
+  ASSERT_TRUE(loaded.ok()) << loaded.error_text();
+  EXPECT_TRUE(loaded.scenario->world.robots_at_start.empty());
+  EXPECT_EQ(loaded.scenario->world.polygons.size(), 30u);
+  EXPECT_EQ(loaded.scenario->world.rasters.size(), 1u);
+}
+
+}  // namespace
+}  // namespace autonomy::experiments
