@@ -3,7 +3,8 @@
 #   bench/run.sh            full runs (a few minutes: the 4000x4000 textbook Dijkstra alone takes seconds)
 #   bench/run.sh --quick    short runs, for a smoke test
 # Environment: BUILD_DIR (default <repo>/build-bench), BENCH_DOMAIN (default 160; the lockstep
-# bench uses the next few ids too, up to 169; paced_sim_bench uses BENCH_DOMAIN + 10, i.e. 170),
+# bench uses the next few ids too, up to 169; paced_sim_bench uses BENCH_DOMAIN + 10, i.e. 170;
+# experiment_bench.sh uses BENCH_DOMAIN + 20 to + 23, the runner's four jobs),
 # CYCLONEDDS_URI (default: the loopback profile),
 # LOCKSTEP_DDS_EXTRA (a Cyclone config snippet to compare against the default, optional).
 # The figures are noisy on a shared 2-core machine: read the ratios measured in the same run.
@@ -18,7 +19,7 @@ quick=()
 if [[ "${1:-}" == "--quick" ]]; then quick=(--quick); fi
 
 cmake -S "$repo" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
-ninja -C "$build" dds_layer_bench lockstep_bench field_bench radio_bench world_bench paced_sim_bench simulator behavior
+ninja -C "$build" dds_layer_bench lockstep_bench field_bench radio_bench world_bench paced_sim_bench simulator behavior experiment_runner
 
 echo "load average: $(cut -d' ' -f1-3 /proc/loadavg), $(nproc) cores, CYCLONEDDS_URI=$CYCLONEDDS_URI"
 "$build/bin/dds_layer_bench" --domain "$domain" "${quick[@]}"
@@ -29,3 +30,4 @@ if [[ -n "${LOCKSTEP_DDS_EXTRA:-}" ]]; then extra=(--dds-extra "$LOCKSTEP_DDS_EX
 "$build/bin/radio_bench" "${quick[@]}"
 if [[ ${#quick[@]} -gt 0 ]]; then "$build/bin/world_bench" --ticks 30; else "$build/bin/world_bench"; fi
 "$build/bin/paced_sim_bench" --domain "$((domain + 10))" "${quick[@]}"
+"$repo/bench/experiment_bench.sh" "$build/bin" "$((domain + 20))" "${quick[@]}"

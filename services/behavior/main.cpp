@@ -39,7 +39,11 @@ int main(int argc, char** argv) {
                        "Plan resource file (plan_tool build): stored plans used when goal and constraint set match");
         app.add_option("--layers", layers_file,
                        "Mission file whose constraint layers goals may name in constraint_set");
-        app.add_option("--mission", mission_file, "Run this mission (idl/mission.proto text) instead of taking goals");
+        auto* mission = app.add_option("--mission", mission_file,
+                                       "Run this mission (idl/mission.proto text) instead of taking goals");
+        // A mission builds its own plans from its plan sets and takes no goals: these would be ignored.
+        for (const char* goal_mode_only : {"--goal", "--constraint", "--plans", "--layers"})
+          mission->excludes(app.get_option(goal_mode_only));
       },
       [&](service::Service& service) {
         options.robot_id = service.options().instance;

@@ -105,6 +105,19 @@ OccupancyGrid::OccupancyGrid(const WorldMap& world, double resolution_m, double 
   }
 }
 
+OccupancyGrid OccupancyGrid::with_areas(const std::vector<geometry::Rect>& areas) const {
+  OccupancyGrid out = *this;
+  const double r = inflation_radius_m_;
+  for (const auto& o : areas) {
+    if (!o.valid() || !std::isfinite(o.min_x) || !std::isfinite(o.min_y) || !std::isfinite(o.max_x) ||
+        !std::isfinite(o.max_y)) {
+      throw std::invalid_argument("obstacle rectangles must be finite with min < max");
+    }
+    out.block_cells_near(o.inflated(r), [&](const geometry::Vec2& c) { return geometry::distance(o, c) <= r; });
+  }
+  return out;
+}
+
 template <typename Blocks>
 void OccupancyGrid::block_cells_near(const geometry::Rect& box, Blocks&& blocks) {
   const double res = geometry_.resolution_m();

@@ -31,6 +31,12 @@ class OccupancyGrid {
 
   static constexpr std::size_t kMaxCells = 64u * 1024u * 1024u;
 
+  // This grid with `areas` blocked as well, grown by the same inflation radius: cell for cell the
+  // grid of the world with the areas added to its obstacles, without redoing the world's polygons
+  // and rasters (a constraint layer on top of the obstacles plan). Throws std::invalid_argument on
+  // an invalid rectangle.
+  [[nodiscard]] OccupancyGrid with_areas(const std::vector<geometry::Rect>& areas) const;
+
   const GridGeometry& geometry() const { return geometry_; }
   double width_m() const { return width_m_; }
   double height_m() const { return height_m_; }

@@ -3,6 +3,7 @@
 #include "services/behavior/core/cost_to_go_field.hpp"
 #include "services/behavior/core/occupancy_grid.hpp"
 
+#include <map>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -11,12 +12,18 @@ namespace autonomy::behavior {
 
 PlanLibrary build_plan_library(const MissionSpec& mission, const WorldMap& map,
                                double resolution_m, double inflation_radius_m) {
+  // Plan sets share work: the obstacles grid (polygons and rasters: the expensive part) is built
+  // once, each constraint set's grid once on top of its predecessor, and a field once per
+  // (constraint set, goal), e.g. when two plan sets differ only in their selection.
+  std::map<std::string, std::shared_ptr<const OccupancyGrid>> grids;
+  std::map<std::pair<std::string, std::pair<double, double>>, std::shared_ptr<const CostToGoField>> fields;
+  grids[kObstaclesLayer] = std::make_shared<const OccupancyGrid>(map, resolution_m, inflation_radius_m);
+
   PlanLibrary library;
   for (const PlanSetSpec& spec : mission.plan_sets) {
     if (spec.layers.empty() || spec.layers.front() != kObstaclesLayer) {
       throw std::invalid_argument("plan set " + spec.name + ": the first layer must be obstacles");
     }
-    WorldMap world = map;
     std::string name = kObstaclesLayer;
     std::vector<Plan> plans;
     for (std::size_t k = 0; k < spec.layers.size(); ++k) {
@@ -29,12 +36,14 @@ PlanLibrary build_plan_library(const MissionSpec& mission, const WorldMap& map,
         if (layer == nullptr) {
           throw std::invalid_argument("plan set " + spec.name + ": unknown layer " + layer_name);
         }
-        world.obstacles.insert(world.obstacles.end(), layer->areas.begin(), layer->areas.end());
+        const std::string previous = name;
         name += "+" + layer_name;
+        if (grids.count(name) == 0)
+          grids[name] = std::make_shared<const OccupancyGrid>(grids.at(previous)->with_areas(layer->areas));
       }
-      auto field = std::make_shared<const CostToGoField>(
-          OccupancyGrid(world, resolution_m, inflation_radius_m), spec.goal);
-      plans.push_back(Plan::from_field(name, std::move(field)));
+      auto& field = fields[{name, {spec.goal.x(), spec.goal.y()}}];
+      if (!field) field = std::make_shared<const CostToGoField>(*grids.at(name), spec.goal);
+      plans.push_back(Plan::from_field(name, field));
     }
     library[spec.name] = std::make_shared<const PlanSet>(spec.name, spec.goal, std::move(plans));
   }

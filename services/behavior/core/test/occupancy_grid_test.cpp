@@ -106,6 +106,27 @@ TEST(OccupancyGrid, RejectsACrossingPolygonAndARotatedRaster) {
   EXPECT_THROW(OccupancyGrid(turned, 1.0, 0.0), std::invalid_argument);
 }
 
+TEST(OccupancyGrid, AreasAddedLaterBlockExactlyAsTheSameObstaclesGivenAtOnce) {
+  WorldMap world{20.0, 12.0};
+  world.obstacles.push_back(Rect{2.0, 2.0, 4.0, 9.0});
+  world.polygons.push_back({"wedge", {Vec2{8.0, 3.0}, Vec2{14.0, 3.0}, Vec2{8.0, 10.0}}});
+  const std::vector<Rect> areas = {Rect{5.0, 0.0, 7.0, 6.0}, Rect{15.2, 4.3, 18.9, 4.9}};
+  WorldMap with = world;
+  with.obstacles.insert(with.obstacles.end(), areas.begin(), areas.end());
+  const OccupancyGrid at_once(with, 0.25, 0.55);
+  const OccupancyGrid later = OccupancyGrid(world, 0.25, 0.55).with_areas(areas);
+  const OccupancyGrid without(world, 0.25, 0.55);
+  int added = 0;
+  for (int row = 0; row < at_once.geometry().rows(); ++row) {
+    for (int col = 0; col < at_once.geometry().cols(); ++col) {
+      ASSERT_EQ(later.blocked({col, row}), at_once.blocked({col, row})) << col << "," << row;
+      added += later.blocked({col, row}) && !without.blocked({col, row});
+    }
+  }
+  EXPECT_GT(added, 150);  // the areas did block something
+  EXPECT_THROW(without.with_areas({Rect{3.0, 3.0, 1.0, 4.0}}), std::invalid_argument);
+}
+
 TEST(OccupancyGrid, OutsideTheGridCountsAsBlocked) {
   const OccupancyGrid grid(WorldMap{2.0, 2.0, {}}, 1.0, 0.0);
   EXPECT_TRUE(grid.blocked({-1, 0}));
