@@ -88,6 +88,7 @@ TEST_F(ExperimentTest, SmallRunWritesCsvReportAndPictures) {
     EXPECT_NE(svg.find("<svg"), std::string::npos) << picture;
     EXPECT_NE(svg.find("</svg>"), std::string::npos) << picture;
   }
+  EXPECT_NE(report.find("## The paper's findings"), std::string::npos) << report;
   for (const auto& [a, b] : stats::table1_compared_pairs()) {
     std::string label_a, label_b;
     for (const auto& c : stats::table1_configurations()) {

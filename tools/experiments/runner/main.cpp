@@ -4,6 +4,7 @@
 // trial order), OUT/report.md (mean ± sd, Welch t-tests, a typical run's picture per
 // configuration) and per trial the simulator's metrics and picture (OUT/<cfg>-<trial>.json/.svg).
 #include "tools/experiments/runner/trial.hpp"
+#include "tools/experiments/stats/findings.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -188,7 +189,10 @@ int main(int argc, char** argv) {
     for (const auto& r : results)
       if (r) records.push_back(*r);
     write_text(out / "trials.csv", autonomy::stats::write_csv(records));
-    write_text(out / "report.md", autonomy::stats::write_markdown_report(records) + typical_runs(records, out));
+    write_text(out / "report.md",
+               autonomy::stats::write_markdown_report(records) +
+                   autonomy::stats::write_findings_markdown(autonomy::stats::check_paper_findings(records)) +
+                   typical_runs(records, out));
     std::printf("wrote %s/trials.csv and %s/report.md: %zu trials in %.1f s, %d failed\n", o.out.c_str(),
                 o.out.c_str(), records.size(), elapsed(), failures);
     return failures == 0 ? 0 : 1;
