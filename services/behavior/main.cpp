@@ -39,6 +39,14 @@ int main(int argc, char** argv) {
                        "Plan resource file (plan_tool build): stored plans used when goal and constraint set match");
         app.add_option("--layers", layers_file,
                        "Mission file whose constraint layers goals may name in constraint_set");
+        app.add_option("--contact-loss-after", options.contact.loss_after_s,
+                       "Seconds a radio link must stay down before a mission counts the teammate as lost")
+            ->check(CLI::NonNegativeNumber)
+            ->capture_default_str();
+        app.add_option("--contact-restore-after", options.contact.restore_after_s,
+                       "Seconds a radio link must stay up before a mission counts the teammate as back")
+            ->check(CLI::NonNegativeNumber)
+            ->capture_default_str();
         auto* mission = app.add_option("--mission", mission_file,
                                        "Run this mission (idl/mission.proto text) instead of taking goals");
         // A mission builds its own plans from its plan sets and takes no goals: these would be ignored.

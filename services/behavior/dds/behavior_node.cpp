@@ -107,6 +107,7 @@ BehaviorNode::BehaviorNode(service::Service& service, BehaviorNodeOptions option
       lockstep_(service.participant(), service.loop(), participant_name_,
                 [this](const msg::SimClock& c) { on_tick(c); }) {
   spawn_request_id_ = options_.robot_id + "@" + std::to_string(getpid());
+  contact_ = ContactJudge(options_.contact);
   if (options_.mission) {
     for (const ConstraintLayerSpec& l : options_.mission->layers) options_.layers[l.name] = l.areas;
   }
@@ -391,6 +392,7 @@ uint32_t BehaviorNode::control_mission(int64_t tick) {
   // Teammates' positions are known while in contact (as if they reported them), kept when lost.
   Perception p = perceive();
   for (TeammateState& t : p.teammates) {
+    t.in_contact = contact_.update(t.id, p.time_s, t.in_contact);
     const auto st = teammate_states_.find(t.id);
     if (t.in_contact && st != teammate_states_.end()) {
       last_known_position_[t.id] = geometry::Vec2(st->second.x, st->second.y);

@@ -22,6 +22,7 @@
 #include "services/behavior/core/constraint_sets.hpp"
 #include "services/behavior/core/go_to_controller.hpp"
 #include "services/behavior/core/goal_tracker.hpp"
+#include "services/behavior/core/mission/contact_judge.hpp"
 #include "services/behavior/core/mission/mission_executor.hpp"
 #include "services/behavior/core/plan_resource.hpp"
 
@@ -45,6 +46,7 @@ struct BehaviorNodeOptions {
   std::optional<PlanResource> plans;     // --plans
   std::optional<MissionSpec> mission;    // --mission: mission mode
   double contact_freshness_s = 5.0;      // team inbox: a teammate heard within this is in contact
+  ContactJudgeSettings contact;          // how long a link must stay down (up) to lose (regain) contact
 };
 
 class BehaviorNode {
@@ -82,6 +84,7 @@ class BehaviorNode {
   std::optional<GoalTracker> tracker_;
   std::optional<GoToController> controller_;
   std::optional<MissionExecutor> executor_;
+  ContactJudge contact_;  // the mission's view of contact: link flags with hysteresis
   std::optional<msg::NavGoal> queued_goal_;  // arrived before the robot was ready
   std::optional<int64_t> pending_tick_;
   bool stopped_robot_ = true;  // the last command sent was zero (or none was sent)
