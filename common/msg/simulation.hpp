@@ -47,6 +47,15 @@ struct MapRaster {
   std::vector<uint8_t> blocked;
 };
 
+// A doorway: `width` m centred at (x, y) along `heading` (rad, hinge to latch).
+struct MapDoor {
+  std::string id;
+  double x = 0.0;
+  double y = 0.0;
+  double width = 0.0;
+  double heading = 0.0;
+};
+
 struct WorldMap {
   std::string name;
   double width = 0.0;
@@ -54,6 +63,7 @@ struct WorldMap {
   std::vector<geometry::Rect> obstacles;
   std::vector<MapPolygon> polygons;
   std::vector<MapRaster> rasters;
+  std::vector<MapDoor> doors;
 };
 
 struct SimulatorStatus {

@@ -141,6 +141,7 @@ inline msg::WorldMap make_world_map(Variant v) {
     // First cell blocked (a leading empty run on the wire), runs of several lengths, last free.
     m.rasters = {{kUtf8B, -2.5, 3.0, 0.05, 4, 3, {1, 1, 0, 0, 0, 1, 0, 1, 1, 1, 1, 0}},
                  {"all free", 0.0, 0.0, 1.0, 2, 2, {0, 0, 0, 0}}};
+    m.doors = {{kUtf8C, 10.0, 3.0, 1.6, 1.5707963267948966}, {"", -1.5, 0.0, 0.9, -3.0}};
   }
   return m;
 }
@@ -367,7 +368,9 @@ inline auto fields(const msg::WorldMap& m) {
   }
   std::vector<std::tuple<std::string, double, double, double, uint32_t, uint32_t, std::vector<uint8_t>>> rasters;
   for (const auto& r : m.rasters) rasters.emplace_back(r.name, r.origin_x, r.origin_y, r.resolution, r.cols, r.rows, r.blocked);
-  return std::make_tuple(m.name, m.width, m.height, rects, polygons, rasters);
+  std::vector<std::tuple<std::string, double, double, double, double>> doors;
+  for (const auto& d : m.doors) doors.emplace_back(d.id, d.x, d.y, d.width, d.heading);
+  return std::make_tuple(m.name, m.width, m.height, rects, polygons, rasters, doors);
 }
 inline auto fields(const msg::SimulatorStatus& m) {
   return std::make_tuple(m.tick, m.sim_time_ns, m.robots, m.lockstep_participants, m.commands_applied,

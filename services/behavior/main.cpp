@@ -39,6 +39,10 @@ int main(int argc, char** argv) {
                        "Plan resource file (plan_tool build): stored plans used when goal and constraint set match");
         app.add_option("--layers", layers_file,
                        "Mission file whose constraint layers goals may name in constraint_set");
+        app.add_option("--door-memory", options.doors.memory_s,
+                       "Seconds a door seen closed is planned around without being seen again")
+            ->check(CLI::PositiveNumber)
+            ->capture_default_str();
         app.add_option("--contact-loss-after", options.contact.loss_after_s,
                        "Seconds a radio link must stay down before a mission counts the teammate as lost")
             ->check(CLI::NonNegativeNumber)

@@ -3,7 +3,7 @@
 namespace autonomy::sim {
 
 msg::WorldMap map_message(const WorldSpec& spec) {
-  msg::WorldMap m{spec.name, spec.width, spec.height, spec.obstacles, {}, {}};
+  msg::WorldMap m{spec.name, spec.width, spec.height, spec.obstacles, {}, {}, {}};
   for (const Polygon& p : spec.polygons) {
     msg::MapPolygon out{p.name, {}};
     for (const auto& v : p.vertices) out.vertices.push_back({v.x(), v.y()});
@@ -24,6 +24,7 @@ msg::WorldMap map_message(const WorldSpec& spec) {
     }
     m.rasters.push_back(std::move(out));
   }
+  for (const DoorSpec& d : spec.doors) m.doors.push_back({d.id, d.position.x(), d.position.y(), d.width, d.heading});
   return m;
 }
 

@@ -10,6 +10,7 @@
 //     73    WorldTest.TeamMessagesDroppedWhileDisconnected
 //     74    WorldTest.OfficeLoadAtADeskWithThePersonPresentCompletes
 //     75    WorldTest.OfficeRequestsNobodyCanServeAreRejectedWithReasons
+//     76    WorldTest.DoorSeenClosedIsAvoidedThroughAnotherDoor
 // (ctest names them integration.<suite>.<test>.)
 #include "tests/support/process_test.hpp"
 
@@ -36,6 +37,7 @@ enum Domain : int {
   kDomainTeamMessages = 73,
   kDomainOfficeLoad = 74,
   kDomainOfficeRejected = 75,
+  kDomainDoorDetour = 76,
 };
 
 
@@ -253,12 +255,15 @@ TEST_F(WorldTest, ClosedDoorStopsRobotUntilOpened) {
   EXPECT_TRUE(doors.all().front().closed);
   ASSERT_TRUE(send_goal(goal_writer, "r1", "through-door", 18.0, 3.0));
 
-  // The robot drives into the closed leaf and stays on the west side.
-  ASSERT_TRUE(await("r1 stopped in contact with the closed door", [&] {
+  // The robot heads for the doorway (doors are open until seen closed), sees d1 closed once within
+  // its door sensor's 4 m, has no other way east and gives the goal up with the door as reason.
+  ASSERT_TRUE(await("goal through-door blocked by the closed door", [&] {
     poll_all();
-    const auto s = last_state_of(states, "r1");
-    return s && s->in_collision && s->x > 9.0;
+    return ended(last_goal_state(goals, "through-door"));
   }, 60s));
+  const auto blocked = goals.matching([](const msg::GoalStatus& g) { return g.goal_id == "through-door"; }).back();
+  EXPECT_EQ(blocked.state, GoalState::Blocked);
+  EXPECT_EQ(blocked.reason, "no route to goal (18.00, 3.00): door d1 closed");
   const int64_t stopped_tick = last_state_of(states, "r1")->tick;
   ASSERT_TRUE(await("40 more ticks with the door closed", [&] {
     poll_all();
@@ -267,7 +272,12 @@ TEST_F(WorldTest, ClosedDoorStopsRobotUntilOpened) {
   for (const auto& s : states.all()) {
     if (s.robot_id != "r1") continue;
     ASSERT_LT(s.x, 10.0 - 0.025 - 0.3 + 1e-6) << "r1 passed the closed door at tick " << s.tick;
+    ASSERT_FALSE(s.in_collision) << "r1 ran into the door it had seen closed, at tick " << s.tick;
   }
+  const auto stopped = last_state_of(states, "r1");
+  EXPECT_NEAR(stopped->vx, 0.0, 1e-9);
+  EXPECT_NEAR(stopped->vy, 0.0, 1e-9);
+  EXPECT_LE(std::hypot(stopped->x - 10.0, stopped->y - 3.0), 4.0 + 1e-6) << "stopped where it saw the door";
   // What r1 perceived: range scans every tick, and the door (closed) once within range.
   ASSERT_FALSE(scans.all().empty());
   EXPECT_EQ(scans.all().back().ranges.size(), 16u);
@@ -291,12 +301,13 @@ TEST_F(WorldTest, ClosedDoorStopsRobotUntilOpened) {
     return !doors.matching([](const msg::DoorState& d) { return d.door_id == "d1" && !d.closed; }).empty();
   }));
 
-  // The goal may have been given up (blocked) while the door was closed: ask again then.
-  std::string goal_id = "through-door";
-  if (ended(last_goal_state(goals, goal_id))) {
-    goal_id = "through-door-again";
-    ASSERT_TRUE(send_goal(goal_writer, "r1", goal_id, 18.0, 3.0));
-  }
+  // The robot, still in sensor range, sees the door open: a new goal goes through it.
+  ASSERT_TRUE(await("r1 seeing d1 open", [&] {
+    poll_all();
+    return !sightings.all().empty() && sightings.all().back().doors.at(0).angle_estimate > 0.5;
+  }));
+  const std::string goal_id = "through-door-again";
+  ASSERT_TRUE(send_goal(goal_writer, "r1", goal_id, 18.0, 3.0));
   ASSERT_TRUE(await("r1 through the door and at its goal", [&] {
     poll_all();
     return last_goal_state(goals, goal_id) == GoalState::Reached;
@@ -305,6 +316,97 @@ TEST_F(WorldTest, ClosedDoorStopsRobotUntilOpened) {
   const auto last = last_state_of(states, "r1");
   ASSERT_TRUE(last);
   EXPECT_GT(last->x, 17.0);
+}
+
+// A wall at x = 10 with two doorways: d1 at y = 3 (closed) on the straight way from r1 to its goal,
+// d2 at y = 9 (open). Both swing into the east room; d2's open leaf lies along the wall north of
+// its doorway, out of the way of a robot heading south-east (plans do not know door leaves).
+constexpr const char* kTwoDoorScenario = R"pb(
+name: "two-doors"
+world {
+  width: 20.0
+  height: 12.0
+  obstacles { min_x: 9.9 min_y: 0.0 max_x: 10.1 max_y: 2.2 }
+  obstacles { min_x: 9.9 min_y: 3.8 max_x: 10.1 max_y: 8.2 }
+  obstacles { min_x: 9.9 min_y: 9.8 max_x: 10.1 max_y: 12.0 }
+}
+rooms { name: "west" }
+rooms { name: "east" }
+doors { id: "d1" position { x: 10.0 y: 3.0 } width: 1.6 heading: 1.5707963267948966 swing: CLOCKWISE
+        rooms: "west" rooms: "east" angle: 0.0 }
+doors { id: "d2" position { x: 10.0 y: 9.0 } width: 1.6 heading: -1.5707963267948966 swing: COUNTER_CLOCKWISE
+        rooms: "west" rooms: "east" }
+robots {
+  id: "r1"
+  kinematics: HOLONOMIC
+  radius: 0.3
+  max_speed: 1.0
+  max_omega: 2.0
+  start { x: 2.0 y: 3.0 theta: 0.0 }
+  spawn_at_start: true
+  sensors {
+    range { rays: 16 max_range_m: 6.0 }
+    doors { range_m: 4.0 }
+  }
+}
+simulation { mode: LOCKSTEP step_s: 0.05 seed: 3 }
+)pb";
+
+// Navigation for other services: a door seen closed on the way is planned around; the goal stays
+// active (no blocked status) and is reached through the other door.
+TEST_F(WorldTest, DoorSeenClosedIsAvoidedThroughAnotherDoor) {
+  join(kDomainDoorDetour);
+  const std::string scenario = dir().file("two-doors.pbtxt");
+  write_file(scenario, kTwoDoorScenario);
+  Recorder<msg::Heartbeat> beats(participant(), dds::topics::heartbeat);
+  Recorder<msg::RobotState> states(participant(), dds::topics::robot_state);
+  Recorder<msg::GoalStatus> goals(participant(), dds::topics::goal_status);
+  Recorder<msg::WorldMap> maps(participant(), dds::topics::world_map);
+  dds::Topic<msg::NavGoal> goal_topic(participant(), dds::topics::nav_goal);
+  dds::Writer<msg::NavGoal> goal_writer(participant(), goal_topic);
+  const auto poll_all = [&] {
+    states.poll();
+    goals.poll();
+    maps.poll();
+  };
+
+  start_simulator(scenario, {"--wait-for", "behavior/r1"});
+  auto& behavior = start_behavior("r1");
+  ASSERT_TRUE(await_ready(beats, behavior));
+  // The map tells where the doors are (not whether they are open).
+  ASSERT_TRUE(await("the map", [&] {
+    poll_all();
+    return !maps.all().empty();
+  }));
+  ASSERT_EQ(maps.all().back().doors.size(), 2u);
+  EXPECT_EQ(maps.all().back().doors[0].id, "d1");
+  EXPECT_DOUBLE_EQ(maps.all().back().doors[1].y, 9.0);
+
+  ASSERT_TRUE(send_goal(goal_writer, "r1", "east", 18.0, 3.0));
+  ASSERT_TRUE(await("goal east to end", [&] {
+    poll_all();
+    return ended(last_goal_state(goals, "east"));
+  }, 90s));
+  std::vector<GoalState> seen;
+  for (const auto& g : goals.matching([](const msg::GoalStatus& g) { return g.goal_id == "east"; }))
+    if (seen.empty() || seen.back() != g.state) seen.push_back(g.state);
+  EXPECT_EQ(seen, (std::vector<GoalState>{GoalState::Accepted, GoalState::Active, GoalState::Reached}));
+
+  bool passed_d2 = false;
+  double closest_to_d1 = 1e9;
+  for (const auto& s : states.all()) {
+    if (s.robot_id != "r1") continue;
+    EXPECT_FALSE(s.in_collision) << "tick " << s.tick;
+    if (std::fabs(s.x - 10.0) < 0.3) passed_d2 = passed_d2 || s.y > 8.0;
+    if (std::fabs(s.x - 10.0) < 0.3) EXPECT_GT(s.y, 8.0) << "through d1's doorway at tick " << s.tick;
+    closest_to_d1 = std::min(closest_to_d1, std::hypot(s.x - 10.0, s.y - 3.0));
+  }
+  EXPECT_TRUE(passed_d2);
+  // It set out for d1 (doors are open until seen) and turned away once it saw it closed.
+  EXPECT_LT(closest_to_d1, 4.0);
+  EXPECT_GT(closest_to_d1, 1.0);
+  const auto last = last_state_of(states, "r1");
+  EXPECT_LE(std::hypot(last->x - 18.0, last->y - 3.0), 0.2 + 0.05);
 }
 
 // (b) r2 drives behind a building: its link to r1 is lost, and comes back as it returns. The run

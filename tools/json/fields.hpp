@@ -234,6 +234,19 @@ struct Fields<msg::MapRaster> {
 };
 
 template <>
+struct Fields<msg::MapDoor> {
+  static constexpr const char* name = "MapDoor";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("id", m.id);
+    v.field("x", m.x);
+    v.field("y", m.y);
+    v.field("width", m.width);
+    v.field("heading", m.heading);
+  }
+};
+
+template <>
 struct Fields<msg::WorldMap> {
   static constexpr const char* name = "WorldMap";
   template <typename V, typename M>
@@ -244,6 +257,7 @@ struct Fields<msg::WorldMap> {
     v.field("obstacles", m.obstacles);
     v.field("polygons", m.polygons);
     v.field("rasters", m.rasters);
+    v.field("doors", m.doors);
   }
 };
 

@@ -109,6 +109,14 @@ void DdsType<msg::WorldMap>::to_c(const msg::WorldMap& v, C& out, Arena& arena) 
     rasters[i].runs = {nruns, nruns, buffer, false};
   }
   out.rasters = {nr, nr, rasters, false};
+
+  const uint32_t nd = static_cast<uint32_t>(v.doors.size());
+  auto* doors = arena.allocate<autonomy_MapDoor>(nd);
+  for (uint32_t i = 0; i < nd; ++i) {
+    const auto& d = v.doors[i];
+    doors[i] = {c_str(d.id), d.x, d.y, d.width, d.heading};
+  }
+  out.doors = {nd, nd, doors, false};
 }
 
 msg::WorldMap DdsType<msg::WorldMap>::from_c(const C& in) {
@@ -144,6 +152,10 @@ msg::WorldMap DdsType<msg::WorldMap>::from_c(const C& in) {
       raster.blocked.clear();
     }
     v.rasters.push_back(std::move(raster));
+  }
+  for (uint32_t i = 0; i < in.doors._length; ++i) {
+    const auto& d = in.doors._buffer[i];
+    v.doors.push_back({from_c_str(d.id), d.x, d.y, d.width, d.heading});
   }
   return v;
 }

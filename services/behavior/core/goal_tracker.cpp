@@ -10,6 +10,11 @@ namespace autonomy::behavior {
 
 namespace {
 
+void require_same_geometry(const GridGeometry& a, const GridGeometry& b, const char* what) {
+  if (a.cols() != b.cols() || a.rows() != b.rows() || a.resolution_m() != b.resolution_m())
+    throw std::invalid_argument(std::string(what) + " geometry differs from the tracker's grid");
+}
+
 bool positive_finite(double v) { return std::isfinite(v) && v > 0.0; }
 
 template <typename... Args>
@@ -82,12 +87,39 @@ GoalReport GoalTracker::set_goal(const std::string& goal_id, double x, double y,
                                  double now_s, CostToGoField field) {
   const geometry::Vec2 goal(x, y);
   if (auto rejection = validate(goal_id, x, y, tolerance_m)) return rejected(goal_id, goal, std::move(*rejection));
-  const GridGeometry& a = field.geometry();
-  const GridGeometry& b = grid_.geometry();
-  if (a.cols() != b.cols() || a.rows() != b.rows() || a.resolution_m() != b.resolution_m()) {
-    throw std::invalid_argument("goal field geometry differs from the tracker's grid");
-  }
+  require_same_geometry(field.geometry(), grid_.geometry(), "goal field");
   return pursue(goal_id, goal, tolerance_m, now_s, std::move(field));
+}
+
+void GoalTracker::set_grid(OccupancyGrid grid) {
+  require_same_geometry(grid.geometry(), grid_.geometry(), "new grid");
+  grid_ = std::move(grid);
+}
+
+std::optional<GoalTracker::Target> GoalTracker::target() const {
+  if (!pursued_) return std::nullopt;
+  return Target{pursued_->id, pursued_->goal, pursued_->tolerance_m};
+}
+
+GoalReport GoalTracker::replan(CostToGoField field, double now_s, const std::string& why_no_route) {
+  GoalReport report;
+  if (pursued_) {
+    require_same_geometry(field.geometry(), grid_.geometry(), "replanned field");
+    Pursuit& p = *pursued_;
+    p.field = std::move(field);
+    const double remaining =
+        last_position_ ? remaining_path_m(p, *last_position_) : std::numeric_limits<double>::infinity();
+    const bool arrived = last_position_ && (p.goal - *last_position_).norm() <= p.tolerance_m;
+    if (last_position_ && !arrived && !std::isfinite(remaining)) {
+      end_pursuit(GoalState::Blocked,
+                  format("no route to goal (%.2f, %.2f): ", p.goal.x(), p.goal.y()) + why_no_route, report);
+    } else {
+      p.best_remaining_m = remaining;
+      p.last_progress_s = now_s;
+    }
+  }
+  report.current = status_;
+  return report;
 }
 
 GoalReport GoalTracker::reject(const std::string& goal_id, double x, double y, std::string reason) {

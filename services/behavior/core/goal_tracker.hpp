@@ -63,6 +63,22 @@ class GoalTracker {
   [[nodiscard]] GoalReport set_goal(const std::string& goal_id, double x, double y,
                                     double tolerance_m, double now_s, CostToGoField field);
 
+  // What the robot knows of the world changed (a door seen closed or open again): later goals are
+  // planned on `grid`. Throws std::invalid_argument when its geometry differs from grid()'s.
+  void set_grid(OccupancyGrid grid);
+  // The pursued goal's route changed: follow `field` from now on (same geometry as grid()). When
+  // the robot's last position has no route on it, the goal ends Blocked with "no route to goal
+  // (x, y): " + why_no_route; otherwise the stall clock restarts (a detour is progress anew).
+  // Without a pursued goal nothing changes.
+  [[nodiscard]] GoalReport replan(CostToGoField field, double now_s, const std::string& why_no_route);
+  // The pursued goal: its id, target and effective tolerance, to replan it.
+  struct Target {
+    std::string id;
+    geometry::Vec2 goal;
+    double tolerance_m = 0.0;
+  };
+  std::optional<Target> target() const;
+
   // Rejects a goal for a reason found outside the tracker (e.g. an unknown constraint set), with
   // the same policy as a malformed goal: the pursued goal carries on.
   [[nodiscard]] GoalReport reject(const std::string& goal_id, double x, double y, std::string reason);

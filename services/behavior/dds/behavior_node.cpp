@@ -41,7 +41,7 @@ const char* event_name(MissionEvent::Kind k) {
 // The map sample as the planner's world. Shapes another process got wrong (a crossing polygon,
 // a raster whose cells do not add up) are left out with a warning rather than stopping the robot.
 WorldMap world_of(const msg::WorldMap& m) {
-  WorldMap w{m.width, m.height, {}, {}, {}};
+  WorldMap w{m.width, m.height, {}, {}, {}, {}};
   for (const auto& r : m.obstacles) {
     if (r.valid() && std::isfinite(r.min_x) && std::isfinite(r.min_y) && std::isfinite(r.max_x) &&
         std::isfinite(r.max_y)) {
@@ -77,6 +77,15 @@ WorldMap world_of(const msg::WorldMap& m) {
     }
     w.rasters.push_back(std::move(raster));
   }
+  for (const auto& d : m.doors) {
+    if (d.id.empty() || !std::isfinite(d.x) || !std::isfinite(d.y) || !std::isfinite(d.width) || d.width <= 0.0 ||
+        !std::isfinite(d.heading)) {
+      spdlog::warn("map '{}': door '{}' ignored: doorway ({}, {}) width {} heading {}", m.name, d.id, d.x, d.y, d.width,
+                   d.heading);
+      continue;
+    }
+    w.doors.push_back({d.id, geometry::Vec2(d.x, d.y), d.width, d.heading});
+  }
   return w;
 }
 
@@ -100,6 +109,8 @@ BehaviorNode::BehaviorNode(service::Service& service, BehaviorNodeOptions option
       goal_reader_(service.participant(), goal_topic_),
       cancel_reader_(service.participant(), cancel_topic_),
       spawn_reply_reader_(service.participant(), spawn_reply_topic_),
+      door_topic_(service.participant(), dds::topics::door_observation),
+      door_reader_(service.participant(), door_topic_),
       goal_status_writer_(service.participant(), goal_status_topic_),
       mission_status_writer_(service.participant(), mission_status_topic_),
       cmd_writer_(service.participant(), cmd_topic_),
@@ -108,6 +119,7 @@ BehaviorNode::BehaviorNode(service::Service& service, BehaviorNodeOptions option
                 [this](const msg::SimClock& c) { on_tick(c); }) {
   spawn_request_id_ = options_.robot_id + "@" + std::to_string(getpid());
   contact_ = ContactJudge(options_.contact);
+  doors_ = DoorKnowledge(options_.doors);
   if (options_.mission) {
     for (const ConstraintLayerSpec& l : options_.mission->layers) options_.layers[l.name] = l.areas;
   }
@@ -117,6 +129,12 @@ BehaviorNode::BehaviorNode(service::Service& service, BehaviorNodeOptions option
   loop.on_samples<msg::WorldMap>(map_reader_, [this](auto s) { on_map(std::move(s)); });
   loop.on_samples<msg::NavGoal>(goal_reader_, [this](auto s) { on_goals(std::move(s)); });
   loop.on_samples<msg::NavCancel>(cancel_reader_, [this](auto s) { on_cancels(std::move(s)); });
+  loop.on_samples<msg::DoorObservation>(door_reader_, [this](auto samples) {
+    for (const auto& s : samples) {
+      if (!s.valid || s.value.robot_id != options_.robot_id || options_.mission) continue;
+      for (const auto& d : s.value.doors) door_sightings_.push_back({d.door_id, d.angle_estimate});
+    }
+  });
 
   if (options_.mission) {
     const auto& p = service.participant();
@@ -210,7 +228,8 @@ void BehaviorNode::on_map(std::vector<dds::Sample<msg::WorldMap>> samples) {
 void BehaviorNode::become_ready_when_possible() {
   if (ready() || !spawned_ || !state_ || !map_) return;
   const msg::RobotState& st = *state_;
-  const WorldMap world = world_of(*map_);
+  world_ = world_of(*map_);
+  const WorldMap& world = world_;
   // The grid keeps the robot's centre one resolution step further from obstacles than its
   // radius, so that rounding to cells never plans a path that grazes a wall.
   const double inflation = st.radius + options_.grid_resolution_m;
@@ -294,29 +313,61 @@ void BehaviorNode::accept_goal(const msg::NavGoal& goal) {
   }
   const OccupancyGrid& grid = tracker_->grid();
   const geometry::Vec2 target(goal.x, goal.y);
-  if (options_.plans) {
+  // Stored plans were computed with every door open: only while no door is known closed.
+  if (options_.plans && doors_.closed().empty()) {
     if (const StoredPlan* stored = options_.plans->match(target, set->name(), grid.geometry(), grid.inflation_radius_m())) {
       if (!stored->map_name.empty() && map_ && stored->map_name != map_->name) {
         spdlog::warn("stored plan '{}' was computed on map '{}', not '{}': computing instead", stored->name,
                      stored->map_name, map_->name);
       } else {
         spdlog::info("goal {}: using stored plan '{}' ({})", goal.goal_id, stored->name, stored->constraint_set);
+        pursued_constraints_ = *set;
         publish(tracker_->set_goal(goal.goal_id, goal.x, goal.y, goal.tolerance, now_s, stored->field()));
         return;
       }
     }
   }
   if (set->layers.empty()) {
+    pursued_constraints_ = *set;
     publish(tracker_->set_goal(goal.goal_id, goal.x, goal.y, goal.tolerance, now_s));
     return;
   }
-  const auto world = apply_constraints(world_of(*map_), *set, options_.layers, &error);
-  if (!world) {
+  auto field = field_for(target, *set, &error);
+  if (!field) {
     publish(tracker_->reject(goal.goal_id, goal.x, goal.y, error));
     return;
   }
-  OccupancyGrid constrained(*world, grid.geometry().resolution_m(), grid.inflation_radius_m());
-  publish(tracker_->set_goal(goal.goal_id, goal.x, goal.y, goal.tolerance, now_s, CostToGoField(constrained, target)));
+  pursued_constraints_ = *set;
+  publish(tracker_->set_goal(goal.goal_id, goal.x, goal.y, goal.tolerance, now_s, std::move(*field)));
+}
+
+std::optional<CostToGoField> BehaviorNode::field_for(const geometry::Vec2& target, const ConstraintSet& set,
+                                                     std::string* error) const {
+  const OccupancyGrid& grid = tracker_->grid();  // the obstacles and the doors known closed
+  if (set.layers.empty()) return CostToGoField(grid, target);
+  const auto world = apply_constraints(doors_.apply(world_), set, options_.layers, error);
+  if (!world) return std::nullopt;
+  const OccupancyGrid constrained(*world, grid.geometry().resolution_m(), grid.inflation_radius_m());
+  return CostToGoField(constrained, target);
+}
+
+void BehaviorNode::update_door_knowledge(double now_s) {
+  const std::vector<DoorSighting> sightings = std::move(door_sightings_);
+  door_sightings_.clear();
+  if (!doors_.update(sightings, now_s, world_)) return;
+  const std::vector<std::string> closed = doors_.closed();
+  spdlog::info("robot {}: {}; replanning", options_.robot_id, describe_closed_doors(closed));
+  const OccupancyGrid& old = tracker_->grid();
+  tracker_->set_grid(OccupancyGrid(doors_.apply(world_), old.geometry().resolution_m(), old.inflation_radius_m()));
+  const auto target = tracker_->target();
+  if (!target || !pursued_constraints_) return;
+  std::string error;
+  auto field = field_for(target->goal, *pursued_constraints_, &error);
+  if (!field) {  // the layers were known when the goal was accepted; keep the current route
+    spdlog::warn("goal {}: cannot replan: {}", target->id, error);
+    return;
+  }
+  publish(tracker_->replan(std::move(*field), now_s, describe_closed_doors(closed)));
 }
 
 void BehaviorNode::on_tick(const msg::SimClock& clock) {
@@ -338,6 +389,7 @@ uint32_t BehaviorNode::control_goal(int64_t tick) {
   const geometry::Pose2 pose{state_->x, state_->y, state_->theta};
   const double now_s = static_cast<double>(state_->sim_time_ns) * 1e-9;
   publish(tracker_->update(pose, now_s, state_->in_collision));
+  update_door_knowledge(now_s);
 
   if (tracker_->active()) {
     const GoToDecision decision = controller_->command(pose, *tracker_->field(), tracker_->tolerance_m());

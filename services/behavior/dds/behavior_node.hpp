@@ -22,6 +22,7 @@
 #include "services/behavior/core/constraint_sets.hpp"
 #include "services/behavior/core/go_to_controller.hpp"
 #include "services/behavior/core/goal_tracker.hpp"
+#include "services/behavior/core/door_knowledge.hpp"
 #include "services/behavior/core/mission/contact_judge.hpp"
 #include "services/behavior/core/mission/mission_executor.hpp"
 #include "services/behavior/core/plan_resource.hpp"
@@ -47,6 +48,7 @@ struct BehaviorNodeOptions {
   std::optional<MissionSpec> mission;    // --mission: mission mode
   double contact_freshness_s = 5.0;      // team inbox: a teammate heard within this is in contact
   ContactJudgeSettings contact;          // how long a link must stay down (up) to lose (regain) contact
+  DoorKnowledgeSettings doors;           // goal mode: doors seen closed are planned around
 };
 
 class BehaviorNode {
@@ -63,6 +65,12 @@ class BehaviorNode {
   void on_tick(const msg::SimClock& clock);
   void become_ready_when_possible();
   void accept_goal(const msg::NavGoal& goal);
+  // The field towards `target` honouring `constraint_set` on what the robot knows now (closed
+  // doors included); sets *error and returns nullopt for an unknown constraint layer.
+  std::optional<CostToGoField> field_for(const geometry::Vec2& target, const ConstraintSet& set, std::string* error) const;
+  // Goal mode, once per tick: folds this tick's door sightings in; when the set of closed doors
+  // changed, later goals plan on the new grid and the pursued goal is replanned (or blocked).
+  void update_door_knowledge(double now_s);
   // Computes and sends the command for pending_tick_ once the state of that tick is here.
   void control_pending_tick();
   uint32_t control_goal(int64_t tick);
@@ -81,6 +89,10 @@ class BehaviorNode {
   std::optional<msg::RobotState> state_;
   std::map<std::string, msg::RobotState> teammate_states_;  // last state per teammate id
   std::optional<msg::WorldMap> map_;
+  WorldMap world_;                     // map_ as the planner's world (doors open)
+  DoorKnowledge doors_;                // goal mode: what this robot saw of the doors
+  std::vector<DoorSighting> door_sightings_;  // this robot's, since the last tick
+  std::optional<ConstraintSet> pursued_constraints_;  // of the goal being pursued
   std::optional<GoalTracker> tracker_;
   std::optional<GoToController> controller_;
   std::optional<MissionExecutor> executor_;
@@ -111,6 +123,8 @@ class BehaviorNode {
   dds::Reader<msg::NavGoal> goal_reader_;
   dds::Reader<msg::NavCancel> cancel_reader_;
   dds::Reader<msg::SpawnReply> spawn_reply_reader_;
+  dds::Topic<msg::DoorObservation> door_topic_;
+  dds::Reader<msg::DoorObservation> door_reader_;
   dds::Writer<msg::GoalStatus> goal_status_writer_;
   dds::Writer<msg::MissionStatus> mission_status_writer_;
   dds::Writer<msg::VelocityCommand> cmd_writer_;

@@ -92,7 +92,7 @@ TEST(MsgJson, FieldsKeepTheirTypesAndOrder) {
   const Json j = to_json(world_map());
   EXPECT_EQ(j.dump(),
             R"({"name":"office","width":60.0,"height":20.0,"obstacles":[{"min_x":0.0,"min_y":0.0,"max_x":1.0,)"
-            R"("max_y":1.0},{"min_x":2.5,"min_y":3.5,"max_x":4.5,"max_y":5.5}],"polygons":[],"rasters":[]})");
+            R"("max_y":1.0},{"min_x":2.5,"min_y":3.5,"max_x":4.5,"max_y":5.5}],"polygons":[],"rasters":[],"doors":[]})");
   EXPECT_TRUE(to_json(heartbeat())["pid"].is_number_integer());
   EXPECT_TRUE(to_json(robot_state())["in_collision"].is_boolean());
 }

@@ -1,0 +1,52 @@
+#pragma once
+// What one robot knows about the doors of its map, from its own door sightings: a door it saw
+// closed blocks its doorway in the robot's plans; a door it has not seen, or saw open, is assumed
+// open (the courier robots' optimism: plan through doors, find out on the way). A closed-door
+// belief is forgotten after `memory_s` without a sighting, so a door that reopened out of sight
+// is tried again instead of being avoided for ever.
+#include "common/geometry/geometry.hpp"
+#include "services/behavior/core/world_map.hpp"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace autonomy::behavior {
+
+struct DoorKnowledgeSettings {
+  double closed_below_rad = 0.35;  // an opening narrower than this (about 20 degrees) is closed
+  double memory_s = 120.0;         // > 0: how long a closed door is believed closed unseen
+  double thickness_m = 0.2;        // > 0: the doorway blocked as a slab this thick
+};
+
+struct DoorSighting {
+  std::string door_id;
+  double angle_estimate = 0.0;  // rad, 0 = closed
+};
+
+class DoorKnowledge {
+ public:
+  // Throws std::invalid_argument on non-finite or non-positive settings.
+  explicit DoorKnowledge(DoorKnowledgeSettings settings = {});
+
+  // Takes the sightings of one tick (ids not on the map are ignored: the caller warns) and lets
+  // beliefs older than memory_s lapse. Returns true when the set of closed doors changed.
+  bool update(const std::vector<DoorSighting>& sightings, double now_s, const WorldMap& map);
+
+  // Ids of the doors believed closed, sorted.
+  std::vector<std::string> closed() const;
+  bool believed_closed(const std::string& id) const { return closed_since_.count(id) != 0; }
+
+  // `map` with a slab across the doorway of every door believed closed (as a polygon named after
+  // the door), so a grid built from it plans around closed doors.
+  WorldMap apply(const WorldMap& map) const;
+
+ private:
+  DoorKnowledgeSettings settings_;
+  std::map<std::string, double> closed_since_;  // id -> time of the last sighting closed
+};
+
+// "door d1 closed", "doors d1, d2 closed": for reasons in goal statuses and logs.
+std::string describe_closed_doors(const std::vector<std::string>& ids);
+
+}  // namespace autonomy::behavior

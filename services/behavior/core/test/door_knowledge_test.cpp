@@ -1,0 +1,105 @@
+// Door knowledge and replanning around doors seen closed: a wall at x = 5 with two doorways,
+// d1 at y = 2 and d2 at y = 8 (each 1.6 m wide, heading north along the wall).
+#include "services/behavior/core/door_knowledge.hpp"
+#include "services/behavior/core/goal_tracker.hpp"
+#include "services/behavior/core/occupancy_grid.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace autonomy::behavior {
+namespace {
+
+using geometry::Rect;
+using geometry::Vec2;
+
+WorldMap two_doors() {
+  WorldMap w{10.0, 10.0};
+  w.obstacles = {Rect{4.9, 0.0, 5.1, 1.2}, Rect{4.9, 2.8, 5.1, 7.2}, Rect{4.9, 8.8, 5.1, 10.0}};
+  w.doors = {{"d1", Vec2(5.0, 2.0), 1.6, M_PI / 2}, {"d2", Vec2(5.0, 8.0), 1.6, M_PI / 2}};
+  return w;
+}
+
+float cost_from(const WorldMap& w, Vec2 from, Vec2 to) {
+  const CostToGoField field(OccupancyGrid(w, 0.1, 0.35), to);
+  return field.cost_at(from);
+}
+
+TEST(DoorKnowledge, DoorsAreOpenUntilSeenClosed) {
+  DoorKnowledge k;
+  const WorldMap w = two_doors();
+  EXPECT_TRUE(k.closed().empty());
+  EXPECT_FALSE(k.update({}, 0.0, w));
+  EXPECT_TRUE(k.update({{"d1", 0.0}}, 1.0, w));
+  EXPECT_EQ(k.closed(), (std::vector<std::string>{"d1"}));
+  EXPECT_FALSE(k.update({{"d1", 0.1}}, 2.0, w));  // still closed (0.1 rad): no change
+  EXPECT_FALSE(k.update({{"d2", 1.2}}, 2.0, w));  // seen open: it was believed open already
+  EXPECT_TRUE(k.update({{"d1", 1.5}}, 3.0, w));   // seen open again
+  EXPECT_TRUE(k.closed().empty());
+}
+
+TEST(DoorKnowledge, UnknownDoorsAndNonFiniteAnglesAreIgnored) {
+  DoorKnowledge k;
+  EXPECT_FALSE(k.update({{"d9", 0.0}, {"d1", std::nan("")}}, 0.0, two_doors()));
+  EXPECT_TRUE(k.closed().empty());
+}
+
+TEST(DoorKnowledge, AClosedDoorUnseenForTheMemoryTimeIsTriedAgain) {
+  DoorKnowledge k({0.35, 60.0, 0.2});
+  const WorldMap w = two_doors();
+  k.update({{"d1", 0.0}}, 10.0, w);
+  EXPECT_FALSE(k.update({}, 70.0, w));
+  EXPECT_TRUE(k.believed_closed("d1"));
+  EXPECT_TRUE(k.update({}, 70.1, w));
+  EXPECT_FALSE(k.believed_closed("d1"));
+}
+
+TEST(DoorKnowledge, ClosedDoorsBlockTheirDoorwayInPlans) {
+  DoorKnowledge k;
+  const WorldMap w = two_doors();
+  const Vec2 west(2.0, 2.0), east(8.0, 2.0);
+  const float open = cost_from(k.apply(w), west, east);
+  EXPECT_NEAR(open, 6.0, 0.3);  // straight through d1
+  k.update({{"d1", 0.0}}, 0.0, w);
+  EXPECT_EQ(k.apply(w).polygons.size(), 1u);
+  const float detour = cost_from(k.apply(w), west, east);
+  EXPECT_GT(detour, 12.0);  // up to d2 and back down
+  EXPECT_TRUE(std::isfinite(detour));
+  k.update({{"d2", 0.0}}, 0.0, w);
+  EXPECT_FALSE(std::isfinite(cost_from(k.apply(w), west, east)));
+  EXPECT_EQ(describe_closed_doors(k.closed()), "doors d1, d2 closed");
+  EXPECT_EQ(describe_closed_doors({"d1"}), "door d1 closed");
+  EXPECT_THROW(DoorKnowledge({0.0, 1.0, 1.0}), std::invalid_argument);
+}
+
+TEST(GoalTrackerReplan, DetourKeepsTheGoalAndNoRouteBlocksItWithTheReason) {
+  const WorldMap w = two_doors();
+  GoalTracker tracker(OccupancyGrid(w, 0.1, 0.35));
+  ASSERT_EQ(tracker.set_goal("g", 8.0, 2.0, 0.2, 0.0).changes.size(), 1u);
+  ASSERT_EQ(tracker.update({2.0, 2.0, 0.0}, 0.1).current->state, GoalState::Active);
+  EXPECT_EQ(tracker.target()->id, "g");
+
+  DoorKnowledge k;
+  k.update({{"d1", 0.0}}, 0.2, w);
+  const OccupancyGrid one_closed(k.apply(w), 0.1, 0.35);
+  tracker.set_grid(one_closed);
+  GoalReport r = tracker.replan(CostToGoField(one_closed, Vec2(8.0, 2.0)), 0.2, describe_closed_doors(k.closed()));
+  EXPECT_TRUE(r.changes.empty());
+  EXPECT_TRUE(tracker.active());
+  EXPECT_GT(tracker.field()->cost_at(Vec2(2.0, 2.0)), 12.0f);  // the detour through d2
+
+  k.update({{"d2", 0.0}}, 0.3, w);
+  const OccupancyGrid both_closed(k.apply(w), 0.1, 0.35);
+  r = tracker.replan(CostToGoField(both_closed, Vec2(8.0, 2.0)), 0.3, describe_closed_doors(k.closed()));
+  ASSERT_EQ(r.changes.size(), 1u);
+  EXPECT_EQ(r.changes[0].state, GoalState::Blocked);
+  EXPECT_EQ(r.changes[0].reason, "no route to goal (8.00, 2.00): doors d1, d2 closed");
+  EXPECT_FALSE(tracker.active());
+  EXPECT_TRUE(tracker.replan(CostToGoField(both_closed, Vec2(8.0, 2.0)), 0.4, "x").changes.empty());
+  EXPECT_THROW(tracker.set_grid(OccupancyGrid(w, 0.2, 0.35)), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace autonomy::behavior
