@@ -31,7 +31,7 @@ Options:
 
 A set file has one process per line: NAME (service/instance as its heartbeat reports it), then
 the program and its arguments. Lines starting with # are comments. {run} in an argument stands
-for the run folder. launch.sh adds --domain and --log-dir RUN_DIR to each.
+for the run folder, {repo} for the repository. launch.sh adds --domain and --log-dir RUN_DIR to each.
 USAGE
 }
 
@@ -130,7 +130,7 @@ while IFS= read -r line || [ -n "$line" ]; do
   [ -x "$bin/$program" ] || { echo "launch: $set_file:$line_no: program $bin/$program not found" >&2; stop_set "$run_dir" >/dev/null 2>&1 || true; exit 2; }
   file_name=${name//\//-}
   args=()
-  for w in "${words[@]:2}"; do args+=("${w//\{run\}/$run_dir}"); done
+  for w in "${words[@]:2}"; do w="${w//\{run\}/$run_dir}"; args+=("${w//\{repo\}/$repo}"); done
   # setsid: the processes do not share the terminal's process group, so only this script decides
   # how they are stopped (one SIGINT each), also when it runs detached.
   setsid "$bin/$program" "${args[@]}" --domain "$domain" --log-dir "$run_dir" \

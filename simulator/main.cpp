@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   std::string metrics;
   int radio_period = 1;
   bool stop_when_finished = false;
+  bool without_robots = false;
   return service::run_service(
       argc, argv, "simulator", "World and clock simulator: robots, obstacles, lockstep or paced time",
       service::InstanceFlag::Instance,
@@ -34,6 +35,8 @@ int main(int argc, char** argv) {
         app.add_option("--radio-period", radio_period, "Recompute the radio link table every N ticks")
             ->check(CLI::PositiveNumber)
             ->option_text("N (1)");
+        app.add_flag("--without-robots", without_robots,
+                     "Spawn none of the scenario's robots at the start: controllers attach their own");
         app.add_flag("--stop-when-finished", stop_when_finished,
                      "Stop once every robot reports its mission finished (or its goal reached)");
         app.add_option("--mode", mode_override, "Override the scenario's clock mode")
@@ -50,6 +53,7 @@ int main(int argc, char** argv) {
           std::cerr << loaded.error_text();
           throw std::runtime_error("scenario has " + std::to_string(loaded.errors.size()) + " error(s)");
         }
+        if (without_robots) loaded.scenario->world.robots_at_start.clear();
         sim::SimulatorRunOptions run;
         run.settings = loaded.scenario->simulation;
         if (mode_override == "lockstep") run.settings.mode = sim::ClockMode::Lockstep;

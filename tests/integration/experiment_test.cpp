@@ -76,6 +76,12 @@ TEST_F(ExperimentTest, SmallRunWritesCsvReportAndPictures) {
     EXPECT_EQ(rows_per_configuration[c.id], 2) << c.id;
   }
   EXPECT_EQ(order, expected_order);
+  // Only the three controllers' robots took part: the scenario's own scouts were not spawned.
+  for (const auto& c : stats::table1_configurations()) {
+    const std::string metrics = read_file(out + "/" + c.id + "-0.json");
+    for (const char* robot : {"\"r1\"", "\"r2\"", "\"r3\""}) EXPECT_NE(metrics.find(robot), std::string::npos) << c.id;
+    EXPECT_EQ(metrics.find("scout"), std::string::npos) << c.id;
+  }
   EXPECT_EQ(seeds.size(), 12u) << "every trial has its own seed";
 
   // Report: every configuration with n = 2, every compared pair with a t-test, six pictures.

@@ -137,13 +137,11 @@ int main(int argc, char** argv) {
     fs::create_directories(out / "logs");
     setup.out_dir = fs::absolute(out);
     setup.missions_dir = fs::path(o.source_dir) / "deploy/missions";
-    setup.scenario = setup.out_dir / "scenario.pbtxt";
+    setup.scenario = fs::absolute(fs::path(o.source_dir) / o.scenario);
     setup.timeout = std::chrono::seconds(timeout_s);
     // All children on this host: the loopback profile unless the caller chose one.
     if (std::getenv("CYCLONEDDS_URI") == nullptr)
       setup.dds_uri = "file://" + (fs::path(o.source_dir) / "deploy/dds/loopback.xml").string();
-    write_text(setup.scenario,
-               autonomy::experiments::scenario_for_attached_robots(fs::path(o.source_dir) / o.scenario));
 
     const std::vector<PlannedTrial> planned = plan_trials(o);
     std::vector<std::optional<TrialRecord>> results(planned.size());

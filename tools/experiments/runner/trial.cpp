@@ -10,7 +10,6 @@
 #include <fstream>
 #include <list>
 #include <random>
-#include <regex>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -71,8 +70,8 @@ stats::TrialRecord run_trial(const TrialSetup& setup, const std::string& configu
   if (!setup.dds_uri.empty()) env["CYCLONEDDS_URI"] = setup.dds_uri;
   const std::string dom = std::to_string(domain);
 
-  std::vector<std::string> sim_args = {"--config", setup.scenario.string(), "--domain", dom, "--log-dir",
-                                       logs.string(), "--max-ticks", std::to_string(setup.max_ticks),
+  std::vector<std::string> sim_args = {"--config", setup.scenario.string(), "--without-robots", "--domain", dom,
+                                       "--log-dir", logs.string(), "--max-ticks", std::to_string(setup.max_ticks),
                                        "--stop-when-finished", "--metrics", (setup.out_dir / stem).string(),
                                        "--svg", (setup.out_dir / (stem + ".svg")).string(), "--wait-for"};
   for (const auto& r : setup.robots) sim_args.push_back("behavior/" + r);
@@ -121,31 +120,6 @@ stats::TrialRecord run_trial(const TrialSetup& setup, const std::string& configu
   rec.coverage_percent = j.at("team").at("percent_covered").get<double>();
   rec.all_finished = j.at("team").at("all_finished").get<bool>();
   return rec;
-}
-
-std::string scenario_for_attached_robots(const fs::path& scenario) {
-  const std::string text = read_text(scenario);
-  std::string out;
-  size_t i = 0;
-  while (i < text.size()) {
-    const bool line_start = i == 0 || text[i - 1] == '\n';
-    if (line_start && text.compare(i, 6, "robots") == 0) {  // a top-level block: skip it, brace-matched
-      const size_t open = text.find('{', i);
-      if (open == std::string::npos) break;
-      int depth = 0;
-      size_t j = open;
-      for (; j < text.size(); ++j) {
-        if (text[j] == '{') ++depth;
-        if (text[j] == '}' && --depth == 0) break;
-      }
-      i = j + 1;
-      continue;
-    }
-    out += text[i++];
-  }
-  const std::string base = fs::absolute(scenario).parent_path().string() + "/";
-  static const std::regex kYaml(R"re(yaml:\s*"([^/"][^"]*)")re");
-  return std::regex_replace(out, kYaml, "yaml: \"" + base + "$1\"");
 }
 
 }  // namespace autonomy::experiments

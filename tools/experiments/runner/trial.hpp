@@ -16,7 +16,7 @@ namespace autonomy::experiments {
 struct TrialSetup {
   std::string bin_dir;                   // simulator and behavior
   std::filesystem::path missions_dir;    // <configuration>_<robot>.pbtxt
-  std::filesystem::path scenario;        // without robots of its own (see scenario_for_attached_robots)
+  std::filesystem::path scenario;        // its own robots are not spawned (--without-robots)
   std::filesystem::path out_dir;         // metrics, pictures; logs/ below it
   std::string dds_uri;                   // CYCLONEDDS_URI of the children ("" inherits)
   std::vector<std::string> robots = {"r1", "r2", "r3"};
@@ -38,9 +38,5 @@ std::vector<double> start_positions(const TrialSetup& setup, std::uint64_t seed)
 // when a process fails or the trial times out.
 stats::TrialRecord run_trial(const TrialSetup& setup, const std::string& configuration, int trial,
                              std::uint64_t seed, int domain);
-
-// The scenario text without its top-level `robots { ... }` blocks (the behaviors attach their
-// own) and with relative map paths made absolute, so that the copy can live anywhere.
-std::string scenario_for_attached_robots(const std::filesystem::path& scenario);
 
 }  // namespace autonomy::experiments

@@ -1,7 +1,5 @@
-// The runner's pure parts: where the robots start, and the scenario copy the trials run on.
+// The runner's pure part: where the robots start.
 #include "tools/experiments/runner/trial.hpp"
-
-#include "simulator/scenario/scenario_loader.hpp"
 
 #include <gtest/gtest.h>
 
@@ -40,20 +38,6 @@ TEST(StartPositions, TightSpacingStillFitsAndImpossibleSpacingThrows) {
   EXPECT_GE(xs[2] - xs[1], 4.9);
   setup.min_start_spacing_m = 5.1;
   EXPECT_THROW(start_positions(setup, 7), std::invalid_argument);
-}
-
-TEST(ScenarioForAttachedRobots, ReconWithoutItsRobotsAndWithAnAbsoluteMapPath) {
-  const std::string text =
-      scenario_for_attached_robots(std::string(AUTONOMY_SOURCE_DIR) + "/deploy/scenarios/recon.pbtxt");
-  EXPECT_EQ(text.find("\nrobots {"), std::string::npos);
-  EXPECT_NE(text.find(std::string("yaml: \"") + AUTONOMY_SOURCE_DIR + "/deploy/scenarios/recon/recon.yaml\""),
-            std::string::npos);
-  // Still a valid scenario, loaded from anywhere: the same world, no robots of its own.
-  const sim::ScenarioLoadResult loaded = sim::load_scenario_text(text, "/tmp/elsewhere/scenario.pbtxt");
-  ASSERT_TRUE(loaded.ok()) << loaded.error_text();
-  EXPECT_TRUE(loaded.scenario->world.robots_at_start.empty());
-  EXPECT_EQ(loaded.scenario->world.polygons.size(), 30u);
-  EXPECT_EQ(loaded.scenario->world.rasters.size(), 1u);
 }
 
 }  // namespace
