@@ -8,6 +8,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -143,7 +145,19 @@ int main(int argc, char** argv) {
     if (std::getenv("CYCLONEDDS_URI") == nullptr)
       setup.dds_uri = "file://" + (fs::path(o.source_dir) / "deploy/dds/loopback.xml").string();
 
+    // Everything the trials need, checked before the first one starts.
+    for (const char* program : {"simulator", "behavior"}) {
+      const fs::path path = fs::path(setup.bin_dir) / program;
+      if (access(path.c_str(), X_OK) != 0) throw std::runtime_error("no program " + path.string() + " (see --bin-dir)");
+    }
+    if (!fs::is_regular_file(setup.scenario)) throw std::runtime_error("no scenario " + setup.scenario.string());
     const std::vector<PlannedTrial> planned = plan_trials(o);
+    for (const auto& p : planned) {
+      for (const auto& r : setup.robots) {
+        const fs::path mission = setup.missions_dir / (p.configuration + "_" + r + ".pbtxt");
+        if (!fs::is_regular_file(mission)) throw std::runtime_error("no mission file " + mission.string());
+      }
+    }
     std::vector<std::optional<TrialRecord>> results(planned.size());
     std::atomic<size_t> next{0};
     std::mutex print;
