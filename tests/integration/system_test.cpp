@@ -462,7 +462,7 @@ TEST_F(SystemTest, LockstepStalledBehaviorRejoinsAndStaysInStep) {
   ASSERT_TRUE(await("the simulator to have dropped the frozen behavior/r1", [&] {
     poll_all();
     const auto s = last_status(sim_status);
-    return s && s->participants_dropped == 1;
+    return s && s->participants_dropped >= 1;
   }));
   ASSERT_TRUE(await("behavior/r1 rejoined", [&] {
     poll_all();
@@ -470,13 +470,14 @@ TEST_F(SystemTest, LockstepStalledBehaviorRejoinsAndStaysInStep) {
     return s && contains(s->lockstep_participants, "behavior/r1");
   }));
   const int64_t tick_at_rejoin = last_tick(clock);
+  const uint64_t drops_at_rejoin = last_status(sim_status)->participants_dropped;
   ASSERT_TRUE(await("200 more ticks in lockstep with behavior/r1", [&] {
     poll_all();
     return last_tick(clock) > tick_at_rejoin + 200;
   }));
   const auto s = last_status(sim_status);
   ASSERT_TRUE(s.has_value());
-  EXPECT_EQ(s->participants_dropped, 1u) << "dropped again after rejoining";
+  EXPECT_EQ(s->participants_dropped, drops_at_rejoin) << "dropped again after rejoining";
   EXPECT_TRUE(contains(s->lockstep_participants, "behavior/r1"));
 }
 

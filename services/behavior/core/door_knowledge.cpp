@@ -13,8 +13,9 @@ bool positive_finite(double v) { return std::isfinite(v) && v > 0.0; }
 
 DoorKnowledge::DoorKnowledge(DoorKnowledgeSettings settings) : settings_(settings) {
   if (!positive_finite(settings_.closed_below_rad) || !positive_finite(settings_.memory_s) ||
-      !positive_finite(settings_.thickness_m)) {
-    throw std::invalid_argument("door knowledge settings must be positive and finite");
+      !positive_finite(settings_.thickness_m) || !std::isfinite(settings_.open_above_rad) ||
+      settings_.open_above_rad < settings_.closed_below_rad) {
+    throw std::invalid_argument("door knowledge settings must be positive and finite, open_above >= closed_below");
   }
 }
 
@@ -24,10 +25,13 @@ bool DoorKnowledge::update(const std::vector<DoorSighting>& sightings, double no
     bool known = false;
     for (const Doorway& d : map.doors) known = known || d.id == s.door_id;
     if (!known || !std::isfinite(s.angle_estimate)) continue;
-    if (std::fabs(s.angle_estimate) < settings_.closed_below_rad)
+    const double opening = std::fabs(s.angle_estimate);
+    if (opening < settings_.closed_below_rad)
       closed_since_[s.door_id] = now_s;
-    else
+    else if (opening > settings_.open_above_rad)
       closed_since_.erase(s.door_id);
+    else if (const auto it = closed_since_.find(s.door_id); it != closed_since_.end())
+      it->second = now_s;  // between the thresholds: still closed, and seen so
   }
   for (auto it = closed_since_.begin(); it != closed_since_.end();) {
     if (now_s - it->second > settings_.memory_s)

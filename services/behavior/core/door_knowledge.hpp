@@ -15,6 +15,9 @@ namespace autonomy::behavior {
 
 struct DoorKnowledgeSettings {
   double closed_below_rad = 0.35;  // an opening narrower than this (about 20 degrees) is closed
+  double open_above_rad = 0.6;     // > closed_below_rad: a closed door counts as open again only
+                                   // this wide, so a noisy estimate near the threshold does not
+                                   // make the robot replan every tick
   double memory_s = 120.0;         // > 0: how long a closed door is believed closed unseen
   double thickness_m = 0.2;        // > 0: the doorway blocked as a slab this thick
 };
@@ -29,8 +32,8 @@ class DoorKnowledge {
   // Throws std::invalid_argument on non-finite or non-positive settings.
   explicit DoorKnowledge(DoorKnowledgeSettings settings = {});
 
-  // Takes the sightings of one tick (ids not on the map are ignored: the caller warns) and lets
-  // beliefs older than memory_s lapse. Returns true when the set of closed doors changed.
+  // Takes the sightings of one tick (ids not on the map are ignored) and lets beliefs older than
+  // memory_s lapse. Returns true when the set of closed doors changed.
   bool update(const std::vector<DoorSighting>& sightings, double now_s, const WorldMap& map);
 
   // Ids of the doors believed closed, sorted.

@@ -91,9 +91,14 @@ GoalReport GoalTracker::set_goal(const std::string& goal_id, double x, double y,
   return pursue(goal_id, goal, tolerance_m, now_s, std::move(field));
 }
 
-void GoalTracker::set_grid(OccupancyGrid grid) {
+void GoalTracker::set_grid(OccupancyGrid grid, std::string closures) {
   require_same_geometry(grid.geometry(), grid_.geometry(), "new grid");
   grid_ = std::move(grid);
+  closures_ = std::move(closures);
+}
+
+std::string GoalTracker::no_route_reason(const geometry::Vec2& goal) const {
+  return format("no route to goal (%.2f, %.2f)", goal.x(), goal.y()) + (closures_.empty() ? "" : ": " + closures_);
 }
 
 std::optional<GoalTracker::Target> GoalTracker::target() const {
@@ -101,7 +106,7 @@ std::optional<GoalTracker::Target> GoalTracker::target() const {
   return Target{pursued_->id, pursued_->goal, pursued_->tolerance_m};
 }
 
-GoalReport GoalTracker::replan(CostToGoField field, double now_s, const std::string& why_no_route) {
+GoalReport GoalTracker::replan(CostToGoField field, double now_s) {
   GoalReport report;
   if (pursued_) {
     require_same_geometry(field.geometry(), grid_.geometry(), "replanned field");
@@ -111,8 +116,7 @@ GoalReport GoalTracker::replan(CostToGoField field, double now_s, const std::str
         last_position_ ? remaining_path_m(p, *last_position_) : std::numeric_limits<double>::infinity();
     const bool arrived = last_position_ && (p.goal - *last_position_).norm() <= p.tolerance_m;
     if (last_position_ && !arrived && !std::isfinite(remaining)) {
-      end_pursuit(GoalState::Blocked,
-                  format("no route to goal (%.2f, %.2f): ", p.goal.x(), p.goal.y()) + why_no_route, report);
+      end_pursuit(GoalState::Blocked, no_route_reason(p.goal), report);
     } else {
       p.best_remaining_m = remaining;
       p.last_progress_s = now_s;
@@ -155,8 +159,7 @@ GoalReport GoalTracker::update(const geometry::Pose2& pose, double now_s, bool i
   if (status_->state == GoalState::Accepted) {
     const double remaining = remaining_path_m(p, position);
     if (distance > p.tolerance_m && !std::isfinite(remaining)) {
-      end_pursuit(GoalState::Blocked, format("no route to goal (%.2f, %.2f)", p.goal.x(), p.goal.y()),
-                  report);
+      end_pursuit(GoalState::Blocked, no_route_reason(p.goal), report);
       report.current = status_;
       return report;
     }

@@ -64,13 +64,15 @@ class GoalTracker {
                                     double tolerance_m, double now_s, CostToGoField field);
 
   // What the robot knows of the world changed (a door seen closed or open again): later goals are
-  // planned on `grid`. Throws std::invalid_argument when its geometry differs from grid()'s.
-  void set_grid(OccupancyGrid grid);
+  // planned on `grid`. `closures` says what blocks it beyond the map ("door d1 closed"; "" for
+  // nothing) and ends every "no route to goal (x, y)" reason from now on. Throws
+  // std::invalid_argument when its geometry differs from grid()'s.
+  void set_grid(OccupancyGrid grid, std::string closures = "");
   // The pursued goal's route changed: follow `field` from now on (same geometry as grid()). When
-  // the robot's last position has no route on it, the goal ends Blocked with "no route to goal
-  // (x, y): " + why_no_route; otherwise the stall clock restarts (a detour is progress anew).
-  // Without a pursued goal nothing changes.
-  [[nodiscard]] GoalReport replan(CostToGoField field, double now_s, const std::string& why_no_route);
+  // the robot's last position has no route on it, the goal ends Blocked ("no route to goal (x, y)"
+  // and the closures); otherwise the stall clock restarts (a detour is progress anew). Without a
+  // pursued goal nothing changes.
+  [[nodiscard]] GoalReport replan(CostToGoField field, double now_s);
   // The pursued goal: its id, target and effective tolerance, to replan it.
   struct Target {
     std::string id;
@@ -120,8 +122,10 @@ class GoalTracker {
                          const geometry::Vec2& goal) const;
   double remaining_path_m(const Pursuit& p, const geometry::Vec2& position) const;
   void end_pursuit(GoalState state, std::string reason, GoalReport& report);
+  std::string no_route_reason(const geometry::Vec2& goal) const;
 
   OccupancyGrid grid_;
+  std::string closures_;  // what blocks grid_ beyond the map, for reasons
   GoalTrackerConfig config_;
   std::optional<Pursuit> pursued_;
   std::optional<GoalStatus> status_;

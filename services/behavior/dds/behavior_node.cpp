@@ -132,7 +132,7 @@ BehaviorNode::BehaviorNode(service::Service& service, BehaviorNodeOptions option
   loop.on_samples<msg::DoorObservation>(door_reader_, [this](auto samples) {
     for (const auto& s : samples) {
       if (!s.valid || s.value.robot_id != options_.robot_id || options_.mission) continue;
-      for (const auto& d : s.value.doors) door_sightings_.push_back({d.door_id, d.angle_estimate});
+      for (const auto& d : s.value.doors) door_sightings_[d.door_id] = d.angle_estimate;
     }
   });
 
@@ -321,15 +321,13 @@ void BehaviorNode::accept_goal(const msg::NavGoal& goal) {
                      stored->map_name, map_->name);
       } else {
         spdlog::info("goal {}: using stored plan '{}' ({})", goal.goal_id, stored->name, stored->constraint_set);
-        pursued_constraints_ = *set;
-        publish(tracker_->set_goal(goal.goal_id, goal.x, goal.y, goal.tolerance, now_s, stored->field()));
+        pursue(goal, *set, tracker_->set_goal(goal.goal_id, goal.x, goal.y, goal.tolerance, now_s, stored->field()));
         return;
       }
     }
   }
   if (set->layers.empty()) {
-    pursued_constraints_ = *set;
-    publish(tracker_->set_goal(goal.goal_id, goal.x, goal.y, goal.tolerance, now_s));
+    pursue(goal, *set, tracker_->set_goal(goal.goal_id, goal.x, goal.y, goal.tolerance, now_s));
     return;
   }
   auto field = field_for(target, *set, &error);
@@ -337,8 +335,13 @@ void BehaviorNode::accept_goal(const msg::NavGoal& goal) {
     publish(tracker_->reject(goal.goal_id, goal.x, goal.y, error));
     return;
   }
-  pursued_constraints_ = *set;
-  publish(tracker_->set_goal(goal.goal_id, goal.x, goal.y, goal.tolerance, now_s, std::move(*field)));
+  pursue(goal, *set, tracker_->set_goal(goal.goal_id, goal.x, goal.y, goal.tolerance, now_s, std::move(*field)));
+}
+
+void BehaviorNode::pursue(const msg::NavGoal& goal, const ConstraintSet& set, const GoalReport& report) {
+  // A rejected goal leaves the pursued one running, and with it that goal's constraint set.
+  if (const auto target = tracker_->target(); target && target->id == goal.goal_id) pursued_constraints_ = set;
+  publish(report);
 }
 
 std::optional<CostToGoField> BehaviorNode::field_for(const geometry::Vec2& target, const ConstraintSet& set,
@@ -352,13 +355,23 @@ std::optional<CostToGoField> BehaviorNode::field_for(const geometry::Vec2& targe
 }
 
 void BehaviorNode::update_door_knowledge(double now_s) {
-  const std::vector<DoorSighting> sightings = std::move(door_sightings_);
+  std::vector<DoorSighting> sightings;
+  for (const auto& [id, angle] : door_sightings_) {
+    const bool on_map =
+        std::any_of(world_.doors.begin(), world_.doors.end(), [&](const Doorway& d) { return d.id == id; });
+    if (on_map)
+      sightings.push_back({id, angle});
+    else if (unknown_doors_.insert(id).second)
+      spdlog::warn("robot {} sees door '{}', which the map does not have; ignored", options_.robot_id, id);
+  }
   door_sightings_.clear();
   if (!doors_.update(sightings, now_s, world_)) return;
   const std::vector<std::string> closed = doors_.closed();
+  const std::string closures = closed.empty() ? "" : describe_closed_doors(closed);
   spdlog::info("robot {}: {}; replanning", options_.robot_id, describe_closed_doors(closed));
   const OccupancyGrid& old = tracker_->grid();
-  tracker_->set_grid(OccupancyGrid(doors_.apply(world_), old.geometry().resolution_m(), old.inflation_radius_m()));
+  tracker_->set_grid(OccupancyGrid(doors_.apply(world_), old.geometry().resolution_m(), old.inflation_radius_m()),
+                     closures);
   const auto target = tracker_->target();
   if (!target || !pursued_constraints_) return;
   std::string error;
@@ -367,7 +380,7 @@ void BehaviorNode::update_door_knowledge(double now_s) {
     spdlog::warn("goal {}: cannot replan: {}", target->id, error);
     return;
   }
-  publish(tracker_->replan(std::move(*field), now_s, describe_closed_doors(closed)));
+  publish(tracker_->replan(std::move(*field), now_s));
 }
 
 void BehaviorNode::on_tick(const msg::SimClock& clock) {
@@ -388,8 +401,9 @@ void BehaviorNode::control_pending_tick() {
 uint32_t BehaviorNode::control_goal(int64_t tick) {
   const geometry::Pose2 pose{state_->x, state_->y, state_->theta};
   const double now_s = static_cast<double>(state_->sim_time_ns) * 1e-9;
-  publish(tracker_->update(pose, now_s, state_->in_collision));
+  // What the robot saw this tick first, so that a goal is judged on the doors as they are now.
   update_door_knowledge(now_s);
+  publish(tracker_->update(pose, now_s, state_->in_collision));
 
   if (tracker_->active()) {
     const GoToDecision decision = controller_->command(pose, *tracker_->field(), tracker_->tolerance_m());

@@ -29,6 +29,7 @@
 
 #include <chrono>
 #include <map>
+#include <set>
 #include <memory>
 #include <optional>
 #include <string>
@@ -65,6 +66,8 @@ class BehaviorNode {
   void on_tick(const msg::SimClock& clock);
   void become_ready_when_possible();
   void accept_goal(const msg::NavGoal& goal);
+  // Publishes a set_goal report; remembers the constraint set when the goal was taken on.
+  void pursue(const msg::NavGoal& goal, const ConstraintSet& set, const GoalReport& report);
   // The field towards `target` honouring `constraint_set` on what the robot knows now (closed
   // doors included); sets *error and returns nullopt for an unknown constraint layer.
   std::optional<CostToGoField> field_for(const geometry::Vec2& target, const ConstraintSet& set, std::string* error) const;
@@ -91,7 +94,8 @@ class BehaviorNode {
   std::optional<msg::WorldMap> map_;
   WorldMap world_;                     // map_ as the planner's world (doors open)
   DoorKnowledge doors_;                // goal mode: what this robot saw of the doors
-  std::vector<DoorSighting> door_sightings_;  // this robot's, since the last tick
+  std::map<std::string, double> door_sightings_;  // door id -> this robot's latest angle, since the last tick
+  std::set<std::string> unknown_doors_;            // seen but not on the map (warned once)
   std::optional<ConstraintSet> pursued_constraints_;  // of the goal being pursued
   std::optional<GoalTracker> tracker_;
   std::optional<GoToController> controller_;

@@ -162,6 +162,7 @@ int main(int argc, char** argv) {
     std::atomic<size_t> next{0};
     std::mutex print;
     int done = 0, failures = 0;
+    std::vector<std::string> failure_lines;  // for the report: a failed trial is not silently left out
     const auto begin = std::chrono::steady_clock::now();
     const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count(); };
     std::printf("%zu trials (%d per configuration), %d at a time, output in %s\n", planned.size(), o.trials, o.jobs,
@@ -187,7 +188,10 @@ int main(int argc, char** argv) {
           }
           std::lock_guard<std::mutex> lock(print);
           ++done;
-          if (!results[i]) ++failures;
+          if (!results[i]) {
+            ++failures;
+            failure_lines.push_back("- " + p.configuration + " trial " + std::to_string(p.trial) + ": " + line);
+          }
           const double t = elapsed();
           std::printf("[%3d/%zu] %-14s trial %2d  %s  (%.0f s, about %.0f s left)\n", done, planned.size(),
                       p.configuration.c_str(), p.trial, line.c_str(), t, t / done * (planned.size() - done));
@@ -201,9 +205,15 @@ int main(int argc, char** argv) {
     for (const auto& r : results)
       if (r) records.push_back(*r);
     write_text(out / "trials.csv", autonomy::stats::write_csv(records));
+    std::string failed;
+    if (!failure_lines.empty()) {
+      std::sort(failure_lines.begin(), failure_lines.end());
+      failed = "\n## Failed trials (not in the statistics)\n\n";
+      for (const auto& l : failure_lines) failed += l + "\n";
+    }
     write_text(out / "report.md",
                autonomy::stats::write_markdown_report(records) +
-                   autonomy::stats::write_findings_markdown(autonomy::stats::check_paper_findings(records)) +
+                   autonomy::stats::write_findings_markdown(autonomy::stats::check_paper_findings(records)) + failed +
                    typical_runs(records, out));
     std::printf("wrote %s/trials.csv and %s/report.md: %zu trials in %.1f s, %d failed\n", o.out.c_str(),
                 o.out.c_str(), records.size(), elapsed(), failures);

@@ -46,19 +46,20 @@ void stop(ChildProcess& child) {
 
 std::vector<double> start_positions(const TrialSetup& setup, std::uint64_t seed) {
   const size_t n = setup.robots.size();
-  if (n > 1 && setup.min_start_spacing_m * static_cast<double>(n - 1) > setup.start_max_x - setup.start_min_x)
-    throw std::invalid_argument(std::to_string(n) + " robots do not fit " + fixed(setup.min_start_spacing_m) +
-                                " m apart between x = " + fixed(setup.start_min_x) + " and " + fixed(setup.start_max_x));
+  const double spacing = setup.min_start_spacing_m;
+  const double slack = setup.start_max_x - setup.start_min_x - spacing * static_cast<double>(n > 0 ? n - 1 : 0);
+  if (!(slack >= 0.0))
+    throw std::invalid_argument(std::to_string(n) + " robots do not fit " + fixed(spacing) + " m apart between x = " +
+                                fixed(setup.start_min_x) + " and " + fixed(setup.start_max_x));
+  // Uniform over the spaced arrangements without rejection: n sorted draws in a line shortened
+  // by the gaps, then the k-th moved up by k gaps.
   std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> x(setup.start_min_x, setup.start_max_x);
-  while (true) {
-    std::vector<double> xs;
-    for (size_t k = 0; k < n; ++k) xs.push_back(x(rng));
-    std::sort(xs.begin(), xs.end());
-    bool spaced = true;
-    for (size_t k = 1; k < n; ++k) spaced = spaced && xs[k] - xs[k - 1] >= setup.min_start_spacing_m;
-    if (spaced) return xs;
-  }
+  std::uniform_real_distribution<double> x(0.0, slack);
+  std::vector<double> xs;
+  for (size_t k = 0; k < n; ++k) xs.push_back(x(rng));
+  std::sort(xs.begin(), xs.end());
+  for (size_t k = 0; k < n; ++k) xs[k] += setup.start_min_x + spacing * static_cast<double>(k);
+  return xs;
 }
 
 stats::TrialRecord run_trial(const TrialSetup& setup, const std::string& configuration, int trial,

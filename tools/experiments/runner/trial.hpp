@@ -27,10 +27,10 @@ struct TrialSetup {
   std::chrono::seconds timeout{600};     // wall time one trial may take
 };
 
-// Random start x positions along the bottom edge, drawn from `seed`, at least
-// min_start_spacing_m apart (a draw with two closer is drawn again), sorted west to east (robot k
-// gets the k-th: each mission's dispersion waypoint lies on its robot's side). Throws
-// std::invalid_argument when the robots cannot fit that far apart.
+// Random start x positions along the bottom edge, drawn from `seed`, uniform over the
+// arrangements at least min_start_spacing_m apart, sorted west to east (robot k gets the k-th:
+// each mission's dispersion waypoint lies on its robot's side). Throws std::invalid_argument when
+// the robots cannot fit that far apart.
 std::vector<double> start_positions(const TrialSetup& setup, std::uint64_t seed);
 
 // Runs trial `trial` of `configuration` on DDS domain `domain`. Writes <out>/<cfg>-<trial>.json,

@@ -15,9 +15,10 @@ PlanLibrary build_plan_library(const MissionSpec& mission, const WorldMap& map,
   // Plan sets share work: the obstacles grid (polygons and rasters: the expensive part) is built
   // once, each constraint set's grid once on top of its predecessor, and a field once per
   // (constraint set, goal), e.g. when two plan sets differ only in their selection.
-  std::map<std::string, std::shared_ptr<const OccupancyGrid>> grids;
-  std::map<std::pair<std::string, std::pair<double, double>>, std::shared_ptr<const CostToGoField>> fields;
-  grids[kObstaclesLayer] = std::make_shared<const OccupancyGrid>(map, resolution_m, inflation_radius_m);
+  using Layers = std::vector<std::string>;  // a constraint set: layers[0..k] of a plan set
+  std::map<Layers, std::shared_ptr<const OccupancyGrid>> grids;
+  std::map<std::pair<Layers, std::pair<double, double>>, std::shared_ptr<const CostToGoField>> fields;
+  grids[{kObstaclesLayer}] = std::make_shared<const OccupancyGrid>(map, resolution_m, inflation_radius_m);
 
   PlanLibrary library;
   for (const PlanSetSpec& spec : mission.plan_sets) {
@@ -25,6 +26,7 @@ PlanLibrary build_plan_library(const MissionSpec& mission, const WorldMap& map,
       throw std::invalid_argument("plan set " + spec.name + ": the first layer must be obstacles");
     }
     std::string name = kObstaclesLayer;
+    Layers layers = {kObstaclesLayer};
     std::vector<Plan> plans;
     for (std::size_t k = 0; k < spec.layers.size(); ++k) {
       if (k > 0) {
@@ -36,13 +38,14 @@ PlanLibrary build_plan_library(const MissionSpec& mission, const WorldMap& map,
         if (layer == nullptr) {
           throw std::invalid_argument("plan set " + spec.name + ": unknown layer " + layer_name);
         }
-        const std::string previous = name;
+        const Layers previous = layers;
+        layers.push_back(layer_name);
         name += "+" + layer_name;
-        if (grids.count(name) == 0)
-          grids[name] = std::make_shared<const OccupancyGrid>(grids.at(previous)->with_areas(layer->areas));
+        if (grids.count(layers) == 0)
+          grids[layers] = std::make_shared<const OccupancyGrid>(grids.at(previous)->with_areas(layer->areas));
       }
-      auto& field = fields[{name, {spec.goal.x(), spec.goal.y()}}];
-      if (!field) field = std::make_shared<const CostToGoField>(*grids.at(name), spec.goal);
+      auto& field = fields[{layers, {spec.goal.x(), spec.goal.y()}}];
+      if (!field) field = std::make_shared<const CostToGoField>(*grids.at(layers), spec.goal);
       plans.push_back(Plan::from_field(name, field));
     }
     library[spec.name] = std::make_shared<const PlanSet>(spec.name, spec.goal, std::move(plans));

@@ -40,6 +40,19 @@ TEST(DoorKnowledge, DoorsAreOpenUntilSeenClosed) {
   EXPECT_TRUE(k.closed().empty());
 }
 
+TEST(DoorKnowledge, ANoisyAngleBetweenTheThresholdsChangesNothing) {
+  DoorKnowledge k;  // closed below 0.35 rad, open above 0.6 rad
+  const WorldMap w = two_doors();
+  EXPECT_TRUE(k.update({{"d1", 0.3}}, 0.0, w));
+  EXPECT_FALSE(k.update({{"d1", 0.4}}, 0.1, w));
+  EXPECT_FALSE(k.update({{"d1", 0.55}}, 0.2, w));
+  EXPECT_TRUE(k.believed_closed("d1"));
+  EXPECT_TRUE(k.update({{"d1", 0.65}}, 0.3, w));
+  EXPECT_FALSE(k.update({{"d1", 0.4}}, 0.4, w));  // open stays open until below 0.35
+  EXPECT_FALSE(k.believed_closed("d1"));
+  EXPECT_THROW(DoorKnowledge({0.5, 0.4, 120.0, 0.2}), std::invalid_argument);
+}
+
 TEST(DoorKnowledge, UnknownDoorsAndNonFiniteAnglesAreIgnored) {
   DoorKnowledge k;
   EXPECT_FALSE(k.update({{"d9", 0.0}, {"d1", std::nan("")}}, 0.0, two_doors()));
@@ -47,7 +60,7 @@ TEST(DoorKnowledge, UnknownDoorsAndNonFiniteAnglesAreIgnored) {
 }
 
 TEST(DoorKnowledge, AClosedDoorUnseenForTheMemoryTimeIsTriedAgain) {
-  DoorKnowledge k({0.35, 60.0, 0.2});
+  DoorKnowledge k({0.35, 0.6, 60.0, 0.2});
   const WorldMap w = two_doors();
   k.update({{"d1", 0.0}}, 10.0, w);
   EXPECT_FALSE(k.update({}, 70.0, w));
@@ -71,7 +84,7 @@ TEST(DoorKnowledge, ClosedDoorsBlockTheirDoorwayInPlans) {
   EXPECT_FALSE(std::isfinite(cost_from(k.apply(w), west, east)));
   EXPECT_EQ(describe_closed_doors(k.closed()), "doors d1, d2 closed");
   EXPECT_EQ(describe_closed_doors({"d1"}), "door d1 closed");
-  EXPECT_THROW(DoorKnowledge({0.0, 1.0, 1.0}), std::invalid_argument);
+  EXPECT_THROW(DoorKnowledge({0.0, 0.6, 1.0, 1.0}), std::invalid_argument);
 }
 
 TEST(GoalTrackerReplan, DetourKeepsTheGoalAndNoRouteBlocksItWithTheReason) {
@@ -84,21 +97,28 @@ TEST(GoalTrackerReplan, DetourKeepsTheGoalAndNoRouteBlocksItWithTheReason) {
   DoorKnowledge k;
   k.update({{"d1", 0.0}}, 0.2, w);
   const OccupancyGrid one_closed(k.apply(w), 0.1, 0.35);
-  tracker.set_grid(one_closed);
-  GoalReport r = tracker.replan(CostToGoField(one_closed, Vec2(8.0, 2.0)), 0.2, describe_closed_doors(k.closed()));
+  tracker.set_grid(one_closed, describe_closed_doors(k.closed()));
+  GoalReport r = tracker.replan(CostToGoField(one_closed, Vec2(8.0, 2.0)), 0.2);
   EXPECT_TRUE(r.changes.empty());
   EXPECT_TRUE(tracker.active());
   EXPECT_GT(tracker.field()->cost_at(Vec2(2.0, 2.0)), 12.0f);  // the detour through d2
 
   k.update({{"d2", 0.0}}, 0.3, w);
   const OccupancyGrid both_closed(k.apply(w), 0.1, 0.35);
-  r = tracker.replan(CostToGoField(both_closed, Vec2(8.0, 2.0)), 0.3, describe_closed_doors(k.closed()));
+  tracker.set_grid(both_closed, describe_closed_doors(k.closed()));
+  r = tracker.replan(CostToGoField(both_closed, Vec2(8.0, 2.0)), 0.3);
   ASSERT_EQ(r.changes.size(), 1u);
   EXPECT_EQ(r.changes[0].state, GoalState::Blocked);
   EXPECT_EQ(r.changes[0].reason, "no route to goal (8.00, 2.00): doors d1, d2 closed");
   EXPECT_FALSE(tracker.active());
-  EXPECT_TRUE(tracker.replan(CostToGoField(both_closed, Vec2(8.0, 2.0)), 0.4, "x").changes.empty());
+  EXPECT_TRUE(tracker.replan(CostToGoField(both_closed, Vec2(8.0, 2.0)), 0.4).changes.empty());
   EXPECT_THROW(tracker.set_grid(OccupancyGrid(w, 0.2, 0.35)), std::invalid_argument);
+
+  // A new goal on the grid with both doors closed: blocked at activation, with the doors named.
+  ASSERT_EQ(tracker.set_goal("g2", 8.0, 2.0, 0.2, 0.5).changes.size(), 1u);
+  r = tracker.update({2.0, 2.0, 0.0}, 0.6);
+  ASSERT_EQ(r.changes.size(), 1u);
+  EXPECT_EQ(r.changes[0].reason, "no route to goal (8.00, 2.00): doors d1, d2 closed");
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 namespace autonomy::stats {
 namespace {
 
@@ -56,6 +58,16 @@ TEST(Findings, EqualOrReversedMeansDoNotHold) {
   EXPECT_NE(md.find("## The paper's findings"), std::string::npos);
   EXPECT_NE(md.find("| **no** |"), std::string::npos) << md;
   EXPECT_NE(md.find("| yes |"), std::string::npos) << md;
+}
+
+TEST(Findings, TheMixThatRanIsTheOneCompared) {
+  auto records = paper_like();
+  records.erase(std::remove_if(records.begin(), records.end(),
+                               [](const TrialRecord& r) { return r.configuration == "plan_34_66"; }),
+                records.end());
+  const auto checks = check_paper_findings(records);
+  EXPECT_TRUE(checks[2].evaluated);
+  EXPECT_NE(checks[2].here.find("66:34 reactive:plan 51.0"), std::string::npos) << checks[2].here;
 }
 
 TEST(Findings, TooFewTrialsAreNotEvaluated) {
