@@ -7,25 +7,29 @@
 
 namespace autonomy::behavior {
 
-Plan::Plan(std::string name, Query query) : name_(std::move(name)), query_(std::move(query)) {
+Plan::Plan(std::string name, Query query, WayBack way_back)
+    : name_(std::move(name)), query_(std::move(query)), way_back_(std::move(way_back)) {
   if (!query_) throw std::invalid_argument("plan " + name_ + " has no query");
 }
 
 Plan Plan::from_field(std::string name, std::shared_ptr<const CostToGoField> field, double way_back_within_m) {
   if (!field) throw std::invalid_argument("plan " + name + " has no field");
-  return Plan(std::move(name), [field = std::move(field), way_back_within_m](const geometry::Vec2& p) {
+  auto query = [field](const geometry::Vec2& p) {
     PlanQuery q;
     const auto cell = field->geometry().cell_at(p);
     if (!cell) return q;
     q.cost = field->cost(*cell);
-    if (std::isfinite(q.cost)) {
-      q.advice = field->advice(*cell);
-    } else if (const auto back = field->nearest_reachable(p, way_back_within_m)) {
-      const geometry::Vec2 to = field->geometry().centre(*back) - p;
-      if (to.norm() > 1e-9) q.way_back = to.normalized();
-    }
+    if (std::isfinite(q.cost)) q.advice = field->advice(*cell);
     return q;
-  });
+  };
+  auto way_back = [field, way_back_within_m](const geometry::Vec2& p) -> geometry::Vec2 {
+    if (std::isfinite(field->cost_at(p))) return geometry::Vec2::Zero();
+    const auto back = field->nearest_reachable(p, way_back_within_m);
+    if (!back) return geometry::Vec2::Zero();
+    const geometry::Vec2 to = field->geometry().centre(*back) - p;
+    return to.norm() > 1e-9 ? geometry::Vec2(to.normalized()) : geometry::Vec2::Zero();
+  };
+  return Plan(std::move(name), std::move(query), std::move(way_back));
 }
 
 PlanSet::PlanSet(std::string name, geometry::Vec2 goal, std::vector<Plan> least_to_most_constrained)
@@ -46,7 +50,7 @@ PlanSelection FixedPlanSelector::select(const PlanSet& plans, const geometry::Ve
   const PlanQuery q = plans.plans()[index_].query(position);
   s.plan = index_;
   s.cost = q.cost;
-  s.advice = std::isfinite(q.cost) ? q.advice : q.way_back;
+  s.advice = std::isfinite(q.cost) ? q.advice : plans.plans()[index_].way_back(position);
   return s;
 }
 

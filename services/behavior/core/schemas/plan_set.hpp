@@ -38,9 +38,6 @@ namespace autonomy::behavior {
 struct PlanQuery {
   float cost = std::numeric_limits<float>::infinity();  // metres to the goal; +inf: no route
   geometry::Vec2 advice = geometry::Vec2::Zero();        // unit or zero
-  // Where cost is +inf but the plan's free space is near (the robot was pushed into an inflation
-  // margin or a constrained area by other schemas): the unit vector back to it; zero otherwise.
-  geometry::Vec2 way_back = geometry::Vec2::Zero();
 };
 
 // One internalized plan: a name (its constraint set, e.g. "obstacles+comm_attenuation") and a
@@ -48,12 +45,16 @@ struct PlanQuery {
 class Plan {
  public:
   using Query = std::function<PlanQuery(const geometry::Vec2& position)>;
+  // Where the cost is +inf but the plan's free space is near (the robot was pushed into an
+  // inflation margin or a constrained area by other schemas): the unit vector back to it; zero
+  // otherwise. Asked only by a selector that follows this plan off its route: it searches.
+  using WayBack = std::function<geometry::Vec2(const geometry::Vec2& position)>;
 
-  // Throws std::invalid_argument on an empty query.
-  Plan(std::string name, Query query);
+  // Throws std::invalid_argument on an empty query. Without a way back, way_back() is zero.
+  Plan(std::string name, Query query, WayBack way_back = nullptr);
   // Queries the field at the cell holding the position: cost(cell) and advice(cell); outside the
-  // grid, +inf and zero. Where the cost is +inf, way_back points at the nearest reachable cell
-  // within `way_back_within_m`. Throws std::invalid_argument on a null field.
+  // grid, +inf and zero. The way back heads for the nearest reachable cell within
+  // `way_back_within_m`. Throws std::invalid_argument on a null field.
   static Plan from_field(std::string name, std::shared_ptr<const CostToGoField> field,
                          double way_back_within_m = kWayBackWithinM);
   // How far a plan looks for its free space from a blocked position: a few metres, the distance
@@ -62,10 +63,14 @@ class Plan {
 
   const std::string& name() const { return name_; }
   [[nodiscard]] PlanQuery query(const geometry::Vec2& position) const { return query_(position); }
+  [[nodiscard]] geometry::Vec2 way_back(const geometry::Vec2& position) const {
+    return way_back_ ? way_back_(position) : geometry::Vec2::Zero();
+  }
 
  private:
   std::string name_;
   Query query_;
+  WayBack way_back_;
 };
 
 class PlanSet {

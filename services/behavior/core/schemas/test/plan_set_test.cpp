@@ -76,8 +76,8 @@ TEST(Plan, WayBackLeadsToTheNearestCellWithARouteWithinReach) {
   const PlanQuery q = plan.query({2.5, 2.5});
   EXPECT_FALSE(std::isfinite(q.cost));
   EXPECT_EQ(q.advice, Vec2::Zero());
-  EXPECT_EQ(q.way_back, Vec2(-1.0, 0.0));
-  EXPECT_EQ(plan.query({0.5, 0.5}).way_back, Vec2::Zero());  // on the plan: no way back needed
+  EXPECT_EQ(plan.way_back({2.5, 2.5}), Vec2(-1.0, 0.0));
+  EXPECT_EQ(plan.way_back({0.5, 0.5}), Vec2::Zero());  // on the plan: no way back needed
 
   // A 13 x 13 block in a 15 x 15 grid: from its middle the nearest free cell is 7 m away, beyond
   // reach; near its west edge the way back is west.
@@ -85,8 +85,8 @@ TEST(Plan, WayBackLeadsToTheNearestCellWithARouteWithinReach) {
   picture.insert(picture.begin(), std::string(15, '.'));
   picture.push_back(std::string(15, '.'));
   const Plan deep = Plan::from_field("deep", field(picture, Vec2(0.5, 0.5)), 5.0);
-  EXPECT_EQ(deep.query({7.5, 7.5}).way_back, Vec2::Zero());
-  EXPECT_EQ(deep.query({2.5, 7.5}).way_back, Vec2(-1.0, 0.0));
+  EXPECT_EQ(deep.way_back({7.5, 7.5}), Vec2::Zero());
+  EXPECT_EQ(deep.way_back({2.5, 7.5}), Vec2(-1.0, 0.0));
 }
 
 TEST(StaticSelection, FallsBackToTheLessConstrainedPlanWhenTheOtherHasNoRoute) {
