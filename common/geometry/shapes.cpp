@@ -22,9 +22,9 @@ bool on_segment(const Vec2& a, const Vec2& b, const Vec2& p) {
 
 }  // namespace
 
-Rect Polygon::bounds() const {
+Rect bounds_of(const std::vector<Vec2>& points) {
   Rect r{kNoHit, kNoHit, -kNoHit, -kNoHit};
-  for (const Vec2& v : vertices) {
+  for (const Vec2& v : points) {
     r.min_x = std::min(r.min_x, v.x());
     r.min_y = std::min(r.min_y, v.y());
     r.max_x = std::max(r.max_x, v.x());
@@ -54,7 +54,7 @@ std::optional<std::string> polygon_problem(const std::vector<Vec2>& v) {
   for (std::size_t i = 0; i < n; ++i) twice_area += cross(v[i], v[(i + 1) % n]);
   if (std::abs(twice_area) < 1e-12) return std::string("has zero area");
   for (std::size_t i = 0; i < n; ++i) {
-    if (v[i] == v[(i + 1) % n]) return "repeats vertex " + std::to_string(i);
+    if ((v[i] - v[(i + 1) % n]).norm() <= kSamePointM) return "repeats vertex " + std::to_string(i);
   }
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2& a = v[i];
@@ -73,7 +73,11 @@ std::optional<std::string> polygon_problem(const std::vector<Vec2>& v) {
         }
         continue;
       }
-      if (segments_intersect(a, b, c, d)) {
+      // Edges that pass within kSamePointM of each other touch: a path between them would be
+      // a nanometre wide, which no traversal or containment test can resolve.
+      const bool touch = segment_distance(c, a, b) <= kSamePointM || segment_distance(d, a, b) <= kSamePointM ||
+                         segment_distance(a, c, d) <= kSamePointM || segment_distance(b, c, d) <= kSamePointM;
+      if (touch || segments_intersect(a, b, c, d)) {
         return "edges " + std::to_string(i) + " and " + std::to_string(j) + " cross";
       }
     }

@@ -13,17 +13,24 @@
 namespace autonomy::geometry {
 
 inline constexpr double kNoHit = std::numeric_limits<double>::infinity();
+// Points closer than this (1 nm) are one point: polygon checks, the radio's boundary tests.
+inline constexpr double kSamePointM = 1e-9;
+
+// The smallest axis-aligned rectangle holding every point; {+inf, +inf, -inf, -inf} for none.
+Rect bounds_of(const std::vector<Vec2>& points);
 
 // A simple polygon (closed implicitly, no self-intersections, either orientation, convex or not).
 struct Polygon {
   std::string name;  // for error messages and reports; may be empty
   std::vector<Vec2> vertices;
 
-  Rect bounds() const;
+  Rect bounds() const { return bounds_of(vertices); }
 };
 
 // Why `vertices` is not a usable simple polygon (fewer than 3 vertices, a non-finite coordinate,
-// (near) zero area, two edges that cross or overlap), or nothing when it is usable.
+// (near) zero area, a repeated vertex, two edges that cross, touch or overlap, within
+// kSamePointM), or nothing when it is usable. The one check for every polygon: scenario files,
+// maps from DDS, radio attenuators.
 std::optional<std::string> polygon_problem(const std::vector<Vec2>& vertices);
 
 // Even-odd rule; points on the boundary may count either way.

@@ -221,7 +221,7 @@ void SimulatorNode::on_commands(std::vector<dds::Sample<msg::VelocityCommand>> s
     msg::VelocityCommand& c = s.value;
     // The barrier counts commands of its participants, including dropped ones that may be about
     // to rejoin; others (tools, unregistered processes) are applied at the next step.
-    const bool synchronised = lockstep() && c.tick >= tick_ && barrier_.on_command(c.source, c.tick);
+    const bool synchronised = lockstep() && barrier_.on_command(c.source, c.tick);
     if (synchronised) {
       commands_by_tick_[c.tick].push_back(std::move(c));
     } else {

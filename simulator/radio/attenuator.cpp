@@ -155,7 +155,7 @@ Traversal traverse_rect(const Rect& r, const Vec2& a, const Vec2& b) {
 // the common case costs one point-in-polygon test per segment. Touching a vertex splits the
 // segment without a clean crossing, so both sides are tested and nothing changes; a piece along an
 // edge has its midpoint on the boundary, so it is outside.
-Traversal traverse_polygon(const std::vector<Vec2>& v, const Vec2& a, const Vec2& b) {
+Traversal traverse_polygon(const std::vector<Vec2>& v, const Rect& box, const Vec2& a, const Vec2& b) {
   const Vec2 d = b - a;
   const double len2 = d.squaredNorm();
   const double len = std::sqrt(len2);
@@ -201,13 +201,6 @@ Traversal traverse_polygon(const std::vector<Vec2>& v, const Vec2& a, const Vec2
   }
   std::sort(ts, ts + count, [](const Split& x, const Split& y) { return x.t < y.t; });
 
-  Rect box{v[0].x(), v[0].y(), v[0].x(), v[0].y()};
-  for (const Vec2& p : v) {
-    box.min_x = std::min(box.min_x, p.x());
-    box.min_y = std::min(box.min_y, p.y());
-    box.max_x = std::max(box.max_x, p.x());
-    box.max_y = std::max(box.max_y, p.y());
-  }
   Traversal t;
   int previous = -1;         // status of the last piece that counted: -1 none, 0 outside, 1 inside
   bool previous_adjacent = false;  // that piece ends at ts[k] (no negligible piece in between)
@@ -236,27 +229,11 @@ Traversal traverse_polygon(const std::vector<Vec2>& v, const Vec2& a, const Vec2
   return t;
 }
 
-bool segments_intersect(const Vec2& p0, const Vec2& p1, const Vec2& q0, const Vec2& q1) {
-  const auto orient = [](const Vec2& a, const Vec2& b, const Vec2& c) {
-    const double o = cross(b - a, c - a);
-    return (o > kTol * kTol) - (o < -kTol * kTol);
-  };
-  const auto on = [](const Vec2& a, const Vec2& b, const Vec2& c) {  // c on segment a-b
-    return distance_to_segment(c, a, b) <= kTol;
-  };
-  const int o1 = orient(p0, p1, q0);
-  const int o2 = orient(p0, p1, q1);
-  const int o3 = orient(q0, q1, p0);
-  const int o4 = orient(q0, q1, p1);
-  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
-  return on(p0, p1, q0) || on(p0, p1, q1) || on(q0, q1, p0) || on(q0, q1, p1);
-}
-
 }  // namespace
 
 namespace detail {
 Traversal traverse_any_polygon(const std::vector<Vec2>& vertices, const Vec2& a, const Vec2& b) {
-  return traverse_polygon(vertices, a, b);
+  return traverse_polygon(vertices, geometry::bounds_of(vertices), a, b);
 }
 Traversal traverse_convex_polygon(const std::vector<Vec2>& ccw_vertices, const Vec2& a,
                                   const Vec2& b) {
@@ -279,13 +256,7 @@ Shape Shape::rect(const Rect& r) {
 Shape Shape::polygon(std::vector<Vec2> vertices) {
   if (auto why = polygon_problem(vertices)) throw std::invalid_argument("attenuator polygon: " + *why);
   Shape s;
-  s.bounds_ = {vertices[0].x(), vertices[0].y(), vertices[0].x(), vertices[0].y()};
-  for (const Vec2& p : vertices) {
-    s.bounds_.min_x = std::min(s.bounds_.min_x, p.x());
-    s.bounds_.min_y = std::min(s.bounds_.min_y, p.y());
-    s.bounds_.max_x = std::max(s.bounds_.max_x, p.x());
-    s.bounds_.max_y = std::max(s.bounds_.max_y, p.y());
-  }
+  s.bounds_ = geometry::bounds_of(vertices);
   // Convex when every turn goes the same way (collinear vertices allowed); stored
   // counter-clockwise so that the inside is left of every edge.
   double area2 = 0.0;
@@ -309,7 +280,7 @@ Shape Shape::polygon(std::vector<Vec2> vertices) {
 Traversal Shape::traverse(const Vec2& a, const Vec2& b) const {
   if (!segment_meets_box(bounds_, a, b)) return {};
   if (is_rect_) return traverse_rect(bounds_, a, b);
-  return convex_ ? traverse_convex(vertices_, a, b) : traverse_polygon(vertices_, a, b);
+  return convex_ ? traverse_convex(vertices_, a, b) : traverse_polygon(vertices_, bounds_, a, b);
 }
 
 bool Shape::contains(const Vec2& p) const {
@@ -318,30 +289,6 @@ bool Shape::contains(const Vec2& p) const {
            p.y() > bounds_.min_y + kTol && p.y() < bounds_.max_y - kTol;
   }
   return strictly_inside(vertices_, p);
-}
-
-std::optional<std::string> polygon_problem(const std::vector<Vec2>& v) {
-  const size_t n = v.size();
-  if (n < 3) return "needs at least 3 vertices, has " + std::to_string(n);
-  for (const Vec2& p : v) {
-    if (!std::isfinite(p.x()) || !std::isfinite(p.y())) return "has a non-finite coordinate";
-  }
-  double area2 = 0.0;
-  for (size_t i = 0, j = n - 1; i < n; j = i++) area2 += cross(v[j], v[i]);
-  if (std::abs(area2) <= 1e-9) return "has (near) zero area";
-  for (size_t i = 0; i < n; ++i) {
-    const Vec2& p0 = v[i];
-    const Vec2& p1 = v[(i + 1) % n];
-    if ((p1 - p0).norm() <= kTol) return "has a repeated vertex (index " + std::to_string(i) + ")";
-    for (size_t k = i + 1; k < n; ++k) {
-      const bool adjacent = k == i + 1 || (i == 0 && k == n - 1);
-      if (adjacent) continue;
-      if (segments_intersect(p0, p1, v[k], v[(k + 1) % n])) {
-        return "edges " + std::to_string(i) + " and " + std::to_string(k) + " cross or touch";
-      }
-    }
-  }
-  return std::nullopt;
 }
 
 Attenuator Attenuator::obstacle(Shape shape, const RadioParameters& params, std::string name) {

@@ -18,6 +18,7 @@
 //   Polygons are closed implicitly, are simple (no self-intersection), of any orientation,
 //   convex or not.
 #include "common/geometry/geometry.hpp"
+#include "common/geometry/shapes.hpp"
 
 #include <optional>
 #include <string>
@@ -27,7 +28,7 @@ namespace autonomy::sim::radio {
 
 struct RadioParameters;
 
-inline constexpr double kBoundaryToleranceM = 1e-9;
+inline constexpr double kBoundaryToleranceM = geometry::kSamePointM;
 
 struct Traversal {
   int crossings = 0;
@@ -61,9 +62,7 @@ class Shape {
   std::vector<geometry::Vec2> vertices_;
 };
 
-// Why `vertices` is not a usable polygon: fewer than 3 vertices, a non-finite coordinate,
-// (near) zero area, or two edges that cross or overlap. Nothing when it is usable.
-std::optional<std::string> polygon_problem(const std::vector<geometry::Vec2>& vertices);
+using geometry::polygon_problem;  // the shared check (common/geometry/shapes.hpp)
 
 // A shape and what it costs a signal path: loss = crossings * loss_per_crossing_db
 // + stretches * loss_per_stretch_db + inside_m * loss_per_metre_db.

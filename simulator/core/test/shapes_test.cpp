@@ -15,6 +15,10 @@ TEST(Shapes, PolygonProblemsAreNamed) {
   // A bow tie: edges 0 (0,0)-(3,2) and 2 (3,0)-(0,3) cross.
   EXPECT_EQ(polygon_problem({{0, 0}, {3, 2}, {3, 0}, {0, 3}}), "edges 0 and 2 cross");
   EXPECT_EQ(polygon_problem({{0, 0}, {1, 0}, {1, 0}, {0, 1}}), "repeats vertex 1");
+  // Within a nanometre is the same point, and edges that close touch.
+  EXPECT_EQ(polygon_problem({{0, 0}, {1, 0}, {1, 1e-10}, {0, 1}}), "repeats vertex 1");
+  EXPECT_EQ(polygon_problem({{0, 0}, {4, 0}, {4, 4}, {2, 1e-10}, {0, 4}}), "edges 0 and 2 cross");
+  EXPECT_EQ(polygon_problem({{0, 0}, {4, 0}, {4, 4}, {2, 1e-3}, {0, 4}}), std::nullopt);  // 1 mm is room
   EXPECT_EQ(polygon_problem({{0, 0}, {4, 0}, {4, 4}, {2, 1}, {0, 4}}), std::nullopt);  // concave is fine
   EXPECT_EQ(polygon_problem({{0, 0}, {0, 4}, {4, 4}, {4, 0}}), std::nullopt);          // clockwise too
 }

@@ -1,6 +1,7 @@
 // Moving walls (door leaves) in the radio model: a closed door between two radios costs one wall,
 // the same door open costs nothing, and the leaf counts wherever it is moved to.
 #include "simulator/radio/radio_model.hpp"
+#include "simulator/radio/test/hand_parameters.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,17 +14,7 @@ namespace {
 
 using geometry::Vec2;
 
-RadioParameters hand_parameters() {
-  RadioParameters p;
-  p.tx_power_dbm = 20.0;
-  p.reference_distance_m = 1.0;
-  p.reference_loss_db = 40.05;
-  p.path_loss_exponent = 3.0;
-  p.receiver_sensitivity_dbm = -90.0;
-  p.wall_loss_db = 12.0;
-  p.inside_loss_db_per_m = 0.5;
-  return p;
-}
+using test::hand_parameters;
 
 Vec2 tip_at(const Vec2& hinge, double length, double angle) {
   return hinge + length * Vec2(std::cos(angle), std::sin(angle));
