@@ -30,13 +30,6 @@ namespace {
 using namespace std::chrono_literals;
 using msg::GoalState;
 
-
-
-void write_file(const std::string& path, const std::string& text) {
-  std::ofstream out(path);
-  out << text;
-}
-
 std::string states_text(const std::vector<msg::GoalStatus>& v) {
   std::string out;
   for (const auto& s : v) {

@@ -32,7 +32,6 @@
 #include <list>
 #include <memory>
 #include <sstream>
-#include <thread>
 
 namespace autonomy::test {
 namespace {
@@ -435,10 +434,8 @@ TEST_F(SystemTest, LockstepStalledBehaviorRejoinsAndStaysInStep) {
     sim_status.poll();
   };
   // Wandering forever keeps the behavior commanding every tick, so every ack announces a command.
-  {
-    std::ofstream mission(dir().file("wander.pbtxt"));
-    mission << "name: \"wander\" robot: \"r1\" initial_state: \"w\" states { name: \"w\" wander {} }\n";
-  }
+  write_file(dir().file("wander.pbtxt"),
+             "name: \"wander\" robot: \"r1\" initial_state: \"w\" states { name: \"w\" wander {} }\n");
   // The demo world with a 0.5 s ack timeout: the freeze below must outlast it but not the DDS
   // lease (2 s in loopback.xml), after which the process would count as gone, not slow.
   {
@@ -446,7 +443,7 @@ TEST_F(SystemTest, LockstepStalledBehaviorRejoinsAndStaysInStep) {
     const std::string from = "ack_timeout_s: 2.0";
     ASSERT_NE(scenario.find(from), std::string::npos);
     scenario.replace(scenario.find(from), from.size(), "ack_timeout_s: 0.5");
-    std::ofstream(dir().file("scenario.pbtxt")) << scenario;
+    write_file(dir().file("scenario.pbtxt"), scenario);
   }
   start_simulator({"--config", dir().file("scenario.pbtxt"), "--wait-for", "behavior/r1"});
   auto& behavior = start_behavior("r1", {"--mission", dir().file("wander.pbtxt")});
@@ -457,13 +454,14 @@ TEST_F(SystemTest, LockstepStalledBehaviorRejoinsAndStaysInStep) {
   }));
 
   behavior.signal(SIGSTOP);
-  std::this_thread::sleep_for(1200ms);
-  behavior.signal(SIGCONT);
-  ASSERT_TRUE(await("the simulator to have dropped the frozen behavior/r1", [&] {
+  // Woken as soon as the simulator has dropped it, well inside the DDS lease.
+  const bool dropped = static_cast<bool>(await("the simulator to drop the frozen behavior/r1", [&] {
     poll_all();
     const auto s = last_status(sim_status);
     return s && s->participants_dropped >= 1;
   }));
+  behavior.signal(SIGCONT);
+  ASSERT_TRUE(dropped);
   ASSERT_TRUE(await("behavior/r1 rejoined", [&] {
     poll_all();
     const auto s = last_status(sim_status);

@@ -40,17 +40,27 @@ enum Domain : int {
   kDomainDoorDetour = 76,
 };
 
-
-
-void write_file(const std::string& path, const std::string& text) {
-  std::ofstream out(path);
-  out << text;
-  ASSERT_TRUE(out.good()) << "cannot write " << path;
+// Both door worlds: r1 on the west side at (2, 3), seeing doors within 4 m; lockstep.
+constexpr const char* kDoorSensingRobot = R"pb(
+robots {
+  id: "r1"
+  kinematics: HOLONOMIC
+  radius: 0.3
+  max_speed: 1.0
+  max_omega: 2.0
+  start { x: 2.0 y: 3.0 theta: 0.0 }
+  spawn_at_start: true
+  sensors {
+    range { rays: 16 max_range_m: 6.0 }
+    doors { range_m: 4.0 }
+  }
 }
+simulation { mode: LOCKSTEP step_s: 0.05 seed: 3 }
+)pb";
 
 // A corridor split by a wall at x = 10 whose only opening is door d1 (closed at the start). The
 // door swings clockwise, into the east room, away from a robot waiting on the west side.
-constexpr const char* kDoorScenario = R"pb(
+const std::string kDoorScenario = std::string(R"pb(
 name: "door-corridor"
 world {
   width: 20.0
@@ -70,21 +80,7 @@ doors {
   rooms: "east"
   angle: 0.0
 }
-robots {
-  id: "r1"
-  kinematics: HOLONOMIC
-  radius: 0.3
-  max_speed: 1.0
-  max_omega: 2.0
-  start { x: 2.0 y: 3.0 theta: 0.0 }
-  spawn_at_start: true
-  sensors {
-    range { rays: 16 max_range_m: 6.0 }
-    doors { range_m: 4.0 }
-  }
-}
-simulation { mode: LOCKSTEP step_s: 0.05 seed: 3 }
-)pb";
+)pb") + kDoorSensingRobot;
 
 // A building between r1 (parked at (3, 10)) and the far side (25, 10); walls take 60 dB each, so
 // a link through the building is lost while the open distance alone keeps it.
@@ -321,7 +317,7 @@ TEST_F(WorldTest, ClosedDoorStopsRobotUntilOpened) {
 // A wall at x = 10 with two doorways: d1 at y = 3 (closed) on the straight way from r1 to its goal,
 // d2 at y = 9 (open). Both swing into the east room; d2's open leaf lies along the wall north of
 // its doorway, out of the way of a robot heading south-east (plans do not know door leaves).
-constexpr const char* kTwoDoorScenario = R"pb(
+const std::string kTwoDoorScenario = std::string(R"pb(
 name: "two-doors"
 world {
   width: 20.0
@@ -336,21 +332,7 @@ doors { id: "d1" position { x: 10.0 y: 3.0 } width: 1.6 heading: 1.5707963267948
         rooms: "west" rooms: "east" angle: 0.0 }
 doors { id: "d2" position { x: 10.0 y: 9.0 } width: 1.6 heading: -1.5707963267948966 swing: COUNTER_CLOCKWISE
         rooms: "west" rooms: "east" }
-robots {
-  id: "r1"
-  kinematics: HOLONOMIC
-  radius: 0.3
-  max_speed: 1.0
-  max_omega: 2.0
-  start { x: 2.0 y: 3.0 theta: 0.0 }
-  spawn_at_start: true
-  sensors {
-    range { rays: 16 max_range_m: 6.0 }
-    doors { range_m: 4.0 }
-  }
-}
-simulation { mode: LOCKSTEP step_s: 0.05 seed: 3 }
-)pb";
+)pb") + kDoorSensingRobot;
 
 // Navigation for other services: a door seen closed on the way is planned around; the goal stays
 // active (no blocked status) and is reached through the other door.

@@ -32,6 +32,13 @@ inline std::string read_file(const std::string& path) {
   return ss.str();
 }
 
+// Writes a file the test hands to a process (scenario, mission); a failed write fails the test.
+inline void write_file(const std::string& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+  ASSERT_TRUE(out.good()) << "cannot write " << path;
+}
+
 class ProcessTest : public ::testing::Test {
  protected:
   // Every test begins with this: its own domain, its own folder, the observer participant.
