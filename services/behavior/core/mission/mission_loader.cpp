@@ -162,6 +162,10 @@ class MissionChecker {
         error(at.at("name"), "layer name obstacles is reserved for the map's obstacles");
         continue;
       }
+      if (l.name().find('+') != std::string::npos) {  // a goal's constraint set could never name it
+        error(at.at("name"), "layer name " + l.name() + " contains '+', which joins layer names in constraint sets");
+        continue;
+      }
       if (!unique(seen, l.name(), "layer", l.name().empty() ? at.self() : at.at("name"))) continue;
       ConstraintLayerSpec spec{l.name(), {}};
       if (l.areas_size() == 0) error(at.self(), "layer " + l.name() + " has no areas");

@@ -226,6 +226,8 @@ TEST(MissionLoader, PlanSetMistakes) {
             Errors{"m.pbtxt:1:51: plan set p: blend_gains are only used with selection BLENDED"});
   EXPECT_EQ(errors_of("layers { name: \"obstacles\" areas { max_x: 1 max_y: 1 } }\n" + tail),
             Errors{"m.pbtxt:1:10: layer name obstacles is reserved for the map's obstacles"});
+  EXPECT_EQ(errors_of("layers { name: \"fog+rain\" areas { max_x: 1 max_y: 1 } }\n" + tail),
+            Errors{"m.pbtxt:1:10: layer name fog+rain contains '+', which joins layer names in constraint sets"});
   EXPECT_EQ(errors_of("layers { name: \"c\" areas { min_x: 2 max_x: 1 max_y: 1 } }\n" + tail),
             Errors{"m.pbtxt:1:20: layer c: area 0 is empty or inverted: min (2, 0) must be below max (1, 1)"});
 }
