@@ -2,6 +2,7 @@
 // C++ value types of idl/simulation.idl.
 #include "common/geometry/geometry.hpp"
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -37,6 +38,8 @@ struct MapPolygon {
 
 // An occupancy raster in the world frame; `blocked` holds cols * rows bytes (1 = blocked),
 // row-major from the bottom row. (Run-length coded on the wire: see idl/simulation.idl.)
+// A received raster of more than kMaxMapRasterCells cells (a 16,000 x 16,000 map) arrives empty.
+inline constexpr std::size_t kMaxMapRasterCells = std::size_t{1} << 28;
 struct MapRaster {
   std::string name;
   double origin_x = 0.0;

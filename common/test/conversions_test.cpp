@@ -124,6 +124,24 @@ TEST(ConversionsTest, WorldMapRasterWhoseRunsDoNotCoverItArrivesEmpty) {
   EXPECT_EQ(v.rasters[1].blocked, (std::vector<uint8_t>{0, 1, 1, 1}));
 }
 
+TEST(ConversionsTest, WorldMapRasterBeyondTheCellLimitArrivesEmpty) {
+  // 100,000 x 100,000 cells coded by three runs: 10 GB of cells if decoded.
+  uint32_t runs[] = {4000000000u, 4000000000u, 2000000000u};
+  autonomy_MapRaster raster{};
+  raster.name = const_cast<char*>("huge");
+  raster.resolution = 0.01;
+  raster.cols = 100000;
+  raster.rows = 100000;
+  raster.runs = {3, 3, runs, false};
+  autonomy_WorldMap c{};
+  c.name = const_cast<char*>("m");
+  c.rasters = {1, 1, &raster, false};
+  const msg::WorldMap v = DdsType<msg::WorldMap>::from_c(c);
+  ASSERT_EQ(v.rasters.size(), 1u);
+  EXPECT_EQ(v.rasters[0].cols, 0u);
+  EXPECT_TRUE(v.rasters[0].blocked.empty());
+}
+
 TEST(ConversionsTest, SimulatorStatusRoundTrip) {
   expect_round_trip(test::make_sim_status(Variant::Full));
   expect_round_trip(test::make_sim_status(Variant::Empty));

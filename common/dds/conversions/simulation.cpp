@@ -144,8 +144,11 @@ msg::WorldMap DdsType<msg::WorldMap>::from_c(const C& in) {
     std::size_t coded = 0;
     for (uint32_t k = 0; k < r.runs._length; ++k) coded += r.runs._buffer[k];
     // Allocate only what the runs describe: a sample claiming huge dimensions with few runs
-    // keeps its claimed size only if the runs cover it.
-    raster.blocked = cells_of(r.runs._buffer, r.runs._length, std::min(cells, coded));
+    // keeps its claimed size only if the runs cover it, and only up to kMaxMapRasterCells (a few
+    // huge runs could otherwise ask for more memory than the reader has).
+    const bool plausible = cells <= msg::kMaxMapRasterCells;
+    raster.blocked = plausible ? cells_of(r.runs._buffer, r.runs._length, std::min(cells, coded))
+                               : std::vector<uint8_t>{};
     if (raster.blocked.size() != cells) {
       raster.cols = 0;  // inconsistent sample: readers see an empty raster rather than a wrong one
       raster.rows = 0;
