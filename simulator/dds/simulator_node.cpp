@@ -1,5 +1,7 @@
 #include "simulator/dds/simulator_node.hpp"
 
+#include "common/msg/text_limits.hpp"
+
 #include "simulator/dds/map_message.hpp"
 
 #include "simulator/dds/radio_setup.hpp"
@@ -219,6 +221,11 @@ void SimulatorNode::on_commands(std::vector<dds::Sample<msg::VelocityCommand>> s
   for (auto& s : samples) {
     if (!s.valid) continue;
     msg::VelocityCommand& c = s.value;
+    if (auto problem = msg::first_length_problem(
+            {{"robot_id", c.robot_id, msg::kMaxNameLength}, {"source", c.source, msg::kMaxNameLength}})) {
+      reject(c, *problem);
+      continue;
+    }
     // The barrier counts commands of its participants, including dropped ones that may be about
     // to rejoin; others (tools, unregistered processes) are applied at the next step.
     const bool synchronised = lockstep() && barrier_.on_command(c.source, c.tick);
@@ -245,6 +252,10 @@ void SimulatorNode::on_acks(std::vector<dds::Sample<msg::TickAck>> samples) {
 void SimulatorNode::on_registrations(std::vector<dds::Sample<msg::LockstepRegistration>> samples) {
   for (const auto& s : samples) {
     const std::string& name = s.value.participant;
+    if (auto problem = msg::length_problem("participant", name, msg::kMaxNameLength)) {
+      spdlog::warn("lockstep registration of '{}' ignored: {}", msg::clipped_for_log(name), *problem);
+      continue;
+    }
     if (s.valid && s.value.active && s.instance_state == dds::InstanceState::Alive) {
       if (barrier_.add(name)) spdlog::info("participant {} joined lockstep at tick {}", name, tick_);
     } else {
@@ -256,8 +267,19 @@ void SimulatorNode::on_registrations(std::vector<dds::Sample<msg::LockstepRegist
 }
 
 void SimulatorNode::on_spawn_requests(std::vector<dds::Sample<msg::SpawnRequest>> samples) {
-  for (auto& s : samples)
-    if (s.valid) spawn_requests_.push_back(std::move(s.value));
+  for (auto& s : samples) {
+    if (!s.valid) continue;
+    const msg::SpawnRequest& r = s.value;
+    if (auto problem = msg::first_length_problem({{"request_id", r.request_id, msg::kMaxIdLength},
+                                                  {"requester", r.requester, msg::kMaxNameLength}})) {
+      spdlog::warn("spawn request '{}' from '{}' rejected: {}", msg::clipped_for_log(r.request_id),
+                   msg::clipped_for_log(r.requester), *problem);
+      spawn_reply_writer_.write({msg::clipped_id(r.request_id), msg::clipped_id(r.robot_id, msg::kMaxNameLength),
+                                 msg::RequestStatus::Rejected, *problem});
+      continue;
+    }
+    spawn_requests_.push_back(std::move(s.value));
+  }
   handle_spawns();
 }
 
@@ -351,8 +373,10 @@ void SimulatorNode::apply_commands(const std::vector<msg::VelocityCommand>& comm
 
 void SimulatorNode::reject(const msg::VelocityCommand& c, const std::string& reason) {
   ++commands_rejected_;
-  spdlog::warn("rejected velocity command for robot '{}' from '{}' at tick {}: {}", c.robot_id, c.source, c.tick, reason);
-  rejection_writer_.write({c.robot_id, c.source, c.tick, reason});
+  spdlog::warn("rejected velocity command for robot '{}' from '{}' at tick {}: {}", msg::clipped_for_log(c.robot_id),
+               msg::clipped_for_log(c.source), c.tick, reason);
+  rejection_writer_.write({msg::clipped_id(c.robot_id, msg::kMaxNameLength), msg::clipped_id(c.source, msg::kMaxNameLength),
+                           c.tick, reason});
 }
 
 void SimulatorNode::handle_spawns() {
@@ -452,6 +476,13 @@ void SimulatorNode::on_door_commands(std::vector<dds::Sample<msg::DoorCommand>> 
   for (const auto& s : samples) {
     if (!s.valid) continue;
     const msg::DoorCommand& c = s.value;
+    if (auto problem = msg::first_length_problem(
+            {{"door_id", c.door_id, msg::kMaxNameLength}, {"source", c.source, msg::kMaxNameLength}})) {
+      ++commands_rejected_;
+      spdlog::warn("rejected door command from '{}' at tick {}: {}", msg::clipped_for_log(c.source), tick_, *problem);
+      rejection_writer_.write({"", msg::clipped_id(c.source, msg::kMaxNameLength), tick_, *problem});
+      continue;
+    }
     const CommandResult result = world_.set_door(c.door_id, c.angle);
     if (result.accepted) {
       spdlog::info("door '{}' told to take angle {} by '{}' at tick {}", c.door_id, c.angle, c.source, tick_);
@@ -542,6 +573,13 @@ void SimulatorNode::on_outbox(std::vector<dds::Sample<msg::TeamMessage>> samples
   for (auto& s : samples) {
     if (!s.valid) continue;
     const msg::TeamMessage& m = s.value;
+    if (auto problem = msg::first_length_problem({{"message_id", m.message_id, msg::kMaxIdLength},
+                                                  {"payload", m.payload, msg::kMaxTextLength}})) {
+      ++messages_invalid_;
+      spdlog::debug("team message '{}' from '{}' dropped: {}", msg::clipped_for_log(m.message_id),
+                    msg::clipped_for_log(m.from), *problem);
+      continue;
+    }
     const auto from = index_of(m.from);
     std::vector<size_t> recipients;
     if (m.to == msg::kBroadcast) {
@@ -662,8 +700,9 @@ void SimulatorNode::on_handover_requests(std::vector<dds::Sample<msg::HandoverRe
     const office::DeskAnswer answer =
         office_ ? office_->request(request, robot, now_s) : office::no_office_answer(request, now_s);
     spdlog::info("{} request '{}' from '{}' for robot '{}' ({} of '{}' at '{}') at tick {}: {}{}",
-                 answer.state == office::DeskAnswerState::rejected ? "rejected" : "answered", r.request_id,
-                 r.requester, r.robot_id, office::to_string(request.kind), r.object_id, r.place, tick_,
+                 answer.state == office::DeskAnswerState::rejected ? "rejected" : "answered",
+                 msg::clipped_for_log(r.request_id), msg::clipped_for_log(r.requester), msg::clipped_for_log(r.robot_id),
+                 office::to_string(request.kind), msg::clipped_for_log(r.object_id), msg::clipped_for_log(r.place), tick_,
                  answer.reason.empty() ? "" : answer.reason + ": ", answer.detail);
     publish_handover(answer);
   }

@@ -1,5 +1,6 @@
 #include "simulator/office/handover_desk.hpp"
 
+#include "common/msg/text_limits.hpp"
 #include "simulator/core/robot_id.hpp"
 
 namespace autonomy::sim::office {
@@ -16,14 +17,13 @@ const char* to_string(DeskAnswerState state) {
 
 namespace {
 
-constexpr std::size_t kMaxRequestIdLength = 128;
-
 // Why the ids of a request cannot be served, or nothing.
 std::optional<std::string> malformed(const DeskRequest& r) {
   if (r.request_id.empty()) return std::string("request_id is empty");
-  if (r.request_id.size() > kMaxRequestIdLength)
-    return "request_id has " + std::to_string(r.request_id.size()) + " characters, more than " +
-           std::to_string(kMaxRequestIdLength);
+  if (auto problem = msg::first_length_problem({{"request_id", r.request_id, msg::kMaxIdLength},
+                                                {"place", r.place, msg::kMaxNameLength},
+                                                {"object_id", r.object_id, msg::kMaxNameLength}}))
+    return problem;
   if (auto problem = robot_id_problem(r.robot_id)) return problem;
   if (r.kind != HandoverKind::load && r.kind != HandoverKind::unload) return std::string("kind is neither load nor unload");
   if (r.place.empty()) return std::string("place is empty");
@@ -35,7 +35,7 @@ std::optional<std::string> malformed(const DeskRequest& r) {
 
 DeskAnswer no_office_answer(const DeskRequest& r, double now_s) {
   DeskAnswer a;
-  a.request_id = r.request_id;
+  a.request_id = msg::clipped_id(r.request_id);
   a.robot_id = r.robot_id;
   a.kind = r.kind;
   a.place = r.place;
@@ -52,7 +52,7 @@ HandoverDesk::HandoverDesk(OfficeSpec spec, uint64_t seed) : office_(std::move(s
 DeskAnswer HandoverDesk::answer(const DeskRequest& r, DeskAnswerState state, std::string reason, std::string detail,
                                 double now_s) {
   DeskAnswer a;
-  a.request_id = r.request_id;
+  a.request_id = msg::clipped_id(r.request_id);
   a.robot_id = r.robot_id;
   a.kind = r.kind;
   a.place = r.place;

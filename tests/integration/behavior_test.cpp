@@ -12,6 +12,7 @@
 //     85    BehaviorTest.MissionFileErrorsExitWithOne
 //     86    TeamTest.KeepsContactWithParallelCommunicationPlans
 //     87    TeamTest.OnObstaclePlansLosesContactInTheAlley
+//     88    BehaviorTest.OverlongIdAndNegativeToleranceAreRejectedAndTheServiceGoesOn
 #include "tests/support/process_test.hpp"
 
 #include <gtest/gtest.h>
@@ -136,6 +137,60 @@ TEST_F(BehaviorTest, UnknownConstraintSetIsRejected) {
   EXPECT_EQ(s.state, GoalState::Rejected);
   EXPECT_EQ(s.reason,
             "unknown constraint set 'obstacles+smoke': layer 'smoke' is not defined (known layers: obstacles)");
+}
+
+// 2b. Bounded inputs: a goal whose id is 100 KB long and a goal with a negative tolerance are
+// rejected with reasons (the long id echoed cut to 128 bytes, never logged whole); the behavior
+// goes on and reaches the next goal; the simulator rejects an overlong velocity command source.
+TEST_F(BehaviorTest, OverlongIdAndNegativeToleranceAreRejectedAndTheServiceGoesOn) {
+  join(88);
+  Recorder<msg::Heartbeat> beats(participant(), dds::topics::heartbeat);
+  Recorder<msg::GoalStatus> goals(participant(), dds::topics::goal_status);
+  Recorder<msg::CommandRejection> rejections(participant(), dds::topics::command_rejected);
+  dds::Topic<msg::NavGoal> goal_topic(participant(), dds::topics::nav_goal);
+  dds::Writer<msg::NavGoal> goal_writer(participant(), goal_topic);
+  dds::Topic<msg::VelocityCommand> command_topic(participant(), dds::topics::cmd_vel);
+  dds::Writer<msg::VelocityCommand> command_writer(participant(), command_topic);
+
+  auto& simulator = start_simulator({"--wait-for", "behavior/r1"});
+  auto& behavior = start_behavior("r1");
+  ASSERT_TRUE(await_ready(beats, behavior));
+  ASSERT_TRUE(goal_writer.wait_for_readers(1, kDeadline));
+  ASSERT_TRUE(command_writer.wait_for_readers(1, kDeadline));
+  const std::string long_id(100000, 'x');
+  goal_writer.write({"r1", long_id, kGoalX, kGoalY, 0.0, ""});
+  const auto status_of = [&](const std::string& id) -> std::optional<msg::GoalStatus> {
+    goals.poll();
+    const auto found = goals.matching([&](const msg::GoalStatus& g) { return g.goal_id == id; });
+    if (found.empty()) return std::nullopt;
+    return found.back();
+  };
+  ASSERT_TRUE(await("the overlong goal answered", [&] { return status_of(long_id.substr(0, 128)).has_value(); }))
+      << states_text(goals.all());
+  EXPECT_EQ(status_of(long_id.substr(0, 128))->state, GoalState::Rejected);
+  EXPECT_EQ(status_of(long_id.substr(0, 128))->reason, "goal_id has 100000 bytes, more than 128");
+
+  goal_writer.write({"r1", "backwards", kGoalX, kGoalY, -0.5, ""});
+  ASSERT_TRUE(await("goal backwards answered", [&] { return status_of("backwards").has_value(); }));
+  EXPECT_EQ(status_of("backwards")->state, GoalState::Rejected);
+  EXPECT_EQ(status_of("backwards")->reason, "goal tolerance -0.500 m is negative (0 means the controller's default)");
+
+  command_writer.write({"r1", std::string(5000, 's'), 0, 0.1, 0.0, 0.0});
+  ASSERT_TRUE(await("the overlong command source rejected", [&] {
+    rejections.poll();
+    return !rejections.all().empty();
+  }));
+  EXPECT_EQ(rejections.all().front().reason, "source has 5000 bytes, more than 64");
+  EXPECT_EQ(rejections.all().front().source.size(), 64u);
+
+  goal_writer.write({"r1", "after", kGoalX, kGoalY, 0.0, ""});
+  ASSERT_TRUE(await("goal after reached", [&] {
+    const auto s = status_of("after");
+    return s && s->state == GoalState::Reached;
+  })) << states_text(goals.all());
+  EXPECT_TRUE(simulator.running());
+  // The id reached the logs cut, not whole (100 KB three times before).
+  EXPECT_LT(read_file(behavior.log_file()).size(), 50000u);
 }
 
 // 3. plan_tool builds a plan on the demo scenario; behavior --plans uses it for a matching goal.

@@ -1,5 +1,7 @@
 #include "services/behavior/core/goal_tracker.hpp"
 
+#include "common/msg/text_limits.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -42,10 +44,14 @@ std::optional<std::string> GoalTracker::validate(const std::string& goal_id, dou
   std::string rejection;
   if (goal_id.empty()) {
     rejection = "goal id is empty";
+  } else if (auto too_long = msg::length_problem("goal_id", goal_id, msg::kMaxIdLength)) {
+    rejection = std::move(*too_long);
   } else if (!std::isfinite(x) || !std::isfinite(y)) {
     rejection = "goal coordinates are not finite";
   } else if (std::isnan(tolerance_m) || std::isinf(tolerance_m)) {
     rejection = "goal tolerance is not finite";
+  } else if (tolerance_m < 0.0) {
+    rejection = format("goal tolerance %.3f m is negative (0 means the controller's default)", tolerance_m);
   } else if (!grid_.inside_world(geometry::Vec2(x, y))) {
     rejection = format("goal (%.2f, %.2f) is outside the world [0, %.2f] x [0, %.2f]", x, y,
                        grid_.width_m(), grid_.height_m());
@@ -56,7 +62,8 @@ std::optional<std::string> GoalTracker::validate(const std::string& goal_id, dou
 
 GoalReport GoalTracker::rejected(const std::string& goal_id, const geometry::Vec2& goal, std::string reason) {
   GoalReport report;
-  report.changes.push_back(make_status(goal_id, GoalState::Rejected, std::move(reason), goal));
+  // An overlong id is echoed cut to the limit: the sender still recognises its goal.
+  report.changes.push_back(make_status(msg::clipped_id(goal_id), GoalState::Rejected, std::move(reason), goal));
   // A rejected goal becomes "the latest goal" only when nothing is being pursued.
   if (!pursued_) status_ = report.changes.back();
   report.current = status_;

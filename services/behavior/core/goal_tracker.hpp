@@ -81,6 +81,11 @@ class GoalTracker {
   };
   std::optional<Target> target() const;
 
+  // Why a goal cannot be pursued (empty or overlong id, non-finite or outside the world, negative
+  // tolerance), or nothing. set_goal() checks it too; the node asks first so that it computes no
+  // field for a goal it will reject.
+  std::optional<std::string> validate(const std::string& goal_id, double x, double y, double tolerance_m) const;
+
   // Rejects a goal for a reason found outside the tracker (e.g. an unknown constraint set), with
   // the same policy as a malformed goal: the pursued goal carries on.
   [[nodiscard]] GoalReport reject(const std::string& goal_id, double x, double y, std::string reason);
@@ -113,7 +118,6 @@ class GoalTracker {
     std::optional<double> collision_since_s;  // start of the current run of collisions
   };
 
-  std::optional<std::string> validate(const std::string& goal_id, double x, double y, double tolerance_m) const;
   GoalReport rejected(const std::string& goal_id, const geometry::Vec2& goal, std::string reason);
   GoalReport pursue(const std::string& goal_id, const geometry::Vec2& goal, double tolerance_m,
                     double now_s, CostToGoField field);

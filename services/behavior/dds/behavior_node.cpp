@@ -1,5 +1,7 @@
 #include "services/behavior/dds/behavior_node.hpp"
 
+#include "common/msg/text_limits.hpp"
+
 #include "services/behavior/core/mission/plan_library.hpp"
 
 #include <spdlog/spdlog.h>
@@ -272,7 +274,7 @@ void BehaviorNode::on_goals(std::vector<dds::Sample<msg::NavGoal>> samples) {
   for (const auto& s : samples) {
     if (!s.valid || s.value.robot_id != options_.robot_id) continue;
     if (options_.mission) {
-      spdlog::warn("goal {} ignored: robot {} runs mission '{}'", s.value.goal_id, options_.robot_id,
+      spdlog::warn("goal {} ignored: robot {} runs mission '{}'", msg::clipped_for_log(s.value.goal_id), options_.robot_id,
                    options_.mission->name);
     } else if (tracker_) {
       accept_goal(s.value);
@@ -285,7 +287,15 @@ void BehaviorNode::on_goals(std::vector<dds::Sample<msg::NavGoal>> samples) {
 void BehaviorNode::on_cancels(std::vector<dds::Sample<msg::NavCancel>> samples) {
   for (const auto& s : samples) {
     if (!s.valid || s.value.robot_id != options_.robot_id) continue;
-    const std::string what = s.value.goal_id.empty() ? std::string("the current goal") : "goal " + s.value.goal_id;
+    const std::string what =
+        s.value.goal_id.empty() ? std::string("the current goal") : "goal " + msg::clipped_for_log(s.value.goal_id);
+    // A cancel has no reply of its own: an unusable one is logged and changes nothing.
+    auto problem = msg::length_problem("goal_id", s.value.goal_id, msg::kMaxIdLength);
+    if (!problem) problem = msg::length_problem("reason", s.value.reason, msg::kMaxTextLength);
+    if (problem) {
+      spdlog::warn("cancel of {} ignored: {}", what, *problem);
+      continue;
+    }
     if (options_.mission) {
       spdlog::warn("cancel of {} ignored: robot {} runs a mission", what, options_.robot_id);
       continue;
@@ -302,10 +312,17 @@ void BehaviorNode::on_cancels(std::vector<dds::Sample<msg::NavCancel>> samples) 
 }
 
 void BehaviorNode::accept_goal(const msg::NavGoal& goal) {
-  spdlog::info("goal {} for robot {}: ({:.2f}, {:.2f}) tolerance {} constraints '{}'", goal.goal_id, goal.robot_id,
-               goal.x, goal.y, goal.tolerance, goal.constraint_set);
+  spdlog::info("goal {} for robot {}: ({:.2f}, {:.2f}) tolerance {} constraints '{}'",
+               msg::clipped_for_log(goal.goal_id), goal.robot_id, goal.x, goal.y, goal.tolerance,
+               msg::clipped_for_log(goal.constraint_set));
   const double now_s = lockstep_.clock().now_s();
   std::string error;
+  auto problem = tracker_->validate(goal.goal_id, goal.x, goal.y, goal.tolerance);
+  if (!problem) problem = msg::length_problem("constraint_set", goal.constraint_set, msg::kMaxTextLength);
+  if (problem) {
+    publish(tracker_->reject(goal.goal_id, goal.x, goal.y, *problem));
+    return;
+  }
   const auto set = parse_constraint_set(goal.constraint_set, &error);
   if (!set) {
     publish(tracker_->reject(goal.goal_id, goal.x, goal.y, error));

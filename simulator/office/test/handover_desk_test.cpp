@@ -82,7 +82,12 @@ TEST_F(HandoverDeskTest, MalformedAndUnknownRobotRequestsAreRejectedWithReasons)
   EXPECT_EQ(reject(ask("", "r1", HandoverKind::load, "anna-desk", "letter-1"), at_anna),
             "invalid_request: request_id is empty");
   EXPECT_EQ(reject(ask(std::string(129, 'q'), "r1", HandoverKind::load, "anna-desk", "letter-1"), at_anna),
-            "invalid_request: request_id has 129 characters, more than 128");
+            "invalid_request: request_id has 129 bytes, more than 128");
+  EXPECT_EQ(desk.request(ask(std::string(100000, 'q'), "r1", HandoverKind::load, "anna-desk", "letter-1"), at_anna, t0)
+                .request_id,
+            std::string(128, 'q'));  // echoed cut to the limit
+  EXPECT_EQ(reject(ask("q0", "r1", HandoverKind::load, std::string(65, 'p'), "letter-1"), at_anna),
+            "invalid_request: place has 65 bytes, more than 64");
   EXPECT_EQ(reject(ask("q1", "r 1", HandoverKind::load, "anna-desk", "letter-1"), at_anna),
             "invalid_request: robot id 'r 1' has characters outside [A-Za-z0-9_.-]");
   EXPECT_EQ(reject(ask("q2", "r1", static_cast<HandoverKind>(7), "anna-desk", "letter-1"), at_anna),

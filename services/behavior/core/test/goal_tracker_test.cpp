@@ -72,12 +72,15 @@ TEST(GoalTracker, GoalAlreadyWithinToleranceIsActiveThenReachedInOneUpdate) {
   EXPECT_EQ(states(r.changes), (std::vector<GoalState>{GoalState::Active, GoalState::Reached}));
 }
 
-TEST(GoalTracker, NonPositiveToleranceMeansTheDefault) {
+TEST(GoalTracker, ZeroToleranceMeansTheDefaultAndNegativeIsRejected) {
   GoalTracker tracker(test_grid(), GoalTrackerConfig{0.5});
   (void)tracker.set_goal("g", 2.0, 1.0, 0.0, 0.0);
   EXPECT_DOUBLE_EQ(tracker.tolerance_m(), 0.5);
-  (void)tracker.set_goal("g", 2.0, 1.0, -1.0, 0.0);
-  EXPECT_DOUBLE_EQ(tracker.tolerance_m(), 0.5);
+  const auto negative = tracker.set_goal("h", 2.0, 1.0, -1.0, 0.0);
+  ASSERT_EQ(negative.changes.size(), 1u);
+  EXPECT_EQ(negative.changes[0].state, GoalState::Rejected);
+  EXPECT_EQ(negative.changes[0].reason, "goal tolerance -1.000 m is negative (0 means the controller's default)");
+  EXPECT_EQ(tracker.target()->id, "g");  // the pursued goal is untouched
   (void)tracker.set_goal("g", 2.0, 1.0, 0.05, 0.0);
   EXPECT_DOUBLE_EQ(tracker.tolerance_m(), 0.05);
 }
@@ -125,6 +128,17 @@ TEST(GoalTracker, RejectionReasons) {
   EXPECT_EQ(reason("g", 1.0, -0.5, 0.2), "goal (1.00, -0.50) is outside the world [0, 10.00] x [0, 8.00]");
   EXPECT_FALSE(tracker.active());
   EXPECT_EQ(tracker.status()->state, GoalState::Rejected);
+}
+
+TEST(GoalTracker, OverlongGoalIdIsRejectedAndEchoedCutToTheLimit) {
+  GoalTracker tracker(test_grid());
+  const std::string id(100000, 'x');
+  const auto r = tracker.set_goal(id, 2.0, 1.0, 0.2, 0.0);
+  ASSERT_EQ(r.changes.size(), 1u);
+  EXPECT_EQ(r.changes[0].state, GoalState::Rejected);
+  EXPECT_EQ(r.changes[0].reason, "goal_id has 100000 bytes, more than 128");
+  EXPECT_EQ(r.changes[0].goal_id, std::string(128, 'x'));
+  EXPECT_TRUE(tracker.set_goal(std::string(128, 'y'), 2.0, 1.0, 0.2, 0.0).changes[0].state == GoalState::Accepted);
 }
 
 TEST(GoalTracker, RejectedGoalLeavesTheActiveOneRunning) {
