@@ -3,6 +3,7 @@
 // Conversions live in conversions/<area>.cpp, one file per IDL file.
 #include "common/dds/type_traits.hpp"
 #include "common/msg/clock.hpp"
+#include "common/msg/courier.hpp"
 #include "common/msg/navigation.hpp"
 #include "common/msg/office.hpp"
 #include "common/msg/robot.hpp"
@@ -12,6 +13,7 @@
 #include "common/msg/truth.hpp"
 #include "common/msg/system.hpp"
 #include "idl/clock.h"
+#include "idl/courier.h"
 #include "idl/navigation.h"
 #include "idl/office.h"
 #include "idl/robot.h"
@@ -32,6 +34,21 @@
   };
 
 namespace autonomy::dds {
+
+// sequence<string> fields: the C sequence points into `v` and into `arena` (see Arena).
+inline dds_sequence_string to_c_strings(const std::vector<std::string>& v, Arena& arena) {
+  const uint32_t n = static_cast<uint32_t>(v.size());
+  auto* names = arena.allocate<char*>(n);
+  for (uint32_t i = 0; i < n; ++i) names[i] = c_str(v[i]);
+  return {n, n, names, false};
+}
+
+inline std::vector<std::string> from_c_strings(const dds_sequence_string& s) {
+  std::vector<std::string> v;
+  v.reserve(s._length);
+  for (uint32_t i = 0; i < s._length; ++i) v.push_back(from_c_str(s._buffer[i]));
+  return v;
+}
 
 AUTONOMY_DDS_TYPE(msg::Heartbeat, autonomy_Heartbeat)
 AUTONOMY_DDS_TYPE(msg::SimClock, autonomy_SimClock)
@@ -62,6 +79,12 @@ AUTONOMY_DDS_TYPE(msg::MissionStatus, autonomy_MissionStatus)
 AUTONOMY_DDS_TYPE(msg::HandoverRequest, autonomy_HandoverRequest)
 AUTONOMY_DDS_TYPE(msg::HandoverStatus, autonomy_HandoverStatus)
 AUTONOMY_DDS_TYPE(msg::ObjectState, autonomy_ObjectState)
+// The courier scheduler: commands and replies, job states, schedules, reports.
+AUTONOMY_DDS_TYPE(msg::CourierCommand, autonomy_CourierCommand)
+AUTONOMY_DDS_TYPE(msg::CourierReply, autonomy_CourierReply)
+AUTONOMY_DDS_TYPE(msg::CourierJobStatus, autonomy_CourierJobStatus)
+AUTONOMY_DDS_TYPE(msg::CourierSchedule, autonomy_CourierSchedule)
+AUTONOMY_DDS_TYPE(msg::CourierReport, autonomy_CourierReport)
 
 }  // namespace autonomy::dds
 

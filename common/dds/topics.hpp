@@ -45,6 +45,13 @@ inline constexpr TopicSpec<msg::HandoverRequest> handover_request{"autonomy/offi
                                                                   QosClass::Request};
 inline constexpr TopicSpec<msg::HandoverStatus> handover_status{"autonomy/office/handover_status", QosClass::Reply};
 inline constexpr TopicSpec<msg::ObjectState> truth_object{"autonomy/truth/object", QosClass::State};
+// The courier scheduler: commands in, replies, job states, schedules, top-level reports out.
+inline constexpr TopicSpec<msg::CourierCommand> courier_command{"autonomy/courier/command", QosClass::Request};
+inline constexpr TopicSpec<msg::CourierReply> courier_reply{"autonomy/courier/reply", QosClass::Reply};
+inline constexpr TopicSpec<msg::CourierJobStatus> courier_job_status{"autonomy/courier/job_status",
+                                                                     QosClass::State};
+inline constexpr TopicSpec<msg::CourierSchedule> courier_schedule{"autonomy/courier/schedule", QosClass::State};
+inline constexpr TopicSpec<msg::CourierReport> courier_report{"autonomy/courier/report", QosClass::Event};
 
 // Calls visit(spec) for every topic of the catalogue: tools use it to find a topic's type by name.
 template <typename Visitor>
@@ -76,6 +83,11 @@ void for_each_topic(Visitor&& visit) {
   visit(handover_request);
   visit(handover_status);
   visit(truth_object);
+  visit(courier_command);
+  visit(courier_reply);
+  visit(courier_job_status);
+  visit(courier_schedule);
+  visit(courier_report);
 }
 
 }  // namespace autonomy::dds::topics

@@ -1,5 +1,6 @@
 // Human-readable names of the message enums, as logs and JSON show them.
 #include "common/msg/clock.hpp"
+#include "common/msg/courier.hpp"
 #include "common/msg/navigation.hpp"
 #include "common/msg/office.hpp"
 #include "common/msg/robot.hpp"
@@ -44,6 +45,28 @@ const char* to_string(HandoverState s) {
     case HandoverState::Rejected: return "rejected";
     case HandoverState::Completed: return "completed";
     case HandoverState::Failed: return "failed";
+  }
+  return "?";
+}
+
+const char* to_string(CourierCommandKind k) {
+  switch (k) {
+    case CourierCommandKind::Text: return "text";
+    case CourierCommandKind::Deliver: return "deliver";
+    case CourierCommandKind::Cancel: return "cancel";
+    case CourierCommandKind::Revise: return "revise";
+  }
+  return "?";
+}
+
+const char* to_string(JobState s) {
+  switch (s) {
+    case JobState::Queued: return "queued";
+    case JobState::Underway: return "underway";
+    case JobState::Opportunistic: return "opportunistic";
+    case JobState::Completed: return "completed";
+    case JobState::Failed: return "failed";
+    case JobState::Cancelled: return "cancelled";
   }
   return "?";
 }

@@ -189,6 +189,26 @@ TEST(ConversionsTest, OfficeTypesRoundTrip) {
   }
 }
 
+TEST(ConversionsTest, CourierTypesRoundTrip) {
+  for (const Variant v : {Variant::Full, Variant::Empty}) {
+    expect_round_trip(test::make_courier_command(v));
+    expect_round_trip(test::make_courier_reply(v));
+    expect_round_trip(test::make_courier_job_status(v));
+    expect_round_trip(test::make_courier_schedule(v));
+    expect_round_trip(test::make_courier_report(v));
+  }
+  for (const msg::JobState state : {msg::JobState::Queued, msg::JobState::Underway, msg::JobState::Opportunistic,
+                                    msg::JobState::Completed, msg::JobState::Failed, msg::JobState::Cancelled}) {
+    msg::CourierJobStatus m;
+    m.state = state;
+    EXPECT_EQ(round_trip(m).state, state) << msg::to_string(state);
+  }
+  EXPECT_EQ(DdsType<msg::CourierJobStatus>::descriptor()->m_nkeys, 1u);  // job_id
+  EXPECT_EQ(DdsType<msg::CourierSchedule>::descriptor()->m_nkeys, 1u);   // robot_id
+  EXPECT_EQ(DdsType<msg::CourierReply>::descriptor()->m_nkeys, 0u);
+  EXPECT_STREQ(DdsType<msg::CourierCommand>::type_name(), "autonomy::CourierCommand");
+}
+
 TEST(ConversionsTest, OfficeTypesToCFieldsKeysAndEnums) {
   {
     autonomy_HandoverRequest c{};

@@ -2,6 +2,7 @@
 // Shared by the tests of common/: sample values of every message (every field distinct and not
 // its default), a field-wise view for comparing them, and the loopback DDS profile.
 #include "common/msg/clock.hpp"
+#include "common/msg/courier.hpp"
 #include "common/msg/navigation.hpp"
 #include "common/msg/office.hpp"
 #include "common/msg/robot.hpp"
@@ -336,6 +337,86 @@ inline msg::ObjectState make_object_state(Variant v) {
 }
 
 // Field-wise views: tuples compare with == and GoogleTest prints them field by field.
+inline msg::CourierCommand make_courier_command(Variant v) {
+  msg::CourierCommand m;
+  m.command_id = s(v, kUtf8A);
+  m.requester = s(v, kUtf8B);
+  m.kind = msg::CourierCommandKind::Revise;  // default is Text
+  m.text = s(v, "deliver it");
+  m.job_id = s(v, "job-3");
+  m.object_id = s(v, "letter-1");
+  m.object_kind = s(v, "letter");
+  m.object_colour = s(v, "red");
+  m.from = s(v, "A-111");
+  m.to = s(v, kUtf8C);
+  m.deadline = s(v, "10:30");
+  return m;
+}
+
+inline msg::CourierReply make_courier_reply(Variant v) {
+  msg::CourierReply m;
+  m.command_id = s(v, kUtf8A);
+  m.accepted = true;
+  m.job_id = s(v, "job-3");
+  m.action = s(v, "deliver");
+  m.object = s(v, "the red letter");
+  m.from = s(v, "meeting-table");
+  m.to = s(v, kUtf8B);
+  m.deadline = s(v, "10:30");
+  if (v == Variant::Full) m.assumptions = {"a", kUtf8C};
+  m.reason = s(v, "unknown_place");
+  m.detail = s(v, "no place 'A-112'");
+  m.word = s(v, "A-112");
+  m.column = 17;
+  if (v == Variant::Full) m.suggestions = {"A-111", "A-121"};
+  m.tick = 77;
+  return m;
+}
+
+inline msg::CourierJobStatus make_courier_job_status(Variant v) {
+  msg::CourierJobStatus m;
+  m.job_id = s(v, kUtf8A);
+  m.command_id = s(v, "c1");
+  m.state = msg::JobState::Opportunistic;  // default is Queued
+  m.phase = s(v, "to_destination");
+  m.robot_id = s(v, "rhino");
+  m.object_id = s(v, "letter-1");
+  m.object_kind = s(v, "letter");
+  m.object_colour = s(v, "red");
+  m.from = s(v, "meeting-table");
+  m.to = s(v, "michael-desk");
+  m.deadline = s(v, "10:30:00");
+  m.estimated_completion = s(v, "10:14:05");
+  m.reason = s(v, kUtf8B);
+  m.tick = 88;
+  return m;
+}
+
+inline msg::CourierSchedule make_courier_schedule(Variant v) {
+  msg::CourierSchedule m;
+  m.robot_id = s(v, kUtf8A);
+  m.engine = s(v, "exact");
+  m.proved_optimal = true;
+  if (v == Variant::Full) {
+    m.stops = {{"job-1", "load", "meeting-table", "A-111", 10.5, 22.5}, {"job-1", "unload", kUtf8B, "A-120", 80, 95}};
+    m.assumptions = {"A-111 open at 08:31:00", kUtf8C};
+  }
+  m.late_jobs = 2;
+  m.total_lateness_s = 12.5;
+  m.tick = 99;
+  return m;
+}
+
+inline msg::CourierReport make_courier_report(Variant v) {
+  msg::CourierReport m;
+  m.command_id = s(v, kUtf8A);
+  m.job_id = s(v, kUtf8B);
+  m.success = true;
+  m.text = s(v, kUtf8C);
+  m.tick = 111;
+  return m;
+}
+
 inline auto fields(const msg::Heartbeat& m) {
   return std::make_tuple(m.service, m.instance, m.host, m.pid, static_cast<int>(m.state), m.uptime_s, m.period_ms);
 }
@@ -425,6 +506,28 @@ inline auto fields(const msg::HandoverStatus& m) {
 }
 inline auto fields(const msg::ObjectState& m) {
   return std::make_tuple(m.object_id, m.kind, m.colour, m.place, m.carrier, m.tick);
+}
+inline auto fields(const msg::CourierCommand& m) {
+  return std::make_tuple(m.command_id, m.requester, static_cast<int>(m.kind), m.text, m.job_id, m.object_id,
+                         m.object_kind, m.object_colour, m.from, m.to, m.deadline);
+}
+inline auto fields(const msg::CourierReply& m) {
+  return std::make_tuple(m.command_id, m.accepted, m.job_id, m.action, m.object, m.from, m.to, m.deadline,
+                         m.assumptions, m.reason, m.detail, m.word, m.column, m.suggestions, m.tick);
+}
+inline auto fields(const msg::CourierJobStatus& m) {
+  return std::make_tuple(m.job_id, m.command_id, static_cast<int>(m.state), m.phase, m.robot_id, m.object_id,
+                         m.object_kind, m.object_colour, m.from, m.to, m.deadline, m.estimated_completion, m.reason,
+                         m.tick);
+}
+inline auto fields(const msg::CourierSchedule& m) {
+  std::vector<std::tuple<std::string, std::string, std::string, std::string, double, double>> stops;
+  for (const auto& x : m.stops) stops.emplace_back(x.job_id, x.action, x.place, x.room, x.arrival_s, x.finish_s);
+  return std::make_tuple(m.robot_id, m.engine, m.proved_optimal, stops, m.assumptions, m.late_jobs,
+                         m.total_lateness_s, m.tick);
+}
+inline auto fields(const msg::CourierReport& m) {
+  return std::make_tuple(m.command_id, m.job_id, m.success, m.text, m.tick);
 }
 
 #ifdef AUTONOMY_LOOPBACK_URI

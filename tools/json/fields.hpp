@@ -7,6 +7,7 @@
 
 #include "common/geometry/geometry.hpp"
 #include "common/msg/clock.hpp"
+#include "common/msg/courier.hpp"
 #include "common/msg/navigation.hpp"
 #include "common/msg/office.hpp"
 #include "common/msg/robot.hpp"
@@ -53,6 +54,16 @@ template <>
 struct EnumValues<msg::HandoverState> {
   static constexpr std::array values{msg::HandoverState::Accepted, msg::HandoverState::Rejected,
                                      msg::HandoverState::Completed, msg::HandoverState::Failed};
+};
+template <>
+struct EnumValues<msg::CourierCommandKind> {
+  static constexpr std::array values{msg::CourierCommandKind::Text, msg::CourierCommandKind::Deliver,
+                                     msg::CourierCommandKind::Cancel, msg::CourierCommandKind::Revise};
+};
+template <>
+struct EnumValues<msg::JobState> {
+  static constexpr std::array values{msg::JobState::Queued,    msg::JobState::Underway, msg::JobState::Opportunistic,
+                                     msg::JobState::Completed, msg::JobState::Failed,   msg::JobState::Cancelled};
 };
 
 // visit(v, m) calls v.key(name, member) for key fields and v.field(name, member) for the others;
@@ -520,6 +531,115 @@ struct Fields<msg::ObjectState> {
     v.field("colour", m.colour);
     v.field("place", m.place);
     v.field("carrier", m.carrier);
+    v.field("tick", m.tick);
+  }
+};
+
+// --- The courier scheduler -------------------------------------------------------------------
+
+template <>
+struct Fields<msg::CourierCommand> {
+  static constexpr const char* name = "CourierCommand";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("command_id", m.command_id);
+    v.field("requester", m.requester);
+    v.field("kind", m.kind);
+    v.field("text", m.text);
+    v.field("job_id", m.job_id);
+    v.field("object_id", m.object_id);
+    v.field("object_kind", m.object_kind);
+    v.field("object_colour", m.object_colour);
+    v.field("from", m.from);
+    v.field("to", m.to);
+    v.field("deadline", m.deadline);
+  }
+};
+
+template <>
+struct Fields<msg::CourierReply> {
+  static constexpr const char* name = "CourierReply";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("command_id", m.command_id);
+    v.field("accepted", m.accepted);
+    v.field("job_id", m.job_id);
+    v.field("action", m.action);
+    v.field("object", m.object);
+    v.field("from", m.from);
+    v.field("to", m.to);
+    v.field("deadline", m.deadline);
+    v.field("assumptions", m.assumptions);
+    v.field("reason", m.reason);
+    v.field("detail", m.detail);
+    v.field("word", m.word);
+    v.field("column", m.column);
+    v.field("suggestions", m.suggestions);
+    v.field("tick", m.tick);
+  }
+};
+
+template <>
+struct Fields<msg::CourierJobStatus> {
+  static constexpr const char* name = "CourierJobStatus";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.key("job_id", m.job_id);
+    v.field("command_id", m.command_id);
+    v.field("state", m.state);
+    v.field("phase", m.phase);
+    v.field("robot_id", m.robot_id);
+    v.field("object_id", m.object_id);
+    v.field("object_kind", m.object_kind);
+    v.field("object_colour", m.object_colour);
+    v.field("from", m.from);
+    v.field("to", m.to);
+    v.field("deadline", m.deadline);
+    v.field("estimated_completion", m.estimated_completion);
+    v.field("reason", m.reason);
+    v.field("tick", m.tick);
+  }
+};
+
+template <>
+struct Fields<msg::CourierStop> {
+  static constexpr const char* name = "CourierStop";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("job_id", m.job_id);
+    v.field("action", m.action);
+    v.field("place", m.place);
+    v.field("room", m.room);
+    v.field("arrival_s", m.arrival_s);
+    v.field("finish_s", m.finish_s);
+  }
+};
+
+template <>
+struct Fields<msg::CourierSchedule> {
+  static constexpr const char* name = "CourierSchedule";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.key("robot_id", m.robot_id);
+    v.field("engine", m.engine);
+    v.field("proved_optimal", m.proved_optimal);
+    v.field("stops", m.stops);
+    v.field("assumptions", m.assumptions);
+    v.field("late_jobs", m.late_jobs);
+    v.field("total_lateness_s", m.total_lateness_s);
+    v.field("tick", m.tick);
+  }
+};
+
+template <>
+struct Fields<msg::CourierReport> {
+  static constexpr const char* name = "CourierReport";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("command_id", m.command_id);
+    v.field("job_id", m.job_id);
+    v.field("success", m.success);
+    v.field("text", m.text);
     v.field("tick", m.tick);
   }
 };

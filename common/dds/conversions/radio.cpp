@@ -2,24 +2,6 @@
 
 namespace autonomy::dds {
 
-namespace {
-
-dds_sequence_string to_c_strings(const std::vector<std::string>& v, Arena& arena) {
-  const uint32_t n = static_cast<uint32_t>(v.size());
-  auto* names = arena.allocate<char*>(n);
-  for (uint32_t i = 0; i < n; ++i) names[i] = c_str(v[i]);
-  return {n, n, names, false};
-}
-
-std::vector<std::string> from_c_strings(const dds_sequence_string& s) {
-  std::vector<std::string> v;
-  v.reserve(s._length);
-  for (uint32_t i = 0; i < s._length; ++i) v.push_back(from_c_str(s._buffer[i]));
-  return v;
-}
-
-}  // namespace
-
 void DdsType<msg::RadioLink>::to_c(const msg::RadioLink& v, C& out, Arena&) {
   out.robot_a = c_str(v.robot_a);
   out.robot_b = c_str(v.robot_b);

@@ -167,10 +167,7 @@ void DdsType<msg::SimulatorStatus>::to_c(const msg::SimulatorStatus& v, C& out, 
   out.tick = v.tick;
   out.sim_time_ns = v.sim_time_ns;
   out.robots = v.robots;
-  const uint32_t n = static_cast<uint32_t>(v.lockstep_participants.size());
-  auto* names = arena.allocate<char*>(n);
-  for (uint32_t i = 0; i < n; ++i) names[i] = c_str(v.lockstep_participants[i]);
-  out.lockstep_participants = {n, n, names, false};
+  out.lockstep_participants = to_c_strings(v.lockstep_participants, arena);
   out.commands_applied = v.commands_applied;
   out.commands_rejected = v.commands_rejected;
   out.participants_dropped = v.participants_dropped;
@@ -186,8 +183,7 @@ msg::SimulatorStatus DdsType<msg::SimulatorStatus>::from_c(const C& in) {
   v.tick = in.tick;
   v.sim_time_ns = in.sim_time_ns;
   v.robots = in.robots;
-  for (uint32_t i = 0; i < in.lockstep_participants._length; ++i)
-    v.lockstep_participants.push_back(from_c_str(in.lockstep_participants._buffer[i]));
+  v.lockstep_participants = from_c_strings(in.lockstep_participants);
   v.commands_applied = in.commands_applied;
   v.commands_rejected = in.commands_rejected;
   v.participants_dropped = in.participants_dropped;
