@@ -1,0 +1,528 @@
+#include "services/courier/core/execution/courier_executive.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <set>
+#include <utility>
+
+namespace autonomy::courier {
+
+std::string clock_text(double seconds_of_day) {
+  const long total = std::lround(std::max(0.0, seconds_of_day));
+  char text[16];
+  std::snprintf(text, sizeof text, "%02ld:%02ld:%02ld", (total / 3600) % 100, (total / 60) % 60, total % 60);
+  return text;
+}
+
+CourierExecutive::CourierExecutive(Floor floor, ScheduleSource& scheduler, ExecutiveSettings settings)
+    : floor_(std::move(floor)), scheduler_(scheduler), settings_(settings) {}
+
+void CourierExecutive::add_robot(const std::string& id, int capacity) {
+  Robot& r = robots_[id];
+  r.id = id;
+  r.capacity = std::max(1, capacity);
+  reschedule_needed_ = true;
+}
+
+const Job* CourierExecutive::job(const std::string& id) const {
+  const auto it = jobs_.find(id);
+  return it == jobs_.end() ? nullptr : &it->second;
+}
+
+std::vector<PlanStop> CourierExecutive::route(const std::string& robot) const {
+  const auto it = robots_.find(robot);
+  return it == robots_.end() ? std::vector<PlanStop>{} : it->second.route;
+}
+
+void CourierExecutive::event(std::string text) { orders_.events.push_back(std::move(text)); }
+
+void CourierExecutive::changed(const Job& job) {
+  if (std::find(orders_.changed_jobs.begin(), orders_.changed_jobs.end(), job.id) == orders_.changed_jobs.end())
+    orders_.changed_jobs.push_back(job.id);
+}
+
+void CourierExecutive::add_job(Job job, double now_s) {
+  job.state = JobState::queued;
+  job.phase = JobPhase::none;
+  if (job.object_place.empty() && job.object_carrier.empty()) job.object_place = job.pickup;
+  job.accepted_at_s = now_s;
+  const std::string id = job.id;
+  jobs_[id] = std::move(job);
+  event("job " + id + " accepted");
+  changed(jobs_[id]);
+  reschedule_needed_ = true;
+}
+
+void CourierExecutive::restore_job(Job job) {
+  const std::string id = job.id;
+  jobs_[id] = std::move(job);
+  reschedule_needed_ = true;
+}
+
+void CourierExecutive::restore_pending_handover(const HandoverOrder& order) {
+  const auto it = robots_.find(order.robot);
+  if (it == robots_.end()) return;
+  // sent_at 0: the first step sends it again at once.
+  it->second.handover = PendingHandover{order, -1e18, false};
+}
+
+std::optional<std::string> CourierExecutive::cancel(const std::string& job_id, const std::string& reason,
+                                                    double now_s) {
+  const auto it = jobs_.find(job_id);
+  if (it == jobs_.end()) return "no job '" + job_id + "'";
+  Job& job = it->second;
+  if (job.finished()) return "job " + job_id + " is already " + to_string(job.state);
+  if (!job.return_to.empty()) return "job " + job_id + " is already returning its object to " + job.return_to;
+  const std::string why = reason.empty() ? std::string("cancelled") : "cancelled: " + reason;
+  // A load under way completes or fails first; the object belief then says what to do.
+  if (job.aboard() || job.phase == JobPhase::loading) {
+    start_return(job, JobState::cancelled, why, now_s);
+  } else {
+    finish(job, JobState::cancelled, why, now_s);
+  }
+  reschedule_needed_ = true;
+  return std::nullopt;
+}
+
+std::optional<std::string> CourierExecutive::revise(const std::string& job_id,
+                                                    const std::optional<std::string>& destination,
+                                                    const std::optional<std::optional<double>>& deadline_s,
+                                                    double now_s) {
+  const auto it = jobs_.find(job_id);
+  if (it == jobs_.end()) return "no job '" + job_id + "'";
+  Job& job = it->second;
+  if (job.finished()) return "job " + job_id + " is already " + to_string(job.state);
+  if (!job.return_to.empty()) return "job " + job_id + " is returning its object to " + job.return_to;
+  if (destination) {
+    if (!floor_.place(*destination)) return "no place '" + *destination + "'";
+    job.destination = *destination;
+    event("job " + job_id + " now goes to " + *destination);
+  }
+  if (deadline_s) {
+    job.deadline_s = *deadline_s;
+    event("job " + job_id + " deadline " + (*deadline_s ? clock_text(**deadline_s) : std::string("none")));
+  }
+  // A job that waited for a door may be possible at its new destination.
+  if (job.state == JobState::opportunistic && destination) {
+    job.state = JobState::queued;
+    job.reason.clear();
+  }
+  (void)now_s;
+  changed(job);
+  reschedule_needed_ = true;
+  return std::nullopt;
+}
+
+void CourierExecutive::on_pose(const std::string& robot, double x, double y) {
+  const auto it = robots_.find(robot);
+  if (it == robots_.end() || !std::isfinite(x) || !std::isfinite(y)) return;
+  it->second.x = x;
+  it->second.y = y;
+  it->second.pose_known = true;
+}
+
+std::optional<std::string> CourierExecutive::closed_door_for(const std::string& place) const {
+  const auto door = floor_.door_to(place);
+  if (door && !doors_.believed_open(*door)) return door;
+  return std::nullopt;
+}
+
+std::string CourierExecutive::closed_reason(const std::string& door) const {
+  const auto view = doors_.view(door);
+  return door + " closed at " + clock_text(view ? view->seen_at_s : 0.0);
+}
+
+void CourierExecutive::on_door(const std::string& robot, const std::string& door_id, double angle_rad,
+                               double now_s) {
+  if (!robots_.count(robot)) return;  // only our own robots' eyes
+  const DoorChange change = doors_.observe(door_id, angle_rad, now_s, robot);
+  if (change == DoorChange::none) return;
+  if (change == DoorChange::closed) {
+    event(door_id + " seen closed by " + robot + " at " + clock_text(now_s));
+    // A broken assumption: each open job whose next step lies behind this door fails over to the
+    // opportunistic primaries, and the rest is rescheduled in this same tick.
+    for (auto& [id, job] : jobs_) {
+      if (job.finished() || job.state == JobState::opportunistic) continue;
+      const NextStep step = next_step(job);
+      const std::string& place = step == NextStep::load ? job.object_place : job.target_place();
+      if (step != NextStep::none && floor_.door_to(place) == door_id) {
+        if (!job.return_to.empty()) continue;  // a return finds another place in reschedule()
+        make_opportunistic(job, closed_reason(door_id), now_s);
+      }
+    }
+    reschedule_needed_ = true;
+  } else {
+    event(door_id + " seen open by " + robot + " at " + clock_text(now_s));
+    for (const auto& [id, job] : jobs_)
+      if (job.state == JobState::opportunistic) opportunity_pending_ = true;
+    reschedule_needed_ = true;
+  }
+}
+
+void CourierExecutive::on_goal(const std::string& robot, const std::string& goal_id, GoalOutcome outcome,
+                               const std::string& reason, double now_s) {
+  const auto it = robots_.find(robot);
+  if (it == robots_.end()) return;
+  Robot& r = it->second;
+  if (goal_id != r.goal_id || r.goal_id.empty()) return;  // not ours, or an older one
+  switch (outcome) {
+    case GoalOutcome::accepted:
+    case GoalOutcome::active: return;
+    case GoalOutcome::reached:
+      r.at_place = r.goal_place;
+      r.goal_id.clear();
+      r.goal_place.clear();
+      return;
+    case GoalOutcome::blocked: {
+      const std::string place = r.goal_place;
+      r.goal_id.clear();
+      r.goal_place.clear();
+      event("goal to " + place + " blocked for " + robot + ": " + reason);
+      // The behavior names the door it saw closed ("... door A-120 closed"): its robot's eyes.
+      const std::string marker = "door ";
+      for (size_t at = reason.find(marker); at != std::string::npos; at = reason.find(marker, at + 1)) {
+        size_t end = at + marker.size();
+        while (end < reason.size() && reason[end] != ' ' && reason[end] != ',') ++end;
+        const std::string door = reason.substr(at + marker.size(), end - at - marker.size());
+        if (!door.empty() && reason.compare(end, 7, " closed") == 0) on_door(robot, door, 0.0, now_s);
+      }
+      if (!closed_door_for(place) && ++r.blocked[place] >= settings_.max_blocked_goals) {
+        for (auto& [id, job] : jobs_) {
+          const NextStep step = next_step(job);
+          const std::string& p = step == NextStep::load ? job.object_place : job.target_place();
+          if (step == NextStep::none || p != place) continue;
+          if (job.aboard() && job.return_to.empty())
+            start_return(job, JobState::failed, "cannot reach " + place + ": " + reason, now_s);
+          else if (!job.aboard())
+            finish(job, JobState::failed, "cannot reach " + place + ": " + reason, now_s);
+        }
+      }
+      reschedule_needed_ = true;
+      return;
+    }
+    case GoalOutcome::preempted:
+    case GoalOutcome::rejected:
+    case GoalOutcome::cancelled:
+      // Somebody else took the robot, or the goal was refused: ask again at the next dispatch.
+      event("goal " + goal_id + " " + (outcome == GoalOutcome::rejected ? "rejected" : "ended") + ": " + reason);
+      r.goal_id.clear();
+      r.goal_place.clear();
+      return;
+  }
+}
+
+void CourierExecutive::on_handover(const std::string& request_id, HandoverOutcome outcome, const std::string& reason,
+                                   const std::string& detail, double now_s) {
+  for (auto& [rid, r] : robots_) {
+    if (!r.handover || r.handover->order.request_id != request_id) continue;
+    const HandoverOrder order = r.handover->order;
+    const auto jt = jobs_.find(order.job_id);
+    if (outcome == HandoverOutcome::accepted) {
+      r.handover->accepted = true;
+      return;
+    }
+    r.handover.reset();
+    if (jt == jobs_.end()) return;
+    Job& job = jt->second;
+    const std::string what = std::string(order.load ? "load" : "unload") + " of " + order.object_id + " at " +
+                             order.place;
+    if (outcome == HandoverOutcome::completed) {
+      if (order.load) {
+        job.object_place.clear();
+        job.object_carrier = r.id;
+        event(job.object.id + " loaded at " + order.place + " by " + r.id + " at " + clock_text(now_s));
+      } else {
+        job.object_carrier.clear();
+        job.object_place = order.place;
+        event(job.object.id + " unloaded at " + order.place + " by " + r.id + " at " + clock_text(now_s));
+      }
+      job.reason.clear();
+      if (!job.return_to.empty() && job.object_place == job.return_to) {
+        finish(job, job.end_state_after_return, job.reason_after_return(), now_s);
+      } else if (job.return_to.empty() && job.object_place == job.destination) {
+        finish(job, JobState::completed, "", now_s);
+      } else {
+        job.phase = job.aboard() ? (job.return_to.empty() ? JobPhase::to_destination : JobPhase::returning)
+                                 : JobPhase::to_pickup;
+        changed(job);
+      }
+      return;
+    }
+    if (outcome == HandoverOutcome::failed) {
+      event(what + " failed: " + reason + (detail.empty() ? "" : " (" + detail + ")"));
+      job.phase = JobPhase::none;
+      changed(job);
+      return;  // tried again at the next dispatch
+    }
+    // Rejected.
+    event(what + " refused: " + reason + (detail.empty() ? "" : " (" + detail + ")"));
+    if (reason == "nobody_present" || reason == "helper_busy" || reason == "robot_busy" ||
+        reason == "object_in_handover") {
+      r.hold_until_s = now_s + settings_.retry_after_s;
+      job.reason = "waiting: " + (detail.empty() ? reason : detail);
+      changed(job);
+      reschedule_needed_ = true;
+    } else if (reason == "robot_not_at_place" || reason == "robot_moved_away") {
+      r.at_place.clear();  // drive there again
+    } else if (order.load) {
+      // The object is not where we believed (object_not_at_place, unknown_object, robot_full, ...).
+      finish(job, JobState::failed, "cannot load " + order.object_id + " at " + order.place + ": " + reason +
+                                        (detail.empty() ? "" : " (" + detail + ")"),
+             now_s);
+      reschedule_needed_ = true;
+    } else {
+      if (job.return_to.empty())
+        start_return(job, JobState::failed, "cannot unload at " + order.place + ": " + reason, now_s);
+      reschedule_needed_ = true;
+    }
+    return;
+  }
+}
+
+void CourierExecutive::make_opportunistic(Job& job, const std::string& reason, double now_s) {
+  job.state = JobState::opportunistic;
+  job.phase = JobPhase::none;
+  job.reason = reason;
+  job.estimated_completion_s.reset();
+  event("job " + job.id + " failed over to opportunistic: " + reason + " (" + clock_text(now_s) + ")");
+  changed(job);
+}
+
+void CourierExecutive::start_return(Job& job, JobState end_state, const std::string& reason, double now_s) {
+  job.return_to = job.pickup;
+  job.end_state_after_return = end_state;
+  job.return_reason = reason;
+  job.state = JobState::underway;
+  job.phase = JobPhase::returning;
+  job.reason = reason + "; returning " + job.object.id + " to " + job.return_to;
+  event("job " + job.id + ": " + job.reason + " (" + clock_text(now_s) + ")");
+  changed(job);
+}
+
+void CourierExecutive::finish(Job& job, JobState state, const std::string& reason, double now_s) {
+  job.state = state;
+  job.phase = JobPhase::none;
+  job.reason = reason;
+  job.estimated_completion_s = now_s;
+  changed(job);
+  ReportNote report{job.id, job.command_id, state == JobState::completed, ""};
+  const std::string object = (job.object.colour.empty() ? "" : job.object.colour + " ") + job.object.kind;
+  if (state == JobState::completed)
+    report.text = "delivered the " + object + " (" + job.object.id + ") to " + job.destination + " at " +
+                  clock_text(now_s);
+  else
+    report.text = std::string(to_string(state)) + ": " + reason + " (" + clock_text(now_s) + ")";
+  event("job " + job.id + " " + report.text);
+  orders_.reports.push_back(std::move(report));
+}
+
+PlanRequest CourierExecutive::request_for(double now_s, const std::vector<std::string>& extra_jobs) const {
+  PlanRequest req;
+  req.now_s = now_s;
+  for (const auto& [id, r] : robots_) req.robots.push_back({id, r.x, r.y, r.capacity});
+  for (const auto& [id, door] : doors_.doors())
+    if (!door.open) req.closed_doors.insert(id);
+  for (const auto& [id, job] : jobs_) {
+    const bool extra = std::find(extra_jobs.begin(), extra_jobs.end(), id) != extra_jobs.end();
+    if (job.finished() || (job.state == JobState::opportunistic && !extra)) continue;
+    if (next_step(job) == NextStep::none) continue;
+    req.jobs.push_back({id, job.object.lookalike_class(), job.object_place, job.target_place(), job.deadline_s,
+                        job.object_carrier});
+  }
+  return req;
+}
+
+void CourierExecutive::adopt(const Plan& plan, double now_s) {
+  for (auto& [id, r] : robots_) {
+    const auto it = plan.routes.find(id);
+    r.route = it == plan.routes.end() ? std::vector<PlanStop>{} : it->second;
+    ScheduleNote note{id, r.route, {}, plan.engine, plan.proved_optimal, plan.late_jobs, plan.total_lateness_s};
+    std::set<std::string> rooms;
+    for (const PlanStop& s : r.route) {
+      if (s.room.empty() || !floor_.door_of_room.count(s.room) || !rooms.insert(s.room).second) continue;
+      note.assumptions.push_back(s.room + " open at " + clock_text(s.arrival_s));
+    }
+    orders_.schedules.push_back(std::move(note));
+    for (const PlanStop& s : r.route) {
+      auto jt = jobs_.find(s.job_id);
+      if (jt == jobs_.end()) continue;
+      Job& job = jt->second;
+      const auto completion = plan.completion_s.find(job.id);
+      const std::optional<double> eta =
+          completion == plan.completion_s.end() ? std::nullopt : std::optional<double>(completion->second);
+      if (job.robot != id || job.estimated_completion_s != eta) {
+        job.robot = id;
+        job.estimated_completion_s = eta;
+        changed(job);
+      }
+    }
+  }
+  for (const auto& [job_id, why] : plan.unschedulable) {
+    auto jt = jobs_.find(job_id);
+    if (jt == jobs_.end() || jt->second.finished()) continue;
+    Job& job = jt->second;
+    if (!job.return_to.empty()) {
+      // Nowhere to return to through an open door: a loading station that is reachable is next
+      // time's choice; until then the object stays aboard and the job says why.
+      job.reason = job.return_reason + "; cannot return " + job.object.id + " yet: " + why;
+      changed(job);
+      continue;
+    }
+    const NextStep step = next_step(job);
+    const std::string& place = step == NextStep::load ? job.object_place : job.target_place();
+    const auto door = floor_.door_to(place);
+    make_opportunistic(job, door && !doors_.believed_open(*door) ? closed_reason(*door) : why, now_s);
+  }
+}
+
+void CourierExecutive::reschedule(double now_s) {
+  reschedule_needed_ = false;
+  adopt(scheduler_.plan(request_for(now_s, {})), now_s);
+}
+
+void CourierExecutive::opportunity_check(double now_s) {
+  opportunity_pending_ = false;
+  for (auto& [id, job] : jobs_) {
+    if (job.state != JobState::opportunistic) continue;
+    const NextStep step = next_step(job);
+    const std::string& place = step == NextStep::load ? job.object_place : job.target_place();
+    if (closed_door_for(place)) continue;  // still no way in
+    const Plan without = scheduler_.plan(request_for(now_s, {}));
+    PlanRequest with_request = request_for(now_s, {id});
+    with_request.first = {id};
+    const Plan with = scheduler_.plan(with_request);
+    if (with.unschedulable.count(id)) continue;
+    // Keeps every other deadline: no other job later than it would be without the opportunity.
+    int late_without = 0, late_with = 0;
+    double lateness_without = 0.0, lateness_with = 0.0;
+    for (const auto& [other_id, other] : jobs_) {
+      if (other_id == id || !other.deadline_s) continue;
+      const auto a = without.completion_s.find(other_id);
+      const auto b = with.completion_s.find(other_id);
+      if (a != without.completion_s.end()) {
+        late_without += a->second > *other.deadline_s;
+        lateness_without += std::max(0.0, a->second - *other.deadline_s);
+      }
+      if (b != with.completion_s.end()) {
+        late_with += b->second > *other.deadline_s;
+        lateness_with += std::max(0.0, b->second - *other.deadline_s);
+      }
+    }
+    if (late_with > late_without || lateness_with > lateness_without + 1e-6) {
+      event("opportunity for job " + id + " declined: it would make other jobs later");
+      continue;
+    }
+    job.state = JobState::queued;
+    job.reason.clear();
+    event("opportunity: job " + id + " taken up now (" + clock_text(now_s) + ")");
+    changed(job);
+    adopt(with, now_s);
+    reschedule_needed_ = false;
+  }
+}
+
+bool CourierExecutive::at(const Robot& robot, const std::string& place) const {
+  if (robot.at_place == place) return true;
+  const FloorPlace* p = floor_.place(place);
+  return p && robot.pose_known && std::hypot(robot.x - p->x, robot.y - p->y) <= p->radius * 0.9;
+}
+
+bool CourierExecutive::still_needed(const Robot& robot, const PlanStop& stop) const {
+  const auto it = jobs_.find(stop.job_id);
+  if (it == jobs_.end()) return false;
+  const Job& job = it->second;
+  if (job.finished() || job.state == JobState::opportunistic) return false;
+  const NextStep step = next_step(job);
+  if (stop.load) return step == NextStep::load && job.object_place == stop.place;
+  return step == NextStep::unload && job.object_carrier == robot.id && job.target_place() == stop.place;
+}
+
+void CourierExecutive::send_goal(Robot& robot, const std::string& place, double now_s) {
+  const FloorPlace* p = floor_.place(place);
+  if (!p) return;
+  robot.goal_id = robot.id + "/" + place + "/" + std::to_string(++robot.goal_seq);
+  robot.goal_place = place;
+  robot.at_place.clear();
+  const double tolerance = std::min(settings_.goal_tolerance_m, 0.5 * p->radius);
+  orders_.goals.push_back({robot.id, robot.goal_id, p->x, p->y, tolerance});
+  event(robot.id + " heads for " + place + " (" + clock_text(now_s) + ")");
+}
+
+void CourierExecutive::send_handover(Robot& robot, const PlanStop& stop, double now_s) {
+  Job& job = jobs_.at(stop.job_id);
+  HandoverOrder order{robot.id, robot.id + "/" + job.id + "/" + (stop.load ? "load" : "unload") + "/" +
+                                    std::to_string(++robot.request_seq),
+                      stop.load, stop.place, job.object.id, job.id};
+  robot.handover = PendingHandover{order, now_s, false};
+  orders_.handovers.push_back(order);
+  job.state = JobState::underway;
+  job.phase = stop.load ? JobPhase::loading : (job.return_to.empty() ? JobPhase::unloading : JobPhase::returning);
+  job.robot = robot.id;
+  changed(job);
+}
+
+void CourierExecutive::dispatch(Robot& robot, double now_s) {
+  if (robot.handover) {
+    // Unanswered: the same request again (the simulator answers a repeat, never hands over twice).
+    if (!robot.handover->accepted && now_s - robot.handover->sent_at_s >= settings_.request_timeout_s) {
+      robot.handover->sent_at_s = now_s;
+      orders_.handovers.push_back(robot.handover->order);
+    }
+    return;
+  }
+  if (now_s < robot.hold_until_s) return;
+  const PlanStop* next = nullptr;
+  for (const PlanStop& s : robot.route)
+    if (still_needed(robot, s)) {
+      next = &s;
+      break;
+    }
+  if (!next) {
+    idle_policy(robot, now_s);
+    return;
+  }
+  Job& job = jobs_.at(next->job_id);
+  if (at(robot, next->place)) {
+    send_handover(robot, *next, now_s);
+    return;
+  }
+  if (robot.goal_place != next->place) {
+    send_goal(robot, next->place, now_s);
+    const JobPhase phase = !job.return_to.empty() ? JobPhase::returning
+                           : next->load            ? JobPhase::to_pickup
+                                                   : JobPhase::to_destination;
+    if (job.state != JobState::underway || job.phase != phase || job.robot != robot.id) {
+      job.state = JobState::underway;
+      job.phase = phase;
+      job.robot = robot.id;
+      changed(job);
+    }
+  }
+}
+
+void CourierExecutive::idle_policy(Robot& robot, double now_s) {
+  // Nothing left that can be done: an object aboard whose job waits for a closed room goes back
+  // to where it came from, and the job fails with its reason (the paper's Fig. 7).
+  for (auto& [id, job] : jobs_) {
+    if (job.state != JobState::opportunistic || job.object_carrier != robot.id) continue;
+    start_return(job, JobState::failed, job.reason, now_s);
+    reschedule_needed_ = true;
+  }
+}
+
+Orders CourierExecutive::step(double now_s) {
+  if (opportunity_pending_) opportunity_check(now_s);
+  if (reschedule_needed_) reschedule(now_s);
+  for (auto& [id, r] : robots_) dispatch(r, now_s);
+  // The idle policy may have turned jobs into returns: plan and start them in this same tick.
+  if (reschedule_needed_) {
+    reschedule(now_s);
+    for (auto& [id, r] : robots_) dispatch(r, now_s);
+  }
+  Orders out = std::move(orders_);
+  orders_ = Orders{};
+  return out;
+}
+
+}  // namespace autonomy::courier

@@ -1,0 +1,178 @@
+#pragma once
+// The courier's plan executive (the paper's primary activities and policies), pure: events in
+// (commands already accepted, poses, door sightings, goal and handover statuses, ticks), orders out
+// (navigation goals, handover requests, job and schedule changes, top-level reports).
+//
+// Primary activities: per job, go to where the object lies, ask for the load, go to its
+// destination, ask for the unload. Which step comes next is derived from the object belief (see
+// job.hpp), so every activity can be interrupted and restarted.
+// Policies: every door sighting is folded into the door belief; a door seen closed that an open
+// step needs makes its job opportunistic ("A-120 closed at 10:14:05") and reschedules in the same
+// tick; a door seen open that enables an opportunistic job triggers the opportunity check: the job
+// is taken up now only if the scheduler predicts that no other job gets later; otherwise it waits.
+// Handovers nobody answers are repeated with the same request id; a refused one waits and retries;
+// a robot idle with the object of an opportunistic job aboard returns it to its pickup (the job
+// fails with its reason); a cancelled job's object aboard is returned before the job ends.
+#include "services/courier/core/execution/door_belief.hpp"
+#include "services/courier/core/execution/floor.hpp"
+#include "services/courier/core/execution/job.hpp"
+#include "services/courier/core/execution/schedule_source.hpp"
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace autonomy::courier {
+
+struct ExecutiveSettings {
+  double request_timeout_s = 5.0;   // an unanswered handover request is sent again (same id)
+  double retry_after_s = 20.0;      // a refused handover (nobody present, helper busy) is retried
+  int max_blocked_goals = 2;        // a place unreachable this often, no door to blame: its job fails
+  double goal_tolerance_m = 0.35;   // for navigation goals to places (within the place's radius)
+};
+
+struct NavGoalOrder {
+  std::string robot;
+  std::string goal_id;
+  double x = 0.0, y = 0.0;
+  double tolerance_m = 0.0;
+};
+
+struct HandoverOrder {
+  std::string robot;
+  std::string request_id;
+  bool load = true;
+  std::string place;
+  std::string object_id;
+  std::string job_id;
+};
+
+struct ScheduleNote {
+  std::string robot;
+  std::vector<PlanStop> stops;
+  std::vector<std::string> assumptions;  // "A-120 open at 10:14:05"
+  std::string engine;
+  bool proved_optimal = false;
+  int late_jobs = 0;
+  double total_lateness_s = 0.0;
+};
+
+struct ReportNote {
+  std::string job_id;
+  std::string command_id;
+  bool success = false;
+  std::string text;
+};
+
+// What the node must do after the events of a tick, in this order: journal and publish changed
+// jobs, send handovers (journalled first) and goals, publish schedules and reports.
+struct Orders {
+  std::vector<std::string> changed_jobs;
+  std::vector<HandoverOrder> handovers;
+  std::vector<NavGoalOrder> goals;
+  std::vector<ScheduleNote> schedules;
+  std::vector<ReportNote> reports;
+  std::vector<std::string> events;  // what happened, in words, in order (logs, tests)
+  bool empty() const {
+    return changed_jobs.empty() && handovers.empty() && goals.empty() && schedules.empty() && reports.empty() &&
+           events.empty();
+  }
+};
+
+enum class GoalOutcome { accepted, active, reached, blocked, preempted, rejected, cancelled };
+enum class HandoverOutcome { accepted, rejected, completed, failed };
+
+class CourierExecutive {
+ public:
+  CourierExecutive(Floor floor, ScheduleSource& scheduler, ExecutiveSettings settings = {});
+
+  void add_robot(const std::string& id, int capacity);
+  bool has_robot(const std::string& id) const { return robots_.count(id) != 0; }
+
+  // A job accepted by the command front end (pickup, destination and object checked there).
+  void add_job(Job job, double now_s);
+  // Restores a journalled job as it was (restart after a crash); no events.
+  void restore_job(Job job);
+  // Restores a handover request that was sent but whose answer was not journalled: it is sent
+  // again with the same id, and the simulator answers a repeat with its latest answer.
+  void restore_pending_handover(const HandoverOrder& order);
+
+  // Errors (unknown job, already finished, returning) as a reason; nothing on success.
+  std::optional<std::string> cancel(const std::string& job_id, const std::string& reason, double now_s);
+  std::optional<std::string> revise(const std::string& job_id, const std::optional<std::string>& destination,
+                                    const std::optional<std::optional<double>>& deadline_s, double now_s);
+
+  void on_pose(const std::string& robot, double x, double y);
+  void on_door(const std::string& robot, const std::string& door_id, double angle_rad, double now_s);
+  void on_goal(const std::string& robot, const std::string& goal_id, GoalOutcome outcome,
+               const std::string& reason, double now_s);
+  void on_handover(const std::string& request_id, HandoverOutcome outcome, const std::string& reason,
+                   const std::string& detail, double now_s);
+
+  // Once per tick, after the tick's events: reschedules when an assumption broke or the job set
+  // changed, dispatches each robot's next activity, and hands over the orders.
+  Orders step(double now_s);
+
+  const std::map<std::string, Job>& jobs() const { return jobs_; }
+  const Job* job(const std::string& id) const;
+  const DoorBelief& doors() const { return doors_; }
+  std::vector<PlanStop> route(const std::string& robot) const;
+
+ private:
+  struct PendingHandover {
+    HandoverOrder order;
+    double sent_at_s = 0.0;
+    bool accepted = false;
+  };
+  struct Robot {
+    std::string id;
+    int capacity = 1;
+    bool pose_known = false;
+    double x = 0.0, y = 0.0;
+    std::string goal_id;     // the navigation goal it pursues for us
+    std::string goal_place;  // where that goal leads
+    std::string at_place;    // the place its last goal reached
+    std::optional<PendingHandover> handover;
+    std::vector<PlanStop> route;
+    double hold_until_s = 0.0;  // after a refused handover
+    int goal_seq = 0;
+    int request_seq = 0;
+    std::map<std::string, int> blocked;  // place -> blocked goals without a door to blame
+  };
+
+  void reschedule(double now_s);
+  PlanRequest request_for(double now_s, const std::vector<std::string>& extra_jobs) const;
+  void adopt(const Plan& plan, double now_s);
+  void opportunity_check(double now_s);
+  void dispatch(Robot& robot, double now_s);
+  void idle_policy(Robot& robot, double now_s);
+  void send_goal(Robot& robot, const std::string& place, double now_s);
+  void send_handover(Robot& robot, const PlanStop& stop, double now_s);
+  bool at(const Robot& robot, const std::string& place) const;
+  // True when `stop` is still the job's next step on this robot.
+  bool still_needed(const Robot& robot, const PlanStop& stop) const;
+  void make_opportunistic(Job& job, const std::string& reason, double now_s);
+  void start_return(Job& job, JobState end_state, const std::string& reason, double now_s);
+  void finish(Job& job, JobState state, const std::string& reason, double now_s);
+  void changed(const Job& job);
+  void event(std::string text);
+  // The door that a step at `place` needs open, when it is believed closed.
+  std::optional<std::string> closed_door_for(const std::string& place) const;
+  std::string closed_reason(const std::string& door) const;
+
+  Floor floor_;
+  ScheduleSource& scheduler_;
+  ExecutiveSettings settings_;
+  DoorBelief doors_;
+  std::map<std::string, Robot> robots_;
+  std::map<std::string, Job> jobs_;
+  bool reschedule_needed_ = false;
+  bool opportunity_pending_ = false;
+  Orders orders_;
+};
+
+// "10:14:05" for seconds of the day.
+std::string clock_text(double seconds_of_day);
+
+}  // namespace autonomy::courier

@@ -1,0 +1,36 @@
+#pragma once
+// The floor as the courier's executive needs it: where each place is, which room it is in, and
+// which door leads into that room. Built by the node from the courier's office knowledge; plain
+// data, no behaviour.
+#include <map>
+#include <optional>
+#include <string>
+
+namespace autonomy::courier {
+
+struct FloorPlace {
+  double x = 0.0;
+  double y = 0.0;
+  std::string room;     // "" for the hallway and places in no room
+  double radius = 1.0;  // a robot within this distance is at the place
+};
+
+struct Floor {
+  std::map<std::string, FloorPlace> places;
+  std::map<std::string, std::string> door_of_room;  // room -> the door a robot enters it by
+
+  const FloorPlace* place(const std::string& name) const {
+    const auto it = places.find(name);
+    return it == places.end() ? nullptr : &it->second;
+  }
+  // The door into the room of `place`, if it has one.
+  std::optional<std::string> door_to(const std::string& place) const {
+    const FloorPlace* p = this->place(place);
+    if (!p || p->room.empty()) return std::nullopt;
+    const auto it = door_of_room.find(p->room);
+    if (it == door_of_room.end()) return std::nullopt;
+    return it->second;
+  }
+};
+
+}  // namespace autonomy::courier

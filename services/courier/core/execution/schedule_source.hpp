@@ -1,0 +1,63 @@
+#pragma once
+// The executive's view of a scheduler: it asks for a plan of the open jobs from the current state
+// and gets an ordered route per robot. One implementation wraps the scheduler engines
+// (services/courier/core/scheduler) with travel times from the map and the doors believed closed;
+// unit tests use hand-written plans.
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace autonomy::courier {
+
+struct PlanRobot {
+  std::string id;
+  double x = 0.0, y = 0.0;  // where it is now
+  int capacity = 1;
+};
+
+struct PlanJob {
+  std::string id;
+  std::string lookalike_class;
+  std::string pickup;       // where the object lies (ignored while aboard)
+  std::string destination;  // where it must go (the return place while returning)
+  std::optional<double> deadline_s;
+  std::string aboard;  // the robot carrying the object, or ""
+};
+
+struct PlanRequest {
+  double now_s = 0.0;  // seconds of the day
+  std::vector<PlanRobot> robots;
+  std::vector<PlanJob> jobs;
+  std::set<std::string> closed_doors;  // doors believed closed: obstacles for travel times
+  // Jobs whose first open step must come first on their robot (the opportunity check).
+  std::vector<std::string> first;
+};
+
+struct PlanStop {
+  std::string job_id;
+  bool load = true;  // false: unload
+  std::string place;
+  std::string room;
+  double arrival_s = 0.0;
+  double finish_s = 0.0;
+};
+
+struct Plan {
+  std::map<std::string, std::vector<PlanStop>> routes;  // robot -> stops in order
+  std::map<std::string, std::string> unschedulable;     // job -> why (e.g. "A-120 closed")
+  std::map<std::string, double> completion_s;           // job -> predicted completion
+  int late_jobs = 0;
+  double total_lateness_s = 0.0;
+  std::string engine;
+  bool proved_optimal = false;
+};
+
+class ScheduleSource {
+ public:
+  virtual ~ScheduleSource() = default;
+  virtual Plan plan(const PlanRequest& request) = 0;
+};
+
+}  // namespace autonomy::courier

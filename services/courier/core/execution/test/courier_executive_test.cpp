@@ -1,0 +1,333 @@
+// The executive against a scripted scheduler (jobs in the order asked, 60 s per stop): the
+// paper's two deliveries with door A-120 staying open, closing and reopening (Fig. 5) or closing
+// for good (Fig. 7), cancels with the object aboard, refused handovers and restarts.
+#include "services/courier/core/execution/courier_executive.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace autonomy::courier {
+namespace {
+
+Floor paper_floor() {
+  Floor f;
+  f.places["meeting-table"] = {4.0, 10.7, "A-111", 1.0};
+  f.places["librarian-desk"] = {3.5, 4.5, "A-110", 1.0};
+  f.places["a114-desk"] = {19.0, 2.6, "A-114", 1.0};
+  f.places["michael-desk"] = {37.5, 2.6, "A-120", 1.0};
+  f.places["hallway-west"] = {1.5, 8.0, "", 1.0};
+  for (const char* room : {"A-110", "A-111", "A-114", "A-120"}) f.door_of_room[room] = room;
+  return f;
+}
+
+// Serves the jobs in the order of the request (forced ones first); a job behind a closed door is
+// unschedulable. Each stop takes 60 s.
+class InOrderScheduler : public ScheduleSource {
+ public:
+  explicit InOrderScheduler(const Floor& floor) : floor_(floor) {}
+  Plan plan(const PlanRequest& request) override {
+    ++calls;
+    Plan plan;
+    plan.engine = "in-order";
+    std::vector<PlanJob> jobs = request.jobs;
+    std::stable_sort(jobs.begin(), jobs.end(), [&](const PlanJob& a, const PlanJob& b) {
+      const auto first = [&](const PlanJob& j) {
+        return std::find(request.first.begin(), request.first.end(), j.id) != request.first.end();
+      };
+      return first(a) > first(b);
+    });
+    const std::string robot = request.robots.front().id;
+    double t = request.now_s;
+    for (const PlanJob& j : jobs) {
+      const auto closed = [&](const std::string& place) {
+        const auto door = floor_.door_to(place);
+        return door && request.closed_doors.count(*door);
+      };
+      if ((j.aboard.empty() && closed(j.pickup)) || closed(j.destination)) {
+        plan.unschedulable[j.id] = "behind a closed door";
+        continue;
+      }
+      if (j.aboard.empty()) {
+        t += 60;
+        plan.routes[robot].push_back({j.id, true, j.pickup, floor_.place(j.pickup)->room, t, t});
+      }
+      t += 60;
+      plan.routes[robot].push_back({j.id, false, j.destination, floor_.place(j.destination)->room, t, t});
+      plan.completion_s[j.id] = t;
+    }
+    return plan;
+  }
+  int calls = 0;
+
+ private:
+  const Floor& floor_;
+};
+
+Job delivery(const std::string& id, const std::string& object, const std::string& colour, const std::string& kind,
+             const std::string& from, const std::string& to) {
+  Job j;
+  j.id = id;
+  j.command_id = "c-" + id;
+  j.object = {object, kind, colour};
+  j.pickup = from;
+  j.destination = to;
+  return j;
+}
+
+class ExecutiveTest : public ::testing::Test {
+ protected:
+  ExecutiveTest() : floor_(paper_floor()), scheduler_(floor_), exec_(floor_, scheduler_) {
+    exec_.add_robot("rhino", 3);
+    exec_.on_pose("rhino", 1.5, 8.0);
+  }
+
+  // Steps once and keeps what happened.
+  Orders step() {
+    Orders o = exec_.step(now_);
+    for (const auto& e : o.events) events_.push_back(e);
+    for (const auto& g : o.goals) last_goal_ = g;
+    for (const auto& h : o.handovers) last_handover_ = h;
+    return o;
+  }
+  // The robot reaches the place of its last goal.
+  void arrive() {
+    now_ += 30;
+    exec_.on_goal("rhino", last_goal_.goal_id, GoalOutcome::reached, "", now_);
+    step();
+  }
+  void complete_handover() {
+    now_ += 10;
+    exec_.on_handover(last_handover_.request_id, HandoverOutcome::accepted, "", "", now_);
+    exec_.on_handover(last_handover_.request_id, HandoverOutcome::completed, "", "", now_);
+    step();
+  }
+  std::string goal_place() const { return last_goal_.goal_id.substr(6, last_goal_.goal_id.rfind('/') - 6); }
+  bool happened(const std::string& text) const {
+    return std::find(events_.begin(), events_.end(), text) != events_.end();
+  }
+  size_t index_of(const std::string& prefix) const {
+    for (size_t i = 0; i < events_.size(); ++i)
+      if (events_[i].rfind(prefix, 0) == 0) return i;
+    ADD_FAILURE() << "no event starting with '" << prefix << "'";
+    return events_.size();
+  }
+
+  Floor floor_;
+  InOrderScheduler scheduler_;
+  CourierExecutive exec_;
+  double now_ = 9 * 3600.0;
+  std::vector<std::string> events_;
+  NavGoalOrder last_goal_;
+  HandoverOrder last_handover_;
+};
+
+TEST_F(ExecutiveTest, TwoDeliveriesWithAllDoorsOpen) {
+  exec_.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
+  exec_.add_job(delivery("j2", "book-green", "green", "book", "librarian-desk", "a114-desk"), now_);
+  Orders o = step();
+  ASSERT_EQ(o.goals.size(), 1u);
+  EXPECT_EQ(goal_place(), "meeting-table");
+  EXPECT_DOUBLE_EQ(o.goals[0].x, 4.0);
+  ASSERT_EQ(o.schedules.size(), 1u);
+  EXPECT_EQ(o.schedules[0].assumptions,
+            (std::vector<std::string>{"A-111 open at 09:01:00", "A-120 open at 09:02:00", "A-110 open at 09:03:00",
+                                      "A-114 open at 09:04:00"}));
+  EXPECT_EQ(exec_.job("j1")->phase, JobPhase::to_pickup);
+  arrive();
+  EXPECT_EQ(last_handover_.object_id, "letter-red");
+  EXPECT_TRUE(last_handover_.load);
+  EXPECT_EQ(exec_.job("j1")->phase, JobPhase::loading);
+  complete_handover();
+  EXPECT_EQ(exec_.job("j1")->object_carrier, "rhino");
+  EXPECT_EQ(goal_place(), "michael-desk");
+  arrive();
+  complete_handover();
+  EXPECT_EQ(exec_.job("j1")->state, JobState::completed);
+  EXPECT_EQ(exec_.job("j1")->object_place, "michael-desk");
+  EXPECT_EQ(goal_place(), "librarian-desk");
+  arrive();
+  complete_handover();
+  arrive();
+  complete_handover();
+  EXPECT_EQ(exec_.job("j2")->state, JobState::completed);
+  EXPECT_LT(index_of("job j1 delivered"), index_of("book-green loaded"));
+}
+
+TEST_F(ExecutiveTest, Fig5ClosedDoorMakesTheJobOpportunisticAndAnOpenDoorInterruptsTheOtherDelivery) {
+  exec_.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
+  exec_.add_job(delivery("j2", "book-green", "green", "book", "librarian-desk", "a114-desk"), now_);
+  step();
+  arrive();
+  complete_handover();  // red letter aboard, heading for A-120
+  ASSERT_EQ(goal_place(), "michael-desk");
+  now_ += 5;
+  exec_.on_door("rhino", "A-120", 0.05, now_);
+  Orders o = step();  // the same tick: failure signalled, rescheduled, off to the librarian
+  EXPECT_EQ(exec_.job("j1")->state, JobState::opportunistic);
+  EXPECT_EQ(exec_.job("j1")->reason, "A-120 closed at 09:00:45");
+  EXPECT_EQ(exec_.job("j1")->object_carrier, "rhino");  // still aboard
+  ASSERT_EQ(o.goals.size(), 1u);
+  EXPECT_EQ(goal_place(), "librarian-desk");
+  arrive();
+  complete_handover();  // green book aboard, heading for A-114
+  ASSERT_EQ(goal_place(), "a114-desk");
+  now_ += 5;
+  exec_.on_door("rhino", "A-120", 1.4, now_);
+  o = step();
+  EXPECT_EQ(exec_.job("j1")->state, JobState::underway);
+  EXPECT_EQ(goal_place(), "michael-desk");  // the green book's delivery is interrupted
+  arrive();
+  complete_handover();
+  EXPECT_EQ(exec_.job("j1")->state, JobState::completed);
+  EXPECT_EQ(goal_place(), "a114-desk");  // resumed
+  arrive();
+  complete_handover();
+  EXPECT_EQ(exec_.job("j2")->state, JobState::completed);
+  // The paper's steps in order.
+  const size_t loaded_red = index_of("letter-red loaded at meeting-table");
+  const size_t seen_closed = index_of("A-120 seen closed");
+  const size_t failed_over = index_of("job j1 failed over to opportunistic");
+  const size_t loaded_green = index_of("book-green loaded at librarian-desk");
+  const size_t seen_open = index_of("A-120 seen open");
+  const size_t taken_up = index_of("opportunity: job j1 taken up");
+  const size_t red_done = index_of("job j1 delivered");
+  const size_t green_done = index_of("job j2 delivered");
+  EXPECT_LT(loaded_red, seen_closed);
+  EXPECT_LT(seen_closed, failed_over);
+  EXPECT_LT(failed_over, loaded_green);
+  EXPECT_LT(loaded_green, seen_open);
+  EXPECT_LT(seen_open, taken_up);
+  EXPECT_LT(taken_up, red_done);
+  EXPECT_LT(red_done, green_done);
+}
+
+TEST_F(ExecutiveTest, Fig7DoorStaysClosedAndTheLetterIsReturned) {
+  exec_.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
+  exec_.add_job(delivery("j2", "book-green", "green", "book", "librarian-desk", "a114-desk"), now_);
+  step();
+  arrive();
+  complete_handover();
+  exec_.on_door("rhino", "A-120", 0.0, now_);
+  step();
+  arrive();
+  complete_handover();
+  arrive();
+  Orders last;
+  now_ += 10;
+  exec_.on_handover(last_handover_.request_id, HandoverOutcome::completed, "", "", now_);
+  last = step();  // green book delivered; nothing else possible: the letter goes back
+  EXPECT_EQ(exec_.job("j2")->state, JobState::completed);
+  EXPECT_EQ(exec_.job("j1")->phase, JobPhase::returning);
+  EXPECT_EQ(goal_place(), "meeting-table");
+  arrive();
+  EXPECT_FALSE(last_handover_.load);
+  EXPECT_EQ(last_handover_.place, "meeting-table");
+  complete_handover();
+  const Job& j1 = *exec_.job("j1");
+  EXPECT_EQ(j1.state, JobState::failed);
+  EXPECT_EQ(j1.reason, "A-120 closed at 09:00:40; letter-red returned to meeting-table");
+  EXPECT_EQ(j1.object_place, "meeting-table");
+}
+
+TEST_F(ExecutiveTest, CancelWithTheObjectAboardReturnsItBeforeTheJobEnds) {
+  exec_.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
+  step();
+  arrive();
+  complete_handover();
+  EXPECT_EQ(exec_.cancel("j1", "sender changed their mind", now_), std::nullopt);
+  Orders o = step();
+  EXPECT_EQ(exec_.job("j1")->state, JobState::underway);
+  EXPECT_EQ(exec_.job("j1")->phase, JobPhase::returning);
+  EXPECT_EQ(goal_place(), "meeting-table");
+  EXPECT_TRUE(o.reports.empty());
+  arrive();
+  complete_handover();
+  EXPECT_EQ(exec_.job("j1")->state, JobState::cancelled);
+  EXPECT_EQ(exec_.job("j1")->reason, "cancelled: sender changed their mind; letter-red returned to meeting-table");
+  EXPECT_EQ(*exec_.cancel("j1", "", now_), "job j1 is already cancelled");
+  EXPECT_EQ(*exec_.cancel("nope", "", now_), "no job 'nope'");
+}
+
+TEST_F(ExecutiveTest, CancelBeforePickupEndsAtOnceAndReportsIt) {
+  exec_.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
+  step();
+  EXPECT_EQ(exec_.cancel("j1", "", now_), std::nullopt);
+  Orders o = step();
+  EXPECT_EQ(exec_.job("j1")->state, JobState::cancelled);
+  ASSERT_EQ(o.reports.size(), 1u);
+  EXPECT_FALSE(o.reports[0].success);
+  EXPECT_TRUE(o.goals.empty());
+}
+
+TEST_F(ExecutiveTest, RefusedHandoverWaitsAndRetriesAndAnUnansweredOneIsRepeatedWithTheSameId) {
+  exec_.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
+  step();
+  arrive();
+  const std::string first_id = last_handover_.request_id;
+  now_ += 6;  // no answer within the request timeout: the same request again
+  Orders o = step();
+  ASSERT_EQ(o.handovers.size(), 1u);
+  EXPECT_EQ(o.handovers[0].request_id, first_id);
+  exec_.on_handover(first_id, HandoverOutcome::rejected, "nobody_present", "nobody at meeting-table", now_);
+  o = step();
+  EXPECT_TRUE(o.handovers.empty());
+  EXPECT_EQ(exec_.job("j1")->reason, "waiting: nobody at meeting-table");
+  now_ += 21;
+  o = step();
+  ASSERT_EQ(o.handovers.size(), 1u);
+  EXPECT_NE(o.handovers[0].request_id, first_id);  // a new attempt
+}
+
+TEST_F(ExecutiveTest, RevisedDestinationIsUsedAndUnknownPlacesAreRefused) {
+  exec_.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
+  step();
+  arrive();
+  complete_handover();
+  EXPECT_EQ(*exec_.revise("j1", std::string("A-999"), std::nullopt, now_), "no place 'A-999'");
+  EXPECT_EQ(exec_.revise("j1", std::string("a114-desk"), std::optional<double>(10 * 3600.0), now_), std::nullopt);
+  step();
+  EXPECT_EQ(goal_place(), "a114-desk");
+  EXPECT_EQ(*exec_.job("j1")->deadline_s, 36000.0);
+}
+
+TEST_F(ExecutiveTest, BlockedGoalNamingAClosedDoorIsTakenAsASighting) {
+  exec_.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
+  step();
+  arrive();
+  complete_handover();
+  exec_.on_goal("rhino", last_goal_.goal_id, GoalOutcome::blocked,
+                "no route to goal (37.50, 2.60): door A-120 closed", now_);
+  step();
+  EXPECT_FALSE(exec_.doors().believed_open("A-120"));
+  // Nothing else to do: the letter goes back at once.
+  EXPECT_EQ(exec_.job("j1")->phase, JobPhase::returning);
+  EXPECT_EQ(goal_place(), "meeting-table");
+}
+
+TEST_F(ExecutiveTest, RestoredJobAboardGoesOnToItsDestination) {
+  Job j = delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk");
+  j.state = JobState::underway;
+  j.phase = JobPhase::to_destination;
+  j.object_place.clear();
+  j.object_carrier = "rhino";
+  exec_.restore_job(j);
+  step();
+  EXPECT_EQ(goal_place(), "michael-desk");
+}
+
+TEST_F(ExecutiveTest, RestoredPendingHandoverIsSentAgainWithItsId) {
+  Job j = delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk");
+  exec_.restore_job(j);
+  exec_.restore_pending_handover({"rhino", "rhino/j1/load/1", true, "meeting-table", "letter-red", "j1"});
+  Orders o = step();
+  ASSERT_EQ(o.handovers.size(), 1u);
+  EXPECT_EQ(o.handovers[0].request_id, "rhino/j1/load/1");
+  exec_.on_handover("rhino/j1/load/1", HandoverOutcome::completed, "", "", now_);
+  step();
+  EXPECT_EQ(exec_.job("j1")->object_carrier, "rhino");
+  EXPECT_EQ(goal_place(), "michael-desk");
+}
+
+}  // namespace
+}  // namespace autonomy::courier
