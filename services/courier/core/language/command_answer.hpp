@@ -20,8 +20,8 @@ struct Interpretation {
   ObjectDescription object;
   std::string pickup_place;
   std::string delivery_place;
-  std::string pickup_person;    // who hands it over (named, or whose desk it is); may be empty
-  std::string delivery_person;  // who takes it; may be empty (a table, a station)
+  std::string pickup_person;         // who hands it over (named, or whose desk it is); may be empty
+  std::string delivery_person;       // who takes it; may be empty (a table, a station)
   std::optional<double> deadline_s;  // seconds of the day, after `now`
   // What was filled in from knowledge, in plain English, in the order it was decided, e.g.
   // "object: the letter known to be on Wolfram's desk (letter-4)".

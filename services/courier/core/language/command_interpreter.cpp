@@ -17,10 +17,12 @@ bool is_one_of(const std::string& word, std::initializer_list<const char*> words
   return std::any_of(words.begin(), words.end(), [&](const char* w) { return word == w; });
 }
 
-bool is_article(const std::string& w) { return is_one_of(w, {"the", "a", "an", "this", "that"}); }
+bool is_article(const std::string& w) {
+  return is_one_of(w, {"the", "a", "an", "this", "that"});
+}
 bool is_delivery_verb(const std::string& w) {
-  return is_one_of(w, {"put", "place", "bring", "take", "deliver", "carry", "move", "send", "fetch",
-                       "get"});
+  return is_one_of(
+      w, {"put", "place", "bring", "take", "deliver", "carry", "move", "send", "fetch", "get"});
 }
 bool is_deadline_word(const std::string& w) {
   return is_one_of(w, {"by", "before", "until", "till", "within"});
@@ -30,16 +32,18 @@ bool is_phrase_start(const std::string& w) {
   return is_deadline_word(w) ||
          is_one_of(w, {"from", "to", "into", "onto", "on", "at", "for", "in", "and", "please"});
 }
-bool starts_with_digit(const std::string& w) { return !w.empty() && w[0] >= '0' && w[0] <= '9'; }
+bool starts_with_digit(const std::string& w) {
+  return !w.empty() && w[0] >= '0' && w[0] <= '9';
+}
 bool is_job_id(const std::string& w) {
   return !w.empty() && std::all_of(w.begin(), w.end(), [](char c) {
     return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' || c == '_';
   });
 }
 
-const std::vector<std::string> kVerbs = {"put",  "place", "bring", "take",   "deliver", "carry",
-                                         "move", "send",  "fetch", "get",    "pick",    "cancel",
-                                         "change"};
+const std::vector<std::string> kVerbs = {"put",   "place",  "bring", "take",  "deliver",
+                                         "carry", "move",   "send",  "fetch", "get",
+                                         "pick",  "cancel", "change"};
 
 std::string joined(const std::vector<Token>& tokens, std::size_t from, std::size_t to, char sep) {
   std::string out;
@@ -130,7 +134,8 @@ class TextInterpreter {
     if (!done() && is_article(t_[i_].word)) ++i_;
   }
   [[noreturn]] void unexpected(const std::string& expected) const {
-    if (done()) reject(RejectReason::unexpected_word, "the command ends too early: " + expected, end());
+    if (done())
+      reject(RejectReason::unexpected_word, "the command ends too early: " + expected, end());
     reject(RejectReason::unexpected_word, "unexpected '" + t_[i_].text + "': " + expected, here());
   }
   // "in" starts a deadline when a duration follows ("in 20 minutes"), else it names a room.
@@ -177,12 +182,14 @@ class TextInterpreter {
     skip_article();
     const bool destination = next_is("destination");
     if (!destination && !next_is("deadline"))
-      unexpected("'change' is followed by 'the destination of job ...' or 'the deadline of job ...'");
+      unexpected(
+          "'change' is followed by 'the destination of job ...' or 'the deadline of job ...'");
     ++i_;
     if (!next_is("of") && !next_is("for")) unexpected("'of job ...' comes next");
     ++i_;
     const Token job = job_id();
-    if (!next_is("to")) unexpected("'to' and the new " + std::string(destination ? "destination" : "deadline"));
+    if (!next_is("to"))
+      unexpected("'to' and the new " + std::string(destination ? "destination" : "deadline"));
     ++i_;
     CommandAnswer a = revision_answer(Revision::Kind::change, job);
     if (destination) {
@@ -190,7 +197,9 @@ class TextInterpreter {
     } else {
       a.revision.deadline_s = done() || !is_deadline_word(t_[i_].word) ? clock_value() : deadline();
     }
-    if (!done()) unexpected("nothing follows the new " + std::string(destination ? "destination" : "deadline"));
+    if (!done())
+      unexpected("nothing follows the new " +
+                 std::string(destination ? "destination" : "deadline"));
     return a;
   }
   // "deliver job j7 to Michael by 11:30": a new destination and/or deadline.
@@ -201,12 +210,14 @@ class TextInterpreter {
     while (!done()) {
       const Token& w = t_[i_];
       if (is_one_of(w.word, {"to", "into", "onto", "for"})) {
-        if (has_destination) reject(RejectReason::repeated_phrase, "the destination is said twice", at(w));
+        if (has_destination)
+          reject(RejectReason::repeated_phrase, "the destination is said twice", at(w));
         ++i_;
         set_destination(a.revision, place_phrase());
         has_destination = true;
       } else if (is_deadline_word(w.word) || (w.word == "in" && in_starts_deadline(i_))) {
-        if (a.revision.deadline_s) reject(RejectReason::repeated_phrase, "the deadline is said twice", at(w));
+        if (a.revision.deadline_s)
+          reject(RejectReason::repeated_phrase, "the deadline is said twice", at(w));
         a.revision.deadline_s = deadline();
       } else {
         unexpected("a job's new destination ('to ...') or deadline ('by ...')");
@@ -228,19 +239,23 @@ class TextInterpreter {
     while (!done()) {
       const Token& w = t_[i_];
       if (w.word == "from") {
-        if (d.pickup) reject(RejectReason::repeated_phrase, "where to pick up is said twice", at(w));
+        if (d.pickup)
+          reject(RejectReason::repeated_phrase, "where to pick up is said twice", at(w));
         ++i_;
         d.pickup = place_phrase();
       } else if (is_one_of(w.word, {"to", "into", "onto", "for"})) {
-        if (d.delivery) reject(RejectReason::repeated_phrase, "the destination is said twice", at(w));
+        if (d.delivery)
+          reject(RejectReason::repeated_phrase, "the destination is said twice", at(w));
         ++i_;
         d.delivery = place_phrase();
       } else if (is_deadline_word(w.word) || (w.word == "in" && in_starts_deadline(i_))) {
-        if (d.deadline_s) reject(RejectReason::repeated_phrase, "the deadline is said twice", at(w));
+        if (d.deadline_s)
+          reject(RejectReason::repeated_phrase, "the deadline is said twice", at(w));
         d.deadline_s = deadline();
       } else if (is_one_of(w.word, {"on", "at", "in"})) {
         if (located.size() == 2)
-          reject(RejectReason::repeated_phrase, "a third place; say 'from' one place 'to' another", at(w));
+          reject(RejectReason::repeated_phrase, "a third place; say 'from' one place 'to' another",
+                 at(w));
         if (w.word != "in") ++i_;  // "in room A-114" keeps "in" as the room qualifier
         located.push_back(place_phrase());
       } else if (w.word == "and") {
@@ -256,14 +271,18 @@ class TextInterpreter {
     // Places given with "on"/"at": the paper's "put X on A on B" is from A to B; one alone is the
     // pickup when the destination is already said or the verb is "pick up", else the destination.
     if (located.size() == 2) {
-      if (d.pickup) reject(RejectReason::repeated_phrase, "where to pick up is said twice", located[0].at);
-      if (d.delivery) reject(RejectReason::repeated_phrase, "the destination is said twice", located[1].at);
+      if (d.pickup)
+        reject(RejectReason::repeated_phrase, "where to pick up is said twice", located[0].at);
+      if (d.delivery)
+        reject(RejectReason::repeated_phrase, "the destination is said twice", located[1].at);
       d.pickup = located[0];
       d.delivery = located[1];
     } else if (located.size() == 1) {
       const bool as_pickup = !d.pickup && (d.delivery || pick_up);
       auto& slot = as_pickup ? d.pickup : d.delivery;
-      if (slot) reject(RejectReason::repeated_phrase, "a place too many; say 'from' one place 'to' another", located[0].at);
+      if (slot)
+        reject(RejectReason::repeated_phrase, "a place too many; say 'from' one place 'to' another",
+               located[0].at);
       slot = located[0];
     }
     CommandAnswer a;
@@ -283,7 +302,9 @@ class TextInterpreter {
     if (t_[i_].possessive) {  // "Wolfram's letter": picked up from Wolfram
       d.pickup = person_by_possessive(t_[i_]);
       ++i_;
-      if (i_ == stop) reject(RejectReason::missing_object, "say what to deliver after '" + t_[i_ - 1].text + "'", here());
+      if (i_ == stop)
+        reject(RejectReason::missing_object, "say what to deliver after '" + t_[i_ - 1].text + "'",
+               here());
     }
     const Token& noun = t_[stop - 1];
     d.object_at = at(t_[i_]);
@@ -303,7 +324,8 @@ class TextInterpreter {
         if (!is_word_in(colour.word, colours)) {
           const auto close = closest_names(colour.word, colours);
           reject(RejectReason::unknown_colour,
-                 "'" + colour.text + "' is not a colour" + (close.empty() ? "" : "; " + did_you_mean(close)),
+                 "'" + colour.text + "' is not a colour" +
+                     (close.empty() ? "" : "; " + did_you_mean(close)),
                  at(colour), close);
         }
         d.object.colour = colour.word;
@@ -313,7 +335,8 @@ class TextInterpreter {
       for (const KnownObject& o : k_.objects) names.push_back(o.id);
       const auto close = closest_names(noun.word, names);
       reject(RejectReason::unknown_object,
-             "no object '" + noun.text + "' is known" + (close.empty() ? "" : "; " + did_you_mean(close)),
+             "no object '" + noun.text + "' is known" +
+                 (close.empty() ? "" : "; " + did_you_mean(close)),
              at(noun), close);
     }
     i_ = stop;
@@ -358,7 +381,8 @@ class TextInterpreter {
     if (room == nullptr || room->kind != PlaceKind::room) {
       const auto close = closest_names(joined(t_, from, to, '-'), names_of(k_.rooms()));
       reject(RejectReason::unknown_room,
-             "no room '" + written(t_, from, to) + "'" + (close.empty() ? "" : "; " + did_you_mean(close)),
+             "no room '" + written(t_, from, to) + "'" +
+                 (close.empty() ? "" : "; " + did_you_mean(close)),
              at(t_[from]), close);
     }
     return room;
@@ -378,7 +402,8 @@ class TextInterpreter {
     while (in < stop && t_[in].word != "in") ++in;
     const Place* room = nullptr;
     if (in < stop) {
-      const Located after = in + 1 < stop ? at(t_[in + 1]) : (stop < t_.size() ? at(t_[stop]) : end());
+      const Located after =
+          in + 1 < stop ? at(t_[in + 1]) : (stop < t_.size() ? at(t_[stop]) : end());
       room = room_named(in + 1, stop, after);
     }
     std::size_t from = begin;
@@ -394,7 +419,8 @@ class TextInterpreter {
       return room_ref(k_, *r, where);
     }
     for (std::size_t j = from; j < in; ++j)
-      if (t_[j].possessive && j != from) unexpected_at(j, "a possessive comes first ('Michael's desk')");
+      if (t_[j].possessive && j != from)
+        unexpected_at(j, "a possessive comes first ('Michael's desk')");
     if (t_[from].possessive) {
       PlaceRef ref = person_by_possessive(t_[from]);
       const Place* desk = k_.find_place(ref.place);
@@ -421,7 +447,8 @@ class TextInterpreter {
     // Words describing a place ("the desk", "the table in room A-111").
     std::vector<const Place*> fits;
     for (const Place& p : k_.places) {
-      if (p.kind == PlaceKind::room || (room != nullptr && !same_name(p.room, room->name))) continue;
+      if (p.kind == PlaceKind::room || (room != nullptr && !same_name(p.room, room->name)))
+        continue;
       bool all = true;
       for (std::size_t j = from; j < in && all; ++j) all = describes(t_[j].word, p);
       if (all) fits.push_back(&p);
@@ -443,7 +470,8 @@ class TextInterpreter {
       const auto there = names_of(k_.places_in_room(room->name));
       reject(RejectReason::place_not_in_room,
              "no " + words + " in room " + room->name +
-                 (there.empty() ? "" : "; there: " + there.front() + (there.size() > 1 ? ", ..." : "")),
+                 (there.empty() ? ""
+                                : "; there: " + there.front() + (there.size() > 1 ? ", ..." : "")),
              where, there);
     }
     if (starts_with_digit(t_[from].word))
@@ -472,7 +500,8 @@ class TextInterpreter {
     const Token& t = t_[i_++];
     std::string w = t.word;
     std::string meridiem;
-    if (w.size() > 2 && (w.compare(w.size() - 2, 2, "am") == 0 || w.compare(w.size() - 2, 2, "pm") == 0)) {
+    if (w.size() > 2 &&
+        (w.compare(w.size() - 2, 2, "am") == 0 || w.compare(w.size() - 2, 2, "pm") == 0)) {
       meridiem = w.substr(w.size() - 2);
       w.resize(w.size() - 2);
     } else if (next_is("am") || next_is("pm")) {
@@ -480,17 +509,22 @@ class TextInterpreter {
     }
     std::replace(w.begin(), w.end(), '.', ':');
     std::optional<double> s;
-    if (w == "noon" && meridiem.empty()) s = 12 * 3600.0;
-    else if (!w.empty() && w.size() <= 2 && std::all_of(w.begin(), w.end(), [](char c) { return c >= '0' && c <= '9'; }))
+    if (w == "noon" && meridiem.empty())
+      s = 12 * 3600.0;
+    else if (!w.empty() && w.size() <= 2 &&
+             std::all_of(w.begin(), w.end(), [](char c) { return c >= '0' && c <= '9'; }))
       s = std::stoi(w) * 3600.0;
     else
       s = parse_clock(w);
     if (s && *s > kSecondsPerDay) s.reset();
     if (s && !meridiem.empty()) {
       const int hour = static_cast<int>(*s / 3600.0);
-      if (hour < 1 || hour > 12) s.reset();
-      else if (meridiem == "pm" && hour != 12) *s += 12 * 3600.0;
-      else if (meridiem == "am" && hour == 12) *s -= 12 * 3600.0;
+      if (hour < 1 || hour > 12)
+        s.reset();
+      else if (meridiem == "pm" && hour != 12)
+        *s += 12 * 3600.0;
+      else if (meridiem == "am" && hour == 12)
+        *s -= 12 * 3600.0;
     }
     if (!s)
       reject(RejectReason::bad_time,
@@ -500,7 +534,8 @@ class TextInterpreter {
   }
 
   double duration_from_now(const Token& keyword) {
-    if (done()) reject(RejectReason::bad_time, "how long is missing, e.g. 'within 20 minutes'", end());
+    if (done())
+      reject(RejectReason::bad_time, "how long is missing, e.g. 'within 20 minutes'", end());
     const Token& amount = t_[i_];
     double count = 0.0;
     std::string unit;
@@ -513,17 +548,20 @@ class TextInterpreter {
       count = 1.0;
     } else {
       std::size_t digits = 0;
-      while (digits < amount.word.size() && amount.word[digits] >= '0' && amount.word[digits] <= '9') ++digits;
+      while (digits < amount.word.size() && amount.word[digits] >= '0' &&
+             amount.word[digits] <= '9')
+        ++digits;
       if (digits == 0 || digits > 5)
-        reject(RejectReason::bad_time,
-               "'" + amount.text + "' is not a number of minutes or hours", at(amount));
+        reject(RejectReason::bad_time, "'" + amount.text + "' is not a number of minutes or hours",
+               at(amount));
       count = std::stod(amount.word.substr(0, digits));
       unit = amount.word.substr(digits);  // "20min"
       ++i_;
     }
     if (unit.empty()) {
       if (done())
-        reject(RejectReason::bad_time, "'" + keyword.text + "' needs a unit: minutes or hours", end());
+        reject(RejectReason::bad_time, "'" + keyword.text + "' needs a unit: minutes or hours",
+               end());
       unit = t_[i_++].word;
     }
     double seconds_per = 0.0;
@@ -531,7 +569,8 @@ class TextInterpreter {
     if (is_one_of(unit, {"hour", "hours", "h", "hr", "hrs"})) seconds_per = 3600.0;
     if (seconds_per == 0.0)
       reject(RejectReason::bad_time,
-             "'" + t_[i_ - 1].text + "' is not a unit of time; say minutes or hours", at(t_[i_ - 1]));
+             "'" + t_[i_ - 1].text + "' is not a unit of time; say minutes or hours",
+             at(t_[i_ - 1]));
     const double deadline = now_ + count * seconds_per;
     check_deadline(deadline, now_, at(amount));
     return deadline;

@@ -11,7 +11,9 @@ namespace {
 bool is_alnum(unsigned char c) {
   return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
 }
-bool is_digit(unsigned char c) { return c >= '0' && c <= '9'; }
+bool is_digit(unsigned char c) {
+  return c >= '0' && c <= '9';
+}
 
 // The typographic apostrophe U+2019 in UTF-8, which mail programs put into "librarian’s".
 bool is_curly_apostrophe(std::string_view text, std::size_t i) {
@@ -31,7 +33,8 @@ std::vector<Token> tokenize_command(std::string_view text) {
     reject(RejectReason::too_long,
            "the command has " + std::to_string(text.size()) + " bytes; at most " +
                std::to_string(kMaxCommandBytes) + " are read",
-           {std::string(text.substr(kMaxCommandBytes, 16)), static_cast<int>(kMaxCommandBytes) + 1, ""});
+           {std::string(text.substr(kMaxCommandBytes, 16)), static_cast<int>(kMaxCommandBytes) + 1,
+            ""});
   std::vector<Token> tokens;
   Token current;
   auto finish = [&] {

@@ -11,10 +11,10 @@ namespace {
 
 // Words understood even when no such object is known yet: a command may announce an object the
 // courier has not seen ("put the red letter on the meeting table ...").
-const char* const kCommonKinds[] = {"letter", "book",   "envelope", "parcel", "package",
-                                    "document", "folder", "file",   "note",   "box"};
-const char* const kCommonColours[] = {"red",    "green", "blue", "yellow", "white", "black",
-                                      "brown",  "orange", "purple", "pink", "grey", "gray"};
+const char* const kCommonKinds[] = {"letter",   "book",   "envelope", "parcel", "package",
+                                    "document", "folder", "file",     "note",   "box"};
+const char* const kCommonColours[] = {"red",   "green",  "blue",   "yellow", "white", "black",
+                                      "brown", "orange", "purple", "pink",   "grey",  "gray"};
 
 std::string join(const std::vector<std::string>& words) {
   std::string out;
@@ -90,8 +90,8 @@ PlaceRef person_ref(const OfficeKnowledge& k, const Person& person, const Locate
   ref.place = person.desk;
   ref.person = person.name;
   const Place* desk = k.find_place(person.desk);
-  ref.assumption = person_phrase(person) + "'s " + (desk ? to_string(desk->kind) : "place") +
-                   " (" + person.desk + ")";
+  ref.assumption = person_phrase(person) + "'s " + (desk ? to_string(desk->kind) : "place") + " (" +
+                   person.desk + ")";
   ref.at = at;
   return ref;
 }
@@ -191,7 +191,8 @@ Interpretation complete_delivery(const DeliveryDraft& d, const OfficeKnowledge& 
   if (!d.object.id.empty()) {
     const KnownObject* o = k.find_object(d.object.id);
     if (o == nullptr) {
-      const std::vector<std::string> close = closest_names(d.object.id, ids_of(k.objects_matching("", "")));
+      const std::vector<std::string> close =
+          closest_names(d.object.id, ids_of(k.objects_matching("", "")));
       reject(RejectReason::unknown_object,
              "no object '" + d.object.id + "'" + (close.empty() ? "" : "; " + did_you_mean(close)),
              d.object_at, close);
@@ -215,15 +216,15 @@ Interpretation complete_delivery(const DeliveryDraft& d, const OfficeKnowledge& 
              o->id + " is known to be at " + o->place + ", not at " + pickup->place, pickup->at);
     if (!pickup) {
       pickup = place_ref(k, *k.find_place(o->place), d.object_at);
-      assume("pickup", place_with_name(k, o->place) + ", where " + o->id +
-                           " is known to be");
+      assume("pickup", place_with_name(k, o->place) + ", where " + o->id + " is known to be");
     }
   } else if (pickup) {
     const auto there = k.objects_matching(d.object.kind, d.object.colour, pickup->place);
     if (there.size() > 1)
       reject(RejectReason::ambiguous_object,
              "there are " + std::to_string(there.size()) + " " + plural(describe(d.object)) +
-                 " at " + pickup->place + " (" + join(ids_of(there)) + "); say which by its colour or id",
+                 " at " + pickup->place + " (" + join(ids_of(there)) +
+                 "); say which by its colour or id",
              d.object_at, ids_of(there));
     if (there.size() == 1) {
       out.object.id = there[0]->id;
@@ -249,8 +250,8 @@ Interpretation complete_delivery(const DeliveryDraft& d, const OfficeKnowledge& 
     const KnownObject& o = *anywhere[0];
     out.object = {lower_case(o.kind), lower_case(o.colour), o.id};
     pickup = place_ref(k, *k.find_place(o.place), d.object_at);
-    assume("pickup", place_with_name(k, o.place) + ", where the " +
-                         describe(out.object) + " is known to be (" + o.id + ")");
+    assume("pickup", place_with_name(k, o.place) + ", where the " + describe(out.object) +
+                         " is known to be (" + o.id + ")");
   }
   out.pickup_place = pickup->place;
   out.pickup_person = pickup->person;

@@ -39,8 +39,8 @@ struct RejectionError : std::exception {
 
 // A place as the command means it, with the assumption made to find it (empty when it was named).
 struct PlaceRef {
-  std::string place;   // place name in the knowledge
-  std::string person;  // the person named, or whose desk `place` is; may be empty
+  std::string place;       // place name in the knowledge
+  std::string person;      // the person named, or whose desk `place` is; may be empty
   std::string assumption;  // "Wolfram's desk (a118-desk)", "room A-114 means Anna's desk (...)"
   Located at;
 };

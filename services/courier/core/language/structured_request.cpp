@@ -10,14 +10,16 @@ namespace autonomy::courier {
 
 namespace {
 
-Located field(const char* name, const std::string& value) { return {value, 0, name}; }
+Located field(const char* name, const std::string& value) {
+  return {value, 0, name};
+}
 
 // Rejects values no text command could carry either: overlong, control characters, not ASCII.
 void check_field(const char* name, const std::string& value) {
   if (value.size() > kMaxFieldBytes)
     reject(RejectReason::too_long,
-           std::string("field ") + name + " has " + std::to_string(value.size()) + " bytes; at most " +
-               std::to_string(kMaxFieldBytes) + " are read",
+           std::string("field ") + name + " has " + std::to_string(value.size()) +
+               " bytes; at most " + std::to_string(kMaxFieldBytes) + " are read",
            field(name, value.substr(0, 16)));
   for (unsigned char c : value)
     if (c < 0x20 || c >= 0x7f)
@@ -39,13 +41,15 @@ Interpretation interpret(const StructuredRequest& r, const OfficeKnowledge& k, d
   d.object = {lower_case(r.kind), lower_case(r.colour), r.object_id};
   d.object_at = r.object_id.empty() ? field("kind", r.kind) : field("object_id", r.object_id);
   if (r.object_id.empty() && r.kind.empty())
-    reject(RejectReason::missing_object, "give object_id, or kind (and colour)", field("kind", r.kind));
+    reject(RejectReason::missing_object, "give object_id, or kind (and colour)",
+           field("kind", r.kind));
   if (!r.kind.empty()) {
     const auto kinds = object_kind_words(k);
     if (!is_word_in(r.kind, kinds)) {
       const auto close = closest_names(r.kind, kinds);
       reject(RejectReason::unknown_object,
-             "no object kind '" + r.kind + "' is known" + (close.empty() ? "" : "; " + did_you_mean(close)),
+             "no object kind '" + r.kind + "' is known" +
+                 (close.empty() ? "" : "; " + did_you_mean(close)),
              field("kind", r.kind), close);
     }
   }
@@ -53,9 +57,10 @@ Interpretation interpret(const StructuredRequest& r, const OfficeKnowledge& k, d
     const auto colours = colour_words(k);
     if (!is_word_in(r.colour, colours)) {
       const auto close = closest_names(r.colour, colours);
-      reject(RejectReason::unknown_colour,
-             "'" + r.colour + "' is not a colour" + (close.empty() ? "" : "; " + did_you_mean(close)),
-             field("colour", r.colour), close);
+      reject(
+          RejectReason::unknown_colour,
+          "'" + r.colour + "' is not a colour" + (close.empty() ? "" : "; " + did_you_mean(close)),
+          field("colour", r.colour), close);
     }
   }
   if (!r.from.empty()) d.pickup = name_ref(k, r.from, field("from", r.from));
@@ -72,7 +77,8 @@ Interpretation interpret(const StructuredRequest& r, const OfficeKnowledge& k, d
     d.deadline_s = *s;
     check_deadline(*s, now, field("deadline", r.deadline));
   } else if (r.deadline_s) {
-    const Located at = field("deadline_s", std::isfinite(*r.deadline_s) ? format_clock(*r.deadline_s) : "");
+    const Located at =
+        field("deadline_s", std::isfinite(*r.deadline_s) ? format_clock(*r.deadline_s) : "");
     if (!std::isfinite(*r.deadline_s) || *r.deadline_s < 0.0)
       reject(RejectReason::bad_time, "deadline_s is not a number of seconds of the day", at);
     d.deadline_s = *r.deadline_s;

@@ -24,7 +24,8 @@ TEST_F(PaperCommands, PutTheRedLetterOnTheMeetingTableOnTheDeskInA120) {
   EXPECT_EQ(i.delivery_place, "michael-desk");
   EXPECT_EQ(i.delivery_person, "Michael");
   EXPECT_FALSE(i.deadline_s.has_value());
-  EXPECT_EQ(i.assumptions, Strings{"object: the red letter known to be on meeting-table (letter-red)"});
+  EXPECT_EQ(i.assumptions,
+            Strings{"object: the red letter known to be on meeting-table (letter-red)"});
 }
 
 TEST_F(PaperCommands, DeliverTheGreenBookFromTheLibrariansDeskToTheDeskInA114) {
@@ -59,8 +60,8 @@ TEST_F(PaperCommands, PickUpTheLetterFromWolframAndDeliverIt) {
 }
 
 TEST_F(PaperCommands, CaseArticlesAndPunctuationDoNotMatter) {
-  const Interpretation a = accepted_delivery(
-      "PUT RED LETTER ON MEETING TABLE IN ROOM A-111 ON DESK IN ROOM A-120!!", k);
+  const Interpretation a =
+      accepted_delivery("PUT RED LETTER ON MEETING TABLE IN ROOM A-111 ON DESK IN ROOM A-120!!", k);
   const Interpretation b = accepted_delivery(
       "  please, put the red letter on the meeting-table in A-111; on the desk in a-120.  ", k);
   EXPECT_EQ(a.object.id, "letter-red");
@@ -74,13 +75,13 @@ TEST_F(PaperCommands, Deadlines) {
     const char* deadline;
     double seconds_of_day;
   };
-  for (const Case& c : {Case{"by 10:30", hm(10, 30)}, Case{"before 11", hm(11, 0)},
-                        Case{"until 2 pm", hm(14, 0)}, Case{"by 2pm", hm(14, 0)},
-                        Case{"by 12 am", -1.0}, Case{"by noon", hm(12, 0)},
-                        Case{"by 10.45", hm(10, 45)}, Case{"within 20 minutes", hm(9, 50)},
-                        Case{"within 2 hours", hm(11, 30)}, Case{"in 90 min", hm(11, 0)},
-                        Case{"in half an hour", hm(10, 0)}, Case{"within an hour", hm(10, 30)},
-                        Case{"within 20min", hm(9, 50)}, Case{"by 24:00", hm(24, 0)}}) {
+  for (const Case& c :
+       {Case{"by 10:30", hm(10, 30)}, Case{"before 11", hm(11, 0)}, Case{"until 2 pm", hm(14, 0)},
+        Case{"by 2pm", hm(14, 0)}, Case{"by 12 am", -1.0}, Case{"by noon", hm(12, 0)},
+        Case{"by 10.45", hm(10, 45)}, Case{"within 20 minutes", hm(9, 50)},
+        Case{"within 2 hours", hm(11, 30)}, Case{"in 90 min", hm(11, 0)},
+        Case{"in half an hour", hm(10, 0)}, Case{"within an hour", hm(10, 30)},
+        Case{"within 20min", hm(9, 50)}, Case{"by 24:00", hm(24, 0)}}) {
     const std::string text = std::string("deliver the green book to Anna ") + c.deadline;
     const CommandAnswer a = interpret_command(text, k, test::kNowSim);
     if (c.seconds_of_day < 0) {  // 12 am is midnight, long past at 09:30
@@ -104,7 +105,8 @@ TEST_F(PaperCommands, TheDeadlineMayComeAnywhereAfterTheObject) {
 }
 
 TEST_F(PaperCommands, PeopleAsPlaces) {
-  const Interpretation i = accepted_delivery("deliver the red book from the librarian to Michael", k);
+  const Interpretation i =
+      accepted_delivery("deliver the red book from the librarian to Michael", k);
   EXPECT_EQ(i.pickup_place, "librarian-desk");
   EXPECT_EQ(i.pickup_person, "librarian");
   EXPECT_EQ(i.delivery_place, "michael-desk");
@@ -118,7 +120,8 @@ TEST_F(PaperCommands, PeopleAsPlaces) {
   EXPECT_EQ(accepted_delivery("take the blue letter to Anna's", k).delivery_place, "a114-desk");
   // Roles name people too.
   k.people[3].roles = {"professor"};
-  EXPECT_EQ(accepted_delivery("take the blue letter to the professor", k).delivery_place, "a118-desk");
+  EXPECT_EQ(accepted_delivery("take the blue letter to the professor", k).delivery_place,
+            "a118-desk");
 }
 
 TEST_F(PaperCommands, RoomsAsPlaces) {
@@ -128,7 +131,8 @@ TEST_F(PaperCommands, RoomsAsPlaces) {
   EXPECT_EQ(i.assumptions.back(), "destination: room A-114 means Anna's desk (a114-desk)");
   // A room without a person: its loading station, else its only place.
   EXPECT_EQ(accepted_delivery("take the blue letter to A-116", k).delivery_place, "mail-tray");
-  EXPECT_EQ(accepted_delivery("take the blue letter to the mail room", k).delivery_place, "mail-tray");
+  EXPECT_EQ(accepted_delivery("take the blue letter to the mail room", k).delivery_place,
+            "mail-tray");
   EXPECT_EQ(accepted_delivery("take the red book to A-113", k).delivery_place, "a113-desk");
   const Interpretation m = accepted_delivery("put the red letter in room A-111 in room A-120", k);
   EXPECT_EQ(m.pickup_place, "meeting-table");
@@ -149,8 +153,9 @@ TEST_F(PaperCommands, ObjectsByIdAndPlacesByName) {
 TEST_F(PaperCommands, OtherVerbsAndOrders) {
   EXPECT_EQ(accepted_delivery("bring the green book to Anna from the librarian", k).pickup_place,
             "librarian-desk");
-  EXPECT_EQ(accepted_delivery("take the red letter from the meeting table to Jan", k).delivery_place,
-            "a112-desk");
+  EXPECT_EQ(
+      accepted_delivery("take the red letter from the meeting table to Jan", k).delivery_place,
+      "a112-desk");
   EXPECT_EQ(accepted_delivery("move the blue letter onto the desk in room A-119", k).delivery_place,
             "a119-desk");
   const Interpretation p =
@@ -158,7 +163,8 @@ TEST_F(PaperCommands, OtherVerbsAndOrders) {
   EXPECT_EQ(p.pickup_place, "a112-desk");
   EXPECT_EQ(p.delivery_place, "a121-desk");
   // One "on" place with a "to" place is where the object lies.
-  const Interpretation on = accepted_delivery("deliver the red letter on the meeting table to Anna", k);
+  const Interpretation on =
+      accepted_delivery("deliver the red letter on the meeting table to Anna", k);
   EXPECT_EQ(on.pickup_place, "meeting-table");
   EXPECT_EQ(on.delivery_place, "a114-desk");
 }

@@ -42,35 +42,74 @@ const std::vector<Case>& cases() {
       {"deliver the grene book to Anna", RejectReason::unknown_colour, 13, "grene", {"green"}},
       {"deliver the red letter to", RejectReason::missing_place, 26, "", {}},
       {"deliver the red letter from to Anna", RejectReason::missing_place, 29, "to", {}},
-      {"deliver the green book to A-122", RejectReason::unknown_place, 27, "A-122",
+      {"deliver the green book to A-122",
+       RejectReason::unknown_place,
+       27,
+       "A-122",
        {"A-112", "A-120", "A-121"}},
-      {"deliver the green book from Miachel's desk to Anna", RejectReason::unknown_person, 29,
-       "Miachel's", {"Michael"}},
-      {"deliver the green book to the desk in room A-999", RejectReason::unknown_room, 44, "A-999", {}},
+      {"deliver the green book from Miachel's desk to Anna",
+       RejectReason::unknown_person,
+       29,
+       "Miachel's",
+       {"Michael"}},
+      {"deliver the green book to the desk in room A-999",
+       RejectReason::unknown_room,
+       44,
+       "A-999",
+       {}},
       {"put the red letter on the meeting table in room A-110 on the desk in room A-120",
-       RejectReason::place_not_in_room, 27, "meeting", {"librarian-desk"}},
-      {"deliver the green book to the table in room A-114", RejectReason::place_not_in_room, 31,
-       "table", {"a114-desk"}},
+       RejectReason::place_not_in_room,
+       27,
+       "meeting",
+       {"librarian-desk"}},
+      {"deliver the green book to the table in room A-114",
+       RejectReason::place_not_in_room,
+       31,
+       "table",
+       {"a114-desk"}},
       {"put the red letter on the desk", RejectReason::ambiguous_place, 27, "desk", {}},
-      {"deliver the green book to the secretary", RejectReason::ambiguous_person, 31, "secretary",
+      {"deliver the green book to the secretary",
+       RejectReason::ambiguous_person,
+       31,
+       "secretary",
        {"Jan", "Anna"}},
-      {"deliver the envelope from the mail tray to Sebastian", RejectReason::ambiguous_object, 13,
-       "envelope", {"envelope-1", "envelope-2"}},
+      {"deliver the envelope from the mail tray to Sebastian",
+       RejectReason::ambiguous_object,
+       13,
+       "envelope",
+       {"envelope-1", "envelope-2"}},
       {"deliver letter-4 from Michael to Anna", RejectReason::object_elsewhere, 23, "Michael", {}},
       {"deliver letter-9 to Anna", RejectReason::object_aboard, 9, "letter-9", {}},
       {"deliver the purple box to Anna", RejectReason::missing_pickup, 31, "", {}},
-      {"pick up the letter from Wolfram and deliver it", RejectReason::missing_destination, 47, "", {}},
-      {"deliver the green book from the librarian to the librarian", RejectReason::same_place, 50,
-       "librarian", {}},
+      {"pick up the letter from Wolfram and deliver it",
+       RejectReason::missing_destination,
+       47,
+       "",
+       {}},
+      {"deliver the green book from the librarian to the librarian",
+       RejectReason::same_place,
+       50,
+       "librarian",
+       {}},
       {"deliver the green book to Anna by 25:00", RejectReason::bad_time, 35, "25:00", {}},
       {"deliver the green book to Anna within 20", RejectReason::bad_time, 41, "", {}},
       {"deliver the green book to Anna within 20 days", RejectReason::bad_time, 42, "days", {}},
       {"deliver the green book to Anna by 9", RejectReason::deadline_in_past, 35, "9", {}},
-      {"deliver the green book to Anna within 0 minutes", RejectReason::deadline_in_past, 39, "0", {}},
-      {"deliver the green book to Anna within 900 hours", RejectReason::deadline_after_midnight, 39,
-       "900", {}},
-      {"deliver the green book from the librarian to Anna to Jan", RejectReason::repeated_phrase, 51,
-       "to", {}},
+      {"deliver the green book to Anna within 0 minutes",
+       RejectReason::deadline_in_past,
+       39,
+       "0",
+       {}},
+      {"deliver the green book to Anna within 900 hours",
+       RejectReason::deadline_after_midnight,
+       39,
+       "900",
+       {}},
+      {"deliver the green book from the librarian to Anna to Jan",
+       RejectReason::repeated_phrase,
+       51,
+       "to",
+       {}},
       {"deliver the green book to Anna by 10 by 11", RejectReason::repeated_phrase, 38, "by", {}},
       {"cancel job", RejectReason::missing_job, 11, "", {}},
       {"change the deadline of job to 11:00", RejectReason::missing_job, 28, "to", {}},
@@ -88,7 +127,9 @@ TEST(Rejections, EachWithItsReasonWordAndColumn) {
     EXPECT_EQ(r.word, c.word);
     EXPECT_FALSE(r.message.empty());
     EXPECT_TRUE(r.field.empty());
-    if (!c.suggestions.empty()) EXPECT_EQ(r.suggestions, c.suggestions);
+    if (!c.suggestions.empty()) {
+      EXPECT_EQ(r.suggestions, c.suggestions);
+    }
   }
 }
 
@@ -107,18 +148,20 @@ TEST(Rejections, UnknownNamesAreSuggestedInTheMessage) {
 }
 
 TEST(Rejections, AmbiguousObjectsAreListed) {
-  const Rejection r = test::rejected("deliver the book from the librarian to Anna", test::paper_office());
+  const Rejection r =
+      test::rejected("deliver the book from the librarian to Anna", test::paper_office());
   EXPECT_EQ(r.reason, RejectReason::ambiguous_object);
-  EXPECT_EQ(r.message,
-            "there are 2 books at librarian-desk (book-green and book-red); say which by its colour "
-            "or id");
+  EXPECT_EQ(
+      r.message,
+      "there are 2 books at librarian-desk (book-green and book-red); say which by its colour "
+      "or id");
   EXPECT_EQ(r.suggestions, (Strings{"book-green", "book-red"}));
 }
 
 TEST(Rejections, PastDeadlinesAreJudgedAgainstNow) {
   const OfficeKnowledge k = test::paper_office();
   const std::string text = "deliver the green book to Anna by 10:00";
-  EXPECT_TRUE(interpret_command(text, k, 3600.0).accepted());          // 09:30
+  EXPECT_TRUE(interpret_command(text, k, 3600.0).accepted());         // 09:30
   const CommandAnswer late = interpret_command(text, k, 3 * 3600.0);  // 11:30
   ASSERT_FALSE(late.accepted());
   EXPECT_EQ(late.rejection.reason, RejectReason::deadline_in_past);
