@@ -233,6 +233,7 @@ class TextInterpreter {
   CommandAnswer delivery(bool pick_up) {
     DeliveryDraft d;
     d.end = end();
+    d.missing_pickup = end();
     object_phrase(d);
     std::vector<PlaceRef> located;  // "on ...", "at ...", "in room ..." phrases, in order
     std::optional<Located> deadline_at;
@@ -309,6 +310,8 @@ class TextInterpreter {
     const Token& noun = t_[stop - 1];
     d.object_at = at(t_[i_]);
     const std::vector<std::string> kinds = object_kind_words(k_);
+    if (stop - i_ > 1 && k_.find_object(noun.word) != nullptr)
+      unexpected_at(i_, "an object id stands alone ('deliver " + noun.text + " to ...')");
     if (stop - i_ == 1 && k_.find_object(noun.word) != nullptr) {
       d.object.id = k_.find_object(noun.word)->id;
     } else if (is_word_in(noun.word, kinds)) {
@@ -425,7 +428,8 @@ class TextInterpreter {
       PlaceRef ref = person_by_possessive(t_[from]);
       const Place* desk = k_.find_place(ref.place);
       for (std::size_t j = from + 1; j < in; ++j)
-        if (desk != nullptr && !describes(t_[j].word, *desk) && t_[j].word != "place")
+        if (desk != nullptr && !describes(t_[j].word, *desk) &&
+            !is_one_of(t_[j].word, {"place", "office"}))
           reject(RejectReason::unknown_place,
                  ref.person + " sits at " + desk->name + ", a " + to_string(desk->kind) + "; '" +
                      t_[j].text + "' does not describe it",

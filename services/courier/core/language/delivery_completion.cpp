@@ -241,7 +241,7 @@ Interpretation complete_delivery(const DeliveryDraft& d, const OfficeKnowledge& 
     if (anywhere.empty())
       reject(RejectReason::missing_pickup,
              "no " + describe(d.object) + " is known to be anywhere; say where to pick it up",
-             d.end);
+             d.missing_pickup);
     if (anywhere.size() > 1)
       reject(RejectReason::ambiguous_object,
              std::to_string(anywhere.size()) + " " + plural(describe(d.object)) + " are known (" +

@@ -74,7 +74,8 @@ struct DeliveryDraft {
   std::optional<PlaceRef> pickup;
   std::optional<PlaceRef> delivery;
   std::optional<double> deadline_s;  // already checked with check_deadline
-  Located end;                       // where a missing part is reported
+  Located end;                       // where a missing destination is reported
+  Located missing_pickup;            // where a missing pickup is reported (text: the end, too)
 };
 
 // Completes the draft from knowledge or rejects it saying what is missing.

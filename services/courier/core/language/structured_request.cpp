@@ -38,6 +38,7 @@ Interpretation interpret(const StructuredRequest& r, const OfficeKnowledge& k, d
 
   DeliveryDraft d;
   d.end = field("to", r.to);
+  d.missing_pickup = field("from", r.from);
   d.object = {lower_case(r.kind), lower_case(r.colour), r.object_id};
   d.object_at = r.object_id.empty() ? field("kind", r.kind) : field("object_id", r.object_id);
   if (r.object_id.empty() && r.kind.empty())

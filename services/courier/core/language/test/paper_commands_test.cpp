@@ -118,6 +118,8 @@ TEST_F(PaperCommands, PeopleAsPlaces) {
   // Possessives name the person's desk; "Wolfram's letter" is the letter from Wolfram.
   EXPECT_EQ(accepted_delivery("bring Wolfram's letter to Michael's desk", k).object.id, "letter-4");
   EXPECT_EQ(accepted_delivery("take the blue letter to Anna's", k).delivery_place, "a114-desk");
+  EXPECT_EQ(accepted_delivery("take the blue letter to Anna's office", k).delivery_place,
+            "a114-desk");
   // Roles name people too.
   k.people[3].roles = {"professor"};
   EXPECT_EQ(accepted_delivery("take the blue letter to the professor", k).delivery_place,

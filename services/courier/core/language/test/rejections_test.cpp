@@ -39,6 +39,7 @@ const std::vector<Case>& cases() {
       {"deliver it to Anna", RejectReason::missing_object, 9, "it", {}},
       {"deliver the green bok to Anna", RejectReason::unknown_object, 19, "bok", {"book", "box"}},
       {"deliver letter-99 to Anna", RejectReason::unknown_object, 9, "letter-99", {}},
+      {"deliver the white letter-4 to Anna", RejectReason::unexpected_word, 13, "white", {}},
       {"deliver the grene book to Anna", RejectReason::unknown_colour, 13, "grene", {"green"}},
       {"deliver the red letter to", RejectReason::missing_place, 26, "", {}},
       {"deliver the red letter from to Anna", RejectReason::missing_place, 29, "to", {}},
