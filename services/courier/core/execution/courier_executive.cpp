@@ -55,6 +55,7 @@ void CourierExecutive::add_job(Job job, double now_s) {
 }
 
 void CourierExecutive::restore_job(Job job) {
+  if (job.object_place.empty() && job.object_carrier.empty()) job.object_place = job.pickup;
   const std::string id = job.id;
   jobs_[id] = std::move(job);
   reschedule_needed_ = true;
