@@ -1,0 +1,221 @@
+#include "services/courier/journal/journal.hpp"
+
+#include <sqlite3.h>
+
+#include <stdexcept>
+
+namespace autonomy::courier {
+
+namespace {
+
+constexpr int kSchemaVersion = 1;
+
+// One prepared statement; finalised on every path.
+class Statement {
+ public:
+  Statement(sqlite3* db, const char* sql) : db_(db) {
+    if (sqlite3_prepare_v2(db, sql, -1, &stmt_, nullptr) != SQLITE_OK)
+      throw std::runtime_error(std::string("journal: cannot prepare '") + sql + "': " + sqlite3_errmsg(db));
+  }
+  ~Statement() { sqlite3_finalize(stmt_); }
+  Statement(const Statement&) = delete;
+  Statement& operator=(const Statement&) = delete;
+
+  Statement& text(int i, const std::string& v) {
+    sqlite3_bind_text(stmt_, i, v.data(), static_cast<int>(v.size()), SQLITE_TRANSIENT);
+    return *this;
+  }
+  Statement& integer(int i, long long v) {
+    sqlite3_bind_int64(stmt_, i, v);
+    return *this;
+  }
+  Statement& real(int i, const std::optional<double>& v) {
+    if (v)
+      sqlite3_bind_double(stmt_, i, *v);
+    else
+      sqlite3_bind_null(stmt_, i);
+    return *this;
+  }
+  // True while a row is available.
+  bool step() {
+    const int rc = sqlite3_step(stmt_);
+    if (rc == SQLITE_ROW) return true;
+    if (rc == SQLITE_DONE) return false;
+    throw std::runtime_error(std::string("journal: ") + sqlite3_errmsg(db_));
+  }
+  std::string column_text(int i) const {
+    const auto* p = reinterpret_cast<const char*>(sqlite3_column_text(stmt_, i));
+    return p ? std::string(p, static_cast<size_t>(sqlite3_column_bytes(stmt_, i))) : std::string();
+  }
+  void reset() {
+    sqlite3_reset(stmt_);
+    sqlite3_clear_bindings(stmt_);
+  }
+  long long column_integer(int i) const { return sqlite3_column_int64(stmt_, i); }
+  std::optional<double> column_real(int i) const {
+    if (sqlite3_column_type(stmt_, i) == SQLITE_NULL) return std::nullopt;
+    return sqlite3_column_double(stmt_, i);
+  }
+
+ private:
+  sqlite3* db_;
+  sqlite3_stmt* stmt_ = nullptr;
+};
+
+const char* kJobColumns =
+    "job_id, command_id, object_id, object_kind, object_colour, pickup, destination, deadline_s, accepted_at_s, "
+    "state, phase, robot, reason, estimated_completion_s, object_place, object_carrier, return_to, "
+    "end_state_after_return, return_reason";
+
+void bind_job(Statement& s, const Job& j) {
+  s.text(1, j.id).text(2, j.command_id).text(3, j.object.id).text(4, j.object.kind).text(5, j.object.colour);
+  s.text(6, j.pickup).text(7, j.destination).real(8, j.deadline_s).real(9, j.accepted_at_s);
+  s.text(10, to_string(j.state)).integer(11, static_cast<int>(j.phase)).text(12, j.robot).text(13, j.reason);
+  s.real(14, j.estimated_completion_s).text(15, j.object_place).text(16, j.object_carrier).text(17, j.return_to);
+  s.text(18, to_string(j.end_state_after_return)).text(19, j.return_reason);
+}
+
+}  // namespace
+
+Journal::Journal(const std::string& path) : path_(path) {
+  if (sqlite3_open_v2(path.c_str(), &db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) != SQLITE_OK) {
+    const std::string why = db_ ? sqlite3_errmsg(db_) : "out of memory";
+    sqlite3_close(db_);
+    throw std::runtime_error("journal " + path + ": " + why);
+  }
+  try {
+    exec("PRAGMA journal_mode=WAL");
+    exec("PRAGMA synchronous=FULL");
+    exec("CREATE TABLE IF NOT EXISTS meta (key TEXT PRIMARY KEY, value INTEGER NOT NULL)");
+    {
+      Statement version(db_, "SELECT value FROM meta WHERE key = 'schema'");
+      if (version.step() && version.column_integer(0) > kSchemaVersion)
+        throw std::runtime_error("schema " + std::to_string(version.column_integer(0)) + " is newer than " +
+                                 std::to_string(kSchemaVersion));
+    }
+    exec("INSERT OR IGNORE INTO meta VALUES ('schema', 1), ('jobs_created', 0)");
+    exec("CREATE TABLE IF NOT EXISTS commands (command_id TEXT PRIMARY KEY, reply TEXT NOT NULL)");
+    exec("CREATE TABLE IF NOT EXISTS jobs (job_id TEXT PRIMARY KEY, command_id TEXT, object_id TEXT, "
+         "object_kind TEXT, object_colour TEXT, pickup TEXT, destination TEXT, deadline_s REAL, accepted_at_s REAL, "
+         "state TEXT, phase INTEGER, robot TEXT, reason TEXT, estimated_completion_s REAL, object_place TEXT, "
+         "object_carrier TEXT, return_to TEXT, end_state_after_return TEXT, return_reason TEXT)");
+    exec("CREATE TABLE IF NOT EXISTS handovers (request_id TEXT PRIMARY KEY, robot TEXT, load INTEGER, place TEXT, "
+         "object_id TEXT, job_id TEXT, outcome TEXT)");
+  } catch (const std::runtime_error& e) {
+    sqlite3_close(db_);
+    db_ = nullptr;
+    throw std::runtime_error("journal " + path + ": " + e.what());
+  }
+}
+
+Journal::~Journal() { sqlite3_close(db_); }
+
+void Journal::exec(const char* sql) const {
+  char* error = nullptr;
+  if (sqlite3_exec(db_, sql, nullptr, nullptr, &error) != SQLITE_OK) {
+    const std::string why = error ? error : "unknown error";
+    sqlite3_free(error);
+    throw std::runtime_error(why);
+  }
+}
+
+void Journal::record_command(const std::string& command_id, const std::string& reply_json, const Job* job) {
+  exec("BEGIN IMMEDIATE");
+  try {
+    Statement(db_, "INSERT OR REPLACE INTO commands VALUES (?, ?)").text(1, command_id).text(2, reply_json).step();
+    if (job) {
+      Statement s(db_, (std::string("INSERT OR REPLACE INTO jobs (") + kJobColumns +
+                        ") VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)")
+                           .c_str());
+      bind_job(s, *job);
+      s.step();
+      exec("UPDATE meta SET value = value + 1 WHERE key = 'jobs_created'");
+    }
+    exec("COMMIT");
+  } catch (...) {
+    exec("ROLLBACK");
+    throw;
+  }
+}
+
+std::optional<std::string> Journal::reply_for(const std::string& command_id) const {
+  Statement s(db_, "SELECT reply FROM commands WHERE command_id = ?");
+  s.text(1, command_id);
+  if (!s.step()) return std::nullopt;
+  return s.column_text(0);
+}
+
+void Journal::save_jobs(const std::vector<const Job*>& jobs) {
+  if (jobs.empty()) return;
+  exec("BEGIN IMMEDIATE");
+  try {
+    Statement s(db_, (std::string("INSERT OR REPLACE INTO jobs (") + kJobColumns +
+                      ") VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)")
+                         .c_str());
+    for (const Job* j : jobs) {
+      bind_job(s, *j);
+      s.step();
+      s.reset();
+    }
+    exec("COMMIT");
+  } catch (...) {
+    exec("ROLLBACK");
+    throw;
+  }
+}
+
+void Journal::record_handover(const HandoverOrder& o) {
+  Statement(db_, "INSERT OR IGNORE INTO handovers VALUES (?, ?, ?, ?, ?, ?, '')")
+      .text(1, o.request_id)
+      .text(2, o.robot)
+      .integer(3, o.load ? 1 : 0)
+      .text(4, o.place)
+      .text(5, o.object_id)
+      .text(6, o.job_id)
+      .step();
+}
+
+void Journal::handover_answered(const std::string& request_id, const std::string& outcome) {
+  Statement(db_, "UPDATE handovers SET outcome = ? WHERE request_id = ?").text(1, outcome).text(2, request_id).step();
+}
+
+Journal::Contents Journal::load() const {
+  Contents c;
+  {
+    Statement s(db_, (std::string("SELECT ") + kJobColumns + " FROM jobs ORDER BY rowid").c_str());
+    while (s.step()) {
+      Job j;
+      j.id = s.column_text(0);
+      j.command_id = s.column_text(1);
+      j.object = {s.column_text(2), s.column_text(3), s.column_text(4)};
+      j.pickup = s.column_text(5);
+      j.destination = s.column_text(6);
+      j.deadline_s = s.column_real(7);
+      j.accepted_at_s = s.column_real(8).value_or(0.0);
+      j.state = job_state_from(s.column_text(9)).value_or(JobState::queued);
+      j.phase = static_cast<JobPhase>(s.column_integer(10));
+      j.robot = s.column_text(11);
+      j.reason = s.column_text(12);
+      j.estimated_completion_s = s.column_real(13);
+      j.object_place = s.column_text(14);
+      j.object_carrier = s.column_text(15);
+      j.return_to = s.column_text(16);
+      j.end_state_after_return = job_state_from(s.column_text(17)).value_or(JobState::cancelled);
+      j.return_reason = s.column_text(18);
+      c.jobs.push_back(std::move(j));
+    }
+  }
+  {
+    // Accepted is not an answer that moves anything: only completed, failed or rejected close it.
+    Statement s(db_, "SELECT request_id, robot, load, place, object_id, job_id FROM handovers "
+                     "WHERE outcome IN ('', 'accepted') ORDER BY rowid");
+    while (s.step())
+      c.unanswered.push_back({s.column_text(1), s.column_text(0), s.column_integer(2) != 0, s.column_text(3),
+                              s.column_text(4), s.column_text(5)});
+  }
+  Statement s(db_, "SELECT value FROM meta WHERE key = 'jobs_created'");
+  if (s.step()) c.jobs_created = static_cast<int>(s.column_integer(0));
+  return c;
+}
+
+}  // namespace autonomy::courier

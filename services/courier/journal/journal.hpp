@@ -1,0 +1,52 @@
+#pragma once
+// The courier's journal: every accepted command, its reply, every job's state and every handover
+// request, in an SQLite database (WAL, synchronous=FULL) so that nothing accepted is lost. The node
+// writes a command's job before it publishes the acceptance, and a handover request before it
+// sends it; after kill -9 and a restart, load() gives back the unfinished jobs and the requests
+// whose answers never arrived (they are sent again with the same id: the simulator answers a
+// repeat with its latest answer, so what the robot carries is reconciled, not guessed).
+#include "services/courier/core/execution/courier_executive.hpp"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+struct sqlite3;
+
+namespace autonomy::courier {
+
+class Journal {
+ public:
+  // Opens or creates the database at `path`. Throws std::runtime_error naming the path and SQLite's
+  // message when it cannot (unwritable folder, not a database, newer schema).
+  explicit Journal(const std::string& path);
+  ~Journal();
+  Journal(const Journal&) = delete;
+  Journal& operator=(const Journal&) = delete;
+
+  // A command's reply (JSON text), and the job it created if any, in one transaction.
+  void record_command(const std::string& command_id, const std::string& reply_json, const Job* job);
+  // The reply once given to `command_id`, for a repeated command.
+  std::optional<std::string> reply_for(const std::string& command_id) const;
+
+  void save_jobs(const std::vector<const Job*>& jobs);
+  void record_handover(const HandoverOrder& order);
+  void handover_answered(const std::string& request_id, const std::string& outcome);
+
+  struct Contents {
+    std::vector<Job> jobs;                // every job, finished ones too
+    std::vector<HandoverOrder> unanswered;  // sent, no final answer journalled
+    int jobs_created = 0;                 // for the next job id
+  };
+  Contents load() const;
+
+  const std::string& path() const { return path_; }
+
+ private:
+  void exec(const char* sql) const;
+  std::string path_;
+  sqlite3* db_ = nullptr;
+};
+
+}  // namespace autonomy::courier

@@ -1,0 +1,84 @@
+#include "services/courier/journal/journal.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <unistd.h>
+
+namespace autonomy::courier {
+namespace {
+
+std::string fresh_path(const std::string& name) {
+  const std::string path = "/tmp/courier_journal_test_" + std::to_string(getpid()) + "_" + name + ".db";
+  for (const char* suffix : {"", "-wal", "-shm"}) std::remove((path + suffix).c_str());
+  return path;
+}
+
+Job red_letter() {
+  Job j;
+  j.id = "job-1";
+  j.command_id = "c1";
+  j.object = {"letter-red", "letter", "red"};
+  j.pickup = "meeting-table";
+  j.destination = "michael-desk";
+  j.deadline_s = 37800.0;
+  j.accepted_at_s = 30600.0;
+  j.object_place = "meeting-table";
+  return j;
+}
+
+TEST(Journal, CommandsJobsAndHandoversSurviveReopening) {
+  const std::string path = fresh_path("reopen");
+  {
+    Journal journal(path);
+    Job j = red_letter();
+    journal.record_command("c1", R"({"accepted":true})", &j);
+    journal.record_command("c2", R"({"accepted":false})", nullptr);
+    j.state = JobState::underway;
+    j.phase = JobPhase::to_destination;
+    j.object_place.clear();
+    j.object_carrier = "rhino";
+    journal.save_jobs({&j});
+    journal.record_handover({"rhino", "rhino/job-1/load/1", true, "meeting-table", "letter-red", "job-1"});
+    journal.handover_answered("rhino/job-1/load/1", "completed");
+    journal.record_handover({"rhino", "rhino/job-1/unload/2", false, "michael-desk", "letter-red", "job-1"});
+    journal.handover_answered("rhino/job-1/unload/2", "accepted");
+  }
+  Journal journal(path);
+  EXPECT_EQ(*journal.reply_for("c1"), R"({"accepted":true})");
+  EXPECT_EQ(*journal.reply_for("c2"), R"({"accepted":false})");
+  EXPECT_FALSE(journal.reply_for("c3"));
+  const Journal::Contents c = journal.load();
+  EXPECT_EQ(c.jobs_created, 1);
+  ASSERT_EQ(c.jobs.size(), 1u);
+  const Job& j = c.jobs[0];
+  EXPECT_EQ(j.id, "job-1");
+  EXPECT_EQ(j.object.colour, "red");
+  EXPECT_EQ(j.state, JobState::underway);
+  EXPECT_EQ(j.phase, JobPhase::to_destination);
+  EXPECT_EQ(j.object_carrier, "rhino");
+  EXPECT_TRUE(j.object_place.empty());
+  EXPECT_DOUBLE_EQ(*j.deadline_s, 37800.0);
+  EXPECT_FALSE(j.estimated_completion_s);
+  // The load was answered for good; the unload was only accepted: it is asked again.
+  ASSERT_EQ(c.unanswered.size(), 1u);
+  EXPECT_EQ(c.unanswered[0].request_id, "rhino/job-1/unload/2");
+  EXPECT_FALSE(c.unanswered[0].load);
+  EXPECT_EQ(c.unanswered[0].robot, "rhino");
+}
+
+TEST(Journal, UnusableFilesAreReportedWithThePath) {
+  EXPECT_THROW(Journal("/nonexistent-folder/x.db"), std::runtime_error);
+  const std::string path = fresh_path("garbage");
+  std::ofstream(path) << "this is not a database, just text that is long enough to have a header...........";
+  try {
+    Journal j(path);
+    FAIL() << "opened a text file as a journal";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace autonomy::courier
