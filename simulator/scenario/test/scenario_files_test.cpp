@@ -90,8 +90,8 @@ TEST(ShippedScenarios, OfficeFloorHasTheCourierPapersRoomsDoorsAndPlaces) {
   // The office: people at their desks, objects on desks and the mail room's tray.
   ASSERT_TRUE(s.office.has_value());
   EXPECT_EQ(s.office->people.size(), 6u);
-  EXPECT_EQ(s.office->objects.size(), 7u);
-  ASSERT_EQ(s.office->stations.size(), 1u);
+  EXPECT_EQ(s.office->objects.size(), 8u);
+  ASSERT_EQ(s.office->stations.size(), 2u);
   EXPECT_EQ(s.office->stations[0].place, "mail-tray");
   const office::OfficeState office(*s.office);
   EXPECT_EQ(office.people_present("michael-desk", 0.0), std::vector<std::string>{});  // 08:30

@@ -1,0 +1,190 @@
+#include "services/courier/core/bridge/engine_schedule_source.hpp"
+
+#include "services/behavior/core/door_knowledge.hpp"
+#include "services/courier/core/scheduler/scheduler_engine.hpp"
+#include "services/courier/core/scheduler/wall_clock_budget.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace autonomy::courier {
+
+namespace sched = scheduling;
+
+struct EngineScheduleSource::Fields {
+  std::vector<behavior::CostToGoField> to_place;  // in place_names_ order
+};
+
+EngineScheduleSource::EngineScheduleSource(const OfficeKnowledge& knowledge, const Floor& floor,
+                                           const behavior::WorldMap& map, EngineSourceSettings settings)
+    : knowledge_(knowledge), floor_(floor), map_(map), settings_(std::move(settings)) {
+  if (!(settings_.speed_mps > 0.0)) throw std::invalid_argument("travel speed must be positive");
+  for (const auto& [name, place] : floor_.places) place_names_.push_back(name);
+  const Fields& open = fields_for({});
+  for (size_t i = 0; i < place_names_.size(); ++i)
+    if (!open.to_place[i].has_route_anywhere())
+      throw std::invalid_argument("place " + place_names_[i] + " lies in an obstacle (grown by the robot radius)");
+}
+
+EngineScheduleSource::~EngineScheduleSource() = default;
+
+const EngineScheduleSource::Fields& EngineScheduleSource::fields_for(const std::set<std::string>& closed_doors) {
+  auto& slot = cache_[closed_doors];
+  if (slot) return *slot;
+  // Doors believed closed become walls across their doorways, as the behavior plans them.
+  behavior::DoorKnowledge doors;
+  std::vector<behavior::DoorSighting> closed;
+  for (const auto& id : closed_doors) closed.push_back({id, 0.0});
+  (void)doors.update(closed, 0.0, map_);
+  const behavior::OccupancyGrid grid(doors.apply(map_), settings_.resolution_m, settings_.robot_radius_m);
+  auto fields = std::make_unique<Fields>();
+  for (const auto& name : place_names_) {
+    const FloorPlace& p = floor_.places.at(name);
+    fields->to_place.emplace_back(grid, geometry::Vec2(p.x, p.y));
+  }
+  slot = std::move(fields);
+  return *slot;
+}
+
+double EngineScheduleSource::travel_s(const std::string& from, const std::string& to,
+                                      const std::set<std::string>& closed_doors) {
+  const auto a = std::find(place_names_.begin(), place_names_.end(), from);
+  const auto b = std::find(place_names_.begin(), place_names_.end(), to);
+  if (a == place_names_.end() || b == place_names_.end()) return std::numeric_limits<double>::infinity();
+  const FloorPlace& p = floor_.places.at(from);
+  const Fields& f = fields_for(closed_doors);
+  return f.to_place[static_cast<size_t>(b - place_names_.begin())].cost_at(geometry::Vec2(p.x, p.y)) /
+         settings_.speed_mps;
+}
+
+namespace {
+
+// Metres from `position` along the field, from the nearest reachable cell when the robot's centre
+// lies in the inflation margin (it may stop close to a desk).
+double cost_from(const behavior::CostToGoField& field, double x, double y) {
+  const geometry::Vec2 p(x, y);
+  const double direct = field.cost_at(p);
+  if (std::isfinite(direct)) return direct;
+  if (const auto cell = field.nearest_reachable(p, 1.0)) return field.cost(*cell);
+  return std::numeric_limits<double>::infinity();
+}
+
+}  // namespace
+
+Plan EngineScheduleSource::plan(const PlanRequest& request) {
+  const Fields& fields = fields_for(request.closed_doors);
+  const size_t places = place_names_.size();
+  sched::SchedulingProblem problem;
+  problem.now_s = request.now_s;
+
+  for (const auto& name : place_names_) {
+    const FloorPlace& p = floor_.places.at(name);
+    sched::Location loc{name, p.room, p.x, p.y, 0.0};
+    if (const LoadingStation* station = knowledge_.station_at(name)) loc.station_handover_s = station->handover_s;
+    problem.locations.push_back(std::move(loc));
+  }
+  for (const auto& r : request.robots) problem.locations.push_back({"@" + r.id, "", r.x, r.y, 0.0});
+  const size_t n = problem.locations.size();
+  problem.travel = sched::TravelMatrix(n);
+  for (size_t to = 0; to < places; ++to) {
+    const auto& field = fields.to_place[to];
+    for (size_t from = 0; from < n; ++from) {
+      if (from == to) {
+        problem.travel.set(from, to, 0.0);
+        continue;
+      }
+      const auto& loc = problem.locations[from];
+      problem.travel.set(from, to, cost_from(field, *loc.x_m, *loc.y_m) / settings_.speed_mps);
+    }
+  }
+  for (size_t from = places; from < n; ++from) problem.travel.set(from, from, 0.0);
+
+  for (const Person& person : knowledge_.people) {
+    sched::Person out{person.name, person.handover_s, {}};
+    for (const auto& w : person.presence) out.presence.push_back({w.start_s, w.end_s});
+    problem.people.push_back(std::move(out));
+  }
+  const auto place_of = [&](const std::string& name) {
+    sched::Place place;
+    const auto it = std::find(place_names_.begin(), place_names_.end(), name);
+    place.location = it == place_names_.end() ? -1 : static_cast<int>(it - place_names_.begin());
+    if (knowledge_.station_at(name)) return place;  // no person needed
+    if (const Person* person = knowledge_.person_at(name))
+      place.person = static_cast<int>(person - knowledge_.people.data());
+    return place;
+  };
+
+  std::map<std::string, int> courier_index;
+  for (size_t i = 0; i < request.robots.size(); ++i) {
+    const auto& r = request.robots[i];
+    courier_index[r.id] = static_cast<int>(i);
+    sched::Courier c;
+    c.id = r.id;
+    c.capacity = r.capacity;
+    c.location = static_cast<int>(places + i);
+    c.available_s = request.now_s;
+    problem.couriers.push_back(std::move(c));
+  }
+  for (const PlanJob& j : request.jobs) {
+    sched::Job job;
+    job.id = j.id;
+    const auto slash = j.lookalike_class.find('/');
+    job.object = {j.lookalike_class.substr(0, slash),
+                  slash == std::string::npos ? "" : j.lookalike_class.substr(slash + 1)};
+    job.pickup = place_of(j.pickup);
+    job.delivery = place_of(j.destination);
+    job.deadline_s = j.deadline_s;
+    if (!j.aboard.empty() && courier_index.count(j.aboard)) {
+      job.status = sched::JobStatus::kAboard;
+      job.aboard_courier = courier_index[j.aboard];
+    }
+    problem.jobs.push_back(std::move(job));
+  }
+  for (const auto& id : request.first) {
+    for (size_t i = 0; i < problem.jobs.size(); ++i) {
+      const sched::Job& job = problem.jobs[i];
+      if (job.id != id) continue;
+      const int courier = job.status == sched::JobStatus::kAboard ? job.aboard_courier : 0;
+      const sched::StopKind kind =
+          job.status == sched::JobStatus::kAboard ? sched::StopKind::kDelivery : sched::StopKind::kPickup;
+      if (courier >= 0 && courier < static_cast<int>(problem.couriers.size()))
+        problem.couriers[static_cast<size_t>(courier)].forced_prefix.push_back({static_cast<int>(i), kind});
+    }
+  }
+
+  const int open_jobs = static_cast<int>(problem.jobs.size());
+  const std::string engine_name =
+      settings_.engine == "exact" && open_jobs > settings_.exact_max_jobs ? "large" : settings_.engine;
+  auto engine = sched::make_scheduler_engine(engine_name);
+  const auto budget =
+      sched::wall_clock_budget(std::chrono::microseconds(static_cast<long long>(settings_.budget_ms * 1000.0)));
+  const sched::JobSchedule schedule = engine->solve(problem, budget);
+
+  Plan plan;
+  plan.engine = engine_name;
+  plan.proved_optimal = schedule.proved_optimal;
+  for (const auto& u : schedule.unschedulable) plan.unschedulable[problem.jobs[static_cast<size_t>(u.job)].id] = u.detail;
+  if (!schedule.ok()) {
+    // No schedule at all (infeasible, or out of time before the first one): nothing is planned,
+    // every job waits and says why; the next event tries again.
+    for (const auto& j : problem.jobs)
+      if (!plan.unschedulable.count(j.id)) plan.unschedulable[j.id] = "no schedule: " + schedule.reason;
+    return plan;
+  }
+  plan.late_jobs = schedule.objective.late_jobs;
+  plan.total_lateness_s = schedule.objective.lateness_s;
+  for (const auto& route : schedule.routes) {
+    auto& stops = plan.routes[problem.couriers[static_cast<size_t>(route.courier)].id];
+    for (const auto& s : route.stops) {
+      const std::string& place = problem.locations[static_cast<size_t>(s.location)].name;
+      stops.push_back({problem.jobs[static_cast<size_t>(s.job)].id, s.kind == sched::StopKind::kPickup, place,
+                       problem.locations[static_cast<size_t>(s.location)].room, s.arrival_s, s.finish_s});
+    }
+  }
+  for (const auto& o : schedule.outcomes) plan.completion_s[problem.jobs[static_cast<size_t>(o.job)].id] = o.completion_s;
+  return plan;
+}
+
+}  // namespace autonomy::courier

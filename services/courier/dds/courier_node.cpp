@@ -1,0 +1,219 @@
+#include "services/courier/dds/courier_node.hpp"
+
+#include "common/msg/text_limits.hpp"
+#include "services/courier/core/bridge/engine_schedule_source.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <stdexcept>
+
+namespace autonomy::courier {
+
+namespace {
+
+GoalOutcome outcome_of(msg::GoalState s) {
+  switch (s) {
+    case msg::GoalState::Accepted: return GoalOutcome::accepted;
+    case msg::GoalState::Active: return GoalOutcome::active;
+    case msg::GoalState::Reached: return GoalOutcome::reached;
+    case msg::GoalState::Blocked: return GoalOutcome::blocked;
+    case msg::GoalState::Preempted: return GoalOutcome::preempted;
+    case msg::GoalState::Rejected: return GoalOutcome::rejected;
+    case msg::GoalState::Cancelled: return GoalOutcome::cancelled;
+  }
+  return GoalOutcome::rejected;
+}
+
+HandoverOutcome outcome_of(msg::HandoverState s) {
+  switch (s) {
+    case msg::HandoverState::Accepted: return HandoverOutcome::accepted;
+    case msg::HandoverState::Rejected: return HandoverOutcome::rejected;
+    case msg::HandoverState::Completed: return HandoverOutcome::completed;
+    case msg::HandoverState::Failed: return HandoverOutcome::failed;
+  }
+  return HandoverOutcome::rejected;
+}
+
+msg::JobState to_msg(JobState s) {
+  switch (s) {
+    case JobState::queued: return msg::JobState::Queued;
+    case JobState::underway: return msg::JobState::Underway;
+    case JobState::opportunistic: return msg::JobState::Opportunistic;
+    case JobState::completed: return msg::JobState::Completed;
+    case JobState::failed: return msg::JobState::Failed;
+    case JobState::cancelled: return msg::JobState::Cancelled;
+  }
+  return msg::JobState::Queued;
+}
+
+}  // namespace
+
+CourierNode::CourierNode(service::Service& service, CourierNodeOptions options)
+    : service_(service),
+      options_(std::move(options)),
+      command_topic_(service.participant(), dds::topics::courier_command),
+      reply_topic_(service.participant(), dds::topics::courier_reply),
+      job_topic_(service.participant(), dds::topics::courier_job_status),
+      schedule_topic_(service.participant(), dds::topics::courier_schedule),
+      report_topic_(service.participant(), dds::topics::courier_report),
+      state_topic_(service.participant(), dds::topics::robot_state),
+      door_topic_(service.participant(), dds::topics::door_observation),
+      goal_topic_(service.participant(), dds::topics::nav_goal),
+      goal_status_topic_(service.participant(), dds::topics::goal_status),
+      handover_request_topic_(service.participant(), dds::topics::handover_request),
+      handover_status_topic_(service.participant(), dds::topics::handover_status),
+      command_reader_(service.participant(), command_topic_),
+      state_reader_(service.participant(), state_topic_),
+      door_reader_(service.participant(), door_topic_),
+      goal_status_reader_(service.participant(), goal_status_topic_),
+      handover_status_reader_(service.participant(), handover_status_topic_),
+      reply_writer_(service.participant(), reply_topic_),
+      job_writer_(service.participant(), job_topic_),
+      schedule_writer_(service.participant(), schedule_topic_),
+      report_writer_(service.participant(), report_topic_),
+      goal_writer_(service.participant(), goal_topic_),
+      handover_writer_(service.participant(), handover_request_topic_),
+      lockstep_(service.participant(), service.loop(), "courier/" + service.options().instance,
+                [this](const msg::SimClock& c) { on_tick(c); }) {
+  if (options_.robots.empty()) throw std::runtime_error("no courier robots: the scenario has none of kind courier");
+  double speed = 1e9;
+  double radius = 0.0;
+  for (const auto& r : options_.robots) {
+    speed = std::min(speed, r.max_speed_mps);
+    radius = std::max(radius, r.radius_m);
+  }
+  EngineSourceSettings settings;
+  settings.speed_mps = 0.8 * speed;  // the behavior slows down near walls and doorways
+  settings.robot_radius_m = radius;
+  settings.resolution_m = options_.grid_resolution_m;
+  settings.engine = options_.engine;
+  settings.exact_max_jobs = options_.exact_max_jobs;
+  settings.budget_ms = options_.budget_ms;
+  scheduler_ = std::make_unique<EngineScheduleSource>(options_.office.knowledge, options_.office.floor,
+                                                      options_.office.map, settings);
+  executive_ = std::make_unique<CourierExecutive>(options_.office.floor, *scheduler_);
+  for (const auto& r : options_.robots) executive_->add_robot(r.id, r.capacity);
+
+  journal_ = std::make_unique<Journal>(options_.journal_path);
+  const Journal::Contents journalled = journal_->load();
+  int unfinished = 0;
+  for (const Job& job : journalled.jobs) {
+    if (!job.finished()) {
+      ++unfinished;
+      executive_->restore_job(job);
+    }
+  }
+  for (const HandoverOrder& h : journalled.unanswered) {
+    if (executive_->has_robot(h.robot)) executive_->restore_pending_handover(h);
+  }
+  spdlog::info("journal {}: {} jobs ({} unfinished), {} handover requests to ask again", options_.journal_path,
+               journalled.jobs.size(), unfinished, journalled.unanswered.size());
+  // A restarted courier's job states are gone from the wire with its old writer: publish them again.
+  for (const Job& job : journalled.jobs) job_writer_.write(status_of(job, 0));
+  desk_ = std::make_unique<CommandDesk>(options_.office.knowledge, *executive_, *journal_, journalled.jobs_created);
+
+  auto& loop = service.loop();
+  loop.on_samples<msg::CourierCommand>(command_reader_, [this](auto samples) {
+    for (const auto& s : samples) {
+      if (!s.valid) continue;
+      msg::CourierReply reply = desk_->handle(s.value, now_sim_s(), tick_);
+      if (reply.accepted)
+        spdlog::info("command {} accepted: {} {} ({} -> {})", reply.command_id, reply.action, reply.object,
+                     reply.from, reply.to);
+      else
+        spdlog::warn("command {} rejected: {}: {}", msg::clipped_for_log(s.value.command_id), reply.reason,
+                     reply.detail);
+      reply_writer_.write(reply);
+    }
+  });
+  loop.on_samples<msg::RobotState>(state_reader_, [this](auto samples) {
+    for (const auto& s : samples)
+      if (s.valid) executive_->on_pose(s.value.robot_id, s.value.x, s.value.y);
+  });
+  loop.on_samples<msg::DoorObservation>(door_reader_, [this](auto samples) {
+    for (const auto& s : samples) {
+      if (!s.valid || !executive_->has_robot(s.value.robot_id)) continue;
+      for (const auto& d : s.value.doors) executive_->on_door(s.value.robot_id, d.door_id, d.angle_estimate, now_day_s());
+    }
+  });
+  loop.on_samples<msg::GoalStatus>(goal_status_reader_, [this](auto samples) {
+    for (const auto& s : samples) {
+      if (!s.valid || !executive_->has_robot(s.value.robot_id)) continue;
+      executive_->on_goal(s.value.robot_id, s.value.goal_id, outcome_of(s.value.state), s.value.reason, now_day_s());
+    }
+  });
+  loop.on_samples<msg::HandoverStatus>(handover_status_reader_, [this](auto samples) {
+    for (const auto& s : samples) {
+      if (!s.valid || !executive_->has_robot(s.value.robot_id)) continue;
+      const auto& h = s.value;
+      if (h.state != msg::HandoverState::Accepted) journal_->handover_answered(h.request_id, msg::to_string(h.state));
+      executive_->on_handover(h.request_id, outcome_of(h.state), h.reason, h.detail, now_day_s());
+    }
+  });
+  lockstep_.register_participant();
+  service_.set_ready();
+  spdlog::info("courier ready: {} robots, engine {}, journal {}", options_.robots.size(), options_.engine,
+               options_.journal_path);
+}
+
+double CourierNode::now_sim_s() const { return lockstep_.clock().now_s(); }
+double CourierNode::now_day_s() const { return options_.office.knowledge.clock.time_of_day(now_sim_s()); }
+
+void CourierNode::on_tick(const msg::SimClock& clock) {
+  tick_ = clock.tick;
+  have_clock_ = true;
+  carry_out(executive_->step(now_day_s()), clock.tick);
+  lockstep_.acknowledge(clock.tick, 0);
+}
+
+msg::CourierJobStatus CourierNode::status_of(const Job& job, int64_t tick) const {
+  msg::CourierJobStatus s;
+  s.job_id = job.id;
+  s.command_id = job.command_id;
+  s.state = to_msg(job.state);
+  s.phase = to_string(job.phase);
+  s.robot_id = job.robot;
+  s.object_id = job.object.id;
+  s.object_kind = job.object.kind;
+  s.object_colour = job.object.colour;
+  s.from = job.pickup;
+  s.to = job.destination;
+  s.deadline = job.deadline_s ? clock_text(*job.deadline_s) : "";
+  s.estimated_completion = job.estimated_completion_s ? clock_text(*job.estimated_completion_s) : "";
+  s.reason = job.reason;
+  s.tick = tick;
+  return s;
+}
+
+void CourierNode::carry_out(Orders orders, int64_t tick) {
+  for (const auto& e : orders.events) spdlog::info("{}", e);
+  // The journal first: what goes on the wire is never ahead of what a restart would know.
+  std::vector<const Job*> changed;
+  for (const auto& id : orders.changed_jobs)
+    if (const Job* job = executive_->job(id)) changed.push_back(job);
+  journal_->save_jobs(changed);
+  for (const Job* job : changed) job_writer_.write(status_of(*job, tick));
+  for (const auto& h : orders.handovers) {
+    journal_->record_handover(h);
+    handover_writer_.write({h.request_id, "courier", h.robot, h.load ? msg::HandoverKind::Load : msg::HandoverKind::Unload,
+                            h.place, h.object_id});
+  }
+  for (const auto& g : orders.goals) goal_writer_.write({g.robot, g.goal_id, g.x, g.y, g.tolerance_m, ""});
+  for (const auto& note : orders.schedules) {
+    msg::CourierSchedule s;
+    s.robot_id = note.robot;
+    s.engine = note.engine;
+    s.proved_optimal = note.proved_optimal;
+    for (const PlanStop& stop : note.stops)
+      s.stops.push_back({stop.job_id, stop.load ? "load" : "unload", stop.place, stop.room, stop.arrival_s,
+                         stop.finish_s});
+    s.assumptions = note.assumptions;
+    s.late_jobs = note.late_jobs;
+    s.total_lateness_s = note.total_lateness_s;
+    s.tick = tick;
+    schedule_writer_.write(s);
+  }
+  for (const auto& r : orders.reports) report_writer_.write({r.command_id, r.job_id, r.success, r.text, tick});
+}
+
+}  // namespace autonomy::courier
