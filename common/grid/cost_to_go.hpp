@@ -142,6 +142,9 @@ struct FieldStats {
   std::size_t pushes = 0;      // queue insertions (the goal included)
   std::size_t buckets = 0;     // bucket-ring size (0 when the heap fallback ran)
   bool heap_fallback = false;  // layers so expensive that the ring would be too long
+  std::size_t tiles = 0;       // without layers: 8 x 8 tiles covering the raster
+  std::size_t tile_runs = 0;   // tiles relaxed (a tile runs again when a neighbour improves it)
+  std::size_t tile_sweeps = 0; // row sweeps over tiles, all runs together
   std::size_t work_bytes = 0;  // peak heap bytes held by the computation, output included
 };
 
