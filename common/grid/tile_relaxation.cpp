@@ -54,7 +54,7 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 // Scheduler buckets: one per resolution of label; keys further ahead than the ring are clamped to
 // its end (the order is a heuristic, exactness does not depend on it).
 constexpr double kBucketsPerRes = 1.0;  // measured: 0.25 .. 4 alike
-constexpr std::size_t kRing = 256;
+constexpr std::size_t kRing = 64;
 
 inline v8f splat(float x) {
   return v8f{x, x, x, x, x, x, x, x};
@@ -125,6 +125,7 @@ class TileSearch {
       bucket.clear();
       current_ = ++k;
     }
+    stats_.reachable += 1;  // the goal, finite before its tile first ran
     stats_.tiles = pending_.size();
     stats_.buckets = kRing;
     stats_.work_bytes = pending_.capacity() * sizeof(float) + ring_.capacity() * sizeof(ring_[0]);
@@ -258,6 +259,9 @@ class TileSearch {
       if (!any(t.row[r + 1] < t.before[r])) continue;
       store_row(y0 + r, x0, t.row[r + 1]);
       changed = true;
+      const v8i reached = (t.before[r] == splat(kInf)) & (t.row[r + 1] < splat(kInf));
+      stats_.reachable += static_cast<std::size_t>(
+          __builtin_popcount(_mm256_movemask_ps(reinterpret_cast<__m256>(reached))));
     }
     if (!changed) return;
     offer_across(t, 1, 0, kS, kSW, kSE, tx, ty - 1);
@@ -319,10 +323,7 @@ TileSearchStats tile_search(std::size_t goal, int width, int height, float ortho
                             float diagonal, double resolution, const std::uint8_t* mask,
                             float* dist) {
   TileSearch search(width, height, orthogonal, diagonal, resolution, mask, dist);
-  TileSearchStats s = search.run(goal);
-  const std::size_t n = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-  for (std::size_t i = 0; i < n; ++i) s.reachable += dist[i] < kInf;
-  return s;
+  return search.run(goal);
 }
 
 #pragma GCC diagnostic pop
