@@ -6,7 +6,7 @@
 #include <limits>
 #include <vector>
 
-#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+#if defined(__GNUC__) && !defined(__clang__) && (defined(__x86_64__) || defined(__i386__))
 #define AUTONOMY_TILE_SEARCH 1
 #include <immintrin.h>
 // The tile code is compiled for AVX2 (eight float lanes per row vector; on plain SSE2 the same
