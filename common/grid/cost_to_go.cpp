@@ -1,5 +1,7 @@
 #include "common/grid/cost_to_go.hpp"
 
+#include "common/grid/tile_relaxation.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -474,6 +476,17 @@ FieldResult compute_cost_to_go(const OccupancyRaster& raster, Cell goal,
         static_cast<double>(std::min(kMaxRing, std::max<std::size_t>(64, n / 128)));
     if (static_cast<double>(ring_size_for(max_step, kBucketsPerRes / res)) > ring_limit) {
       heap_search(g, raster.width(), steps, layers, mask.data(), dist.data(), result.stats);
+    } else if (layers.empty() && detail::tile_search_available()) {
+      dist[g] = 0.0f;
+      const auto t = detail::tile_search(g, raster.width(), raster.height(), steps.orthogonal,
+                                         steps.diagonal, res, mask.data(), dist.data());
+      result.stats.expanded = t.reachable;
+      result.stats.pushes = t.tile_runs;
+      result.stats.tiles = t.tiles;
+      result.stats.tile_runs = t.tile_runs;
+      result.stats.tile_sweeps = t.passes;
+      result.stats.buckets = t.buckets;
+      result.stats.work_bytes += t.work_bytes;
     } else if (layers.empty()) {
       distance_search(g, raster.width(), steps, res, mask.data(), dist.data(), result.stats);
     } else {

@@ -22,26 +22,35 @@
 //   bit-for-bit the field a textbook Dijkstra (std::priority_queue, float labels, same step
 //   function) computes, see reference_dijkstra(). Against the same search in double the difference
 //   is float rounding only, accumulated along a path: measured max relative difference 1e-6 on
-//   250 x 250, 5e-6 on 1000 x 1000 and 2e-5 on 4000 x 4000 maps (field_bench). Unreachable and
-//   blocked cells hold +inf in both. The guarantee holds while costs stay below 2^20 * res (a
-//   million straight steps); beyond that, float cannot add one step reliably anyway.
+//   250 x 250, 1e-5 on 1000 x 1000 and up to 7e-5 on 4000 x 4000 maps (field_bench; long maze
+//   paths). Unreachable and blocked cells hold +inf in both. The guarantee holds while costs stay
+//   below 2^20 * res (a million straight steps); beyond that, float cannot add one step reliably
+//   anyway.
 //
-// Why it is fast (see the .cpp for the reasoning)
-//   Every step costs at least res, so a bucket queue whose buckets are res/4 wide is exactly
-//   ordered: a cell popped from bucket k can only push cells into buckets > k, hence every cell is
-//   final when its bucket comes up and is expanded exactly once, in any order within the bucket.
-//   No heap, no decrease-key, no comparisons between queue entries. The allowed moves of every cell
-//   are precomputed into one byte (8 bits, corner rule included), so the inner loop has no bounds
-//   or obstacle tests; the same byte, cleared, marks the cell as expanded.
+// Why it is fast (tile_relaxation.cpp and docs/fields.md have the measurements)
+//   Without layers, on x86 CPUs with AVX2: label correcting over 8 x 8 tiles. A tile, its one-cell
+//   ring and its step costs are loaded into eight-lane row vectors and swept up and down (moves
+//   from the row below/above as whole-vector adds and mins, moves along the row repeated until no
+//   lane improves) until a sweep changes nothing; then only the neighbouring tiles that a move out
+//   of it now improves are queued, in buckets of their smallest improved label. Most tiles run
+//   once (measured 0.8-1.05 runs per tile on building, SLAM-like, maze and cluttered maps), each
+//   run about two sweeps: about 45 instructions per cell against about 250 for a cell queue. Any
+//   relaxation order reaches the same fixed point (see the .cpp), so the result is the textbook
+//   float Dijkstra's, bit for bit. Elsewhere (no AVX2): a bucket queue whose buckets are res/4
+//   wide is exactly ordered: a cell popped from bucket k can only push cells into buckets > k,
+//   hence every cell is final when its bucket comes up and is expanded exactly once. In both, the
+//   allowed moves of every cell are precomputed into one byte (8 bits, corner rule included), so
+//   the inner loops have no bounds or obstacle tests.
 //
-// Memory: output (4 bytes/cell) + move masks (1 byte/cell) + the bucket ring, which only holds the
-// search frontier (measured 0.02-0.3 bytes/cell on random-rectangle maps); FieldStats::work_bytes
-// reports the total the computation holds, output included: 5.0-5.3 bytes/cell, under the 8-byte
-// budget. The input raster is 1 bit per cell.
+// Memory: output (4 bytes/cell) + move masks (1 byte/cell) + the tile scheduler (a float per tile,
+// 0.06 bytes/cell) or the bucket ring; FieldStats::work_bytes reports the total the computation
+// holds, output included: 5.1-5.3 bytes/cell, under the 8-byte budget. The input raster is 1 bit
+// per cell.
 //
-// Speed (field_bench, 2-core VM shared with other builds, 15 % random rectangles): 6.2-7.3x less
-// CPU time than the textbook Dijkstra at 250^2, 1000^2 and 4000^2 (about 0.8 ms, 17 ms and
-// 0.35 s against 5.6 ms, 110 ms and 2.2 s).
+// Speed (bench/field_bench, see docs/fields.md): 13-31x less CPU time than the textbook Dijkstra
+// with double labels on generated building floors, SLAM-like maps, mazes, small clutter and large
+// blocks (250^2 .. 4000^2, goals at the centre, a corner or in a passage) and on Nav2's warehouse
+// and depot maps; e.g. about 4 ms against 90 ms at 1000^2.
 //
 // Layers: the same bucket queue, with one candidate and bucket per move; when a layer's largest
 // step would need a ring longer than min(4096, cells / 128) buckets (about 1000 resolutions on big
@@ -138,11 +147,14 @@ const char* to_string(FieldStatus s);
 struct FieldStats {
   std::size_t cells = 0;
   std::size_t reachable = 0;
-  std::size_t expanded = 0;    // cells popped and expanded (== reachable)
-  std::size_t pushes = 0;      // queue insertions (the goal included)
-  std::size_t buckets = 0;     // bucket-ring size (0 when the heap fallback ran)
-  bool heap_fallback = false;  // layers so expensive that the ring would be too long
-  std::size_t work_bytes = 0;  // peak heap bytes held by the computation, output included
+  std::size_t expanded = 0;     // cells popped and expanded (== reachable)
+  std::size_t pushes = 0;       // queue insertions (the goal included)
+  std::size_t buckets = 0;      // bucket-ring size (0 when the heap fallback ran)
+  bool heap_fallback = false;   // layers so expensive that the ring would be too long
+  std::size_t tiles = 0;        // without layers: 8 x 8 tiles covering the raster
+  std::size_t tile_runs = 0;    // tiles relaxed (a tile runs again when a neighbour improves it)
+  std::size_t tile_sweeps = 0;  // row sweeps over tiles, all runs together
+  std::size_t work_bytes = 0;   // peak heap bytes held by the computation, output included
 };
 
 struct [[nodiscard]] FieldResult {
