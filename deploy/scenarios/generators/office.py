@@ -13,9 +13,10 @@ WALL = 0.2
 SOUTH_WALL_Y, NORTH_WALL_Y = 7.0, 9.0   # centre lines of the hallway walls
 DOOR_W = 1.0
 
-# (name, kind, x0, x1) for the south (y 0..6.9) and north (y 9.1..16) rows.
-SOUTH = [("A-110", "library", 0, 10), ("A-112", "office", 10, 16), ("A-114", "office", 16, 22),
-         ("A-116", "office", 22, 28), ("A-118", "office", 28, 34), ("A-120", "office", 34, 40)]
+# (name, kind, x0, x1) for the south (y 0..6.9) and north (y 9.1..16) rows. A-120 lies between
+# the library and A-114, as in the paper's Fig. 5 (RHINO passes it between the two).
+SOUTH = [("A-110", "library", 0, 10), ("A-120", "office", 10, 16), ("A-114", "office", 16, 22),
+         ("A-116", "office", 22, 28), ("A-118", "office", 28, 34), ("A-112", "office", 34, 40)]
 NORTH = [("A-111", "meeting", 0, 8), ("A-113", "office", 8, 14), ("A-115", "classroom", 14, 24),
          ("A-117", "office", 24, 30), ("A-119", "office", 30, 35), ("A-121", "office", 35, 40)]
 
@@ -24,11 +25,11 @@ FURNITURE = {
     "A-110": [("bookshelf", 0.3, 0.3, 9.7, 0.9), ("bookshelf", 7.0, 2.5, 9.7, 3.1),
               ("librarian's desk", 2.5, 3.0, 4.5, 3.8)],
     "A-111": [("meeting table", 2.0, 11.5, 6.0, 13.5)],
-    "A-112": [("desk", 12.0, 1.0, 14.0, 1.8)],
+    "A-120": [("Michael's desk", 12.0, 1.0, 14.0, 1.8)],
     "A-114": [("desk", 18.0, 1.0, 20.0, 1.8)],
     "A-116": [("desk", 24.0, 1.0, 26.0, 1.8)],
     "A-118": [("desk", 30.0, 1.0, 32.0, 1.8)],
-    "A-120": [("Michael's desk", 36.5, 1.0, 38.5, 1.8)],
+    "A-112": [("desk", 36.5, 1.0, 38.5, 1.8)],
     "A-113": [("desk", 10.0, 14.2, 12.0, 15.0)],
     "A-115": [("lectern", 22.0, 12.0, 22.8, 12.8), ("desk row", 16.0, 11.0, 20.0, 11.6),
               ("desk row", 16.0, 13.0, 20.0, 13.6)],
@@ -40,9 +41,9 @@ FURNITURE = {
 # Places: (name, room, x, y) where a robot stops to load or unload (in front of the furniture).
 PLACES = [
     ("librarian-desk", "A-110", 3.5, 4.5), ("meeting-table", "A-111", 4.0, 10.7),
-    ("a112-desk", "A-112", 13.0, 2.6), ("a114-desk", "A-114", 19.0, 2.6),
+    ("michael-desk", "A-120", 13.0, 2.6), ("a114-desk", "A-114", 19.0, 2.6),
     ("a116-desk", "A-116", 25.0, 2.6), ("a118-desk", "A-118", 31.0, 2.6),
-    ("michael-desk", "A-120", 37.5, 2.6), ("a113-desk", "A-113", 11.0, 13.4),
+    ("a112-desk", "A-112", 37.5, 2.6), ("a113-desk", "A-113", 11.0, 13.4),
     ("classroom-lectern", "A-115", 21.2, 12.4), ("a117-desk", "A-117", 27.0, 13.4),
     ("a119-desk", "A-119", 32.5, 13.4), ("a121-desk", "A-121", 37.5, 13.4),
     ("hallway-west", "hallway", 1.5, 8.0), ("hallway-east", "hallway", 38.5, 8.0),
@@ -100,8 +101,8 @@ def main():
 #   y=9  +-D------+-D----+-D---------+-D----+-D---+-D---+
 #        |                 hallway                      |
 #   y=7  +-D------+-D----+-D----+-D----+-D----+-D-------+
-#        | A-110  |A-112 |A-114 |A-116 |A-118 | A-120   |
-#        | library|      |      |      |      | Michael |
+#        | A-110  |A-120 |A-114 |A-116 |A-118 | A-112   |
+#        | library|Mich. |      |      |      |         |
 #   y=0  +--------+------+------+------+------+---------+ x=40
 """)
     out.append('name: "office-floor"\n')
