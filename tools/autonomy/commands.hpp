@@ -10,5 +10,8 @@ Command add_topic_hz(CLI::App& topic);
 Command add_topic_pub(CLI::App& topic);
 Command add_node_list(CLI::App& node);
 Command add_node_wait(CLI::App& node);
+Command add_courier_send(CLI::App& courier);
+Command add_courier_jobs(CLI::App& courier);
+Command add_courier_cancel(CLI::App& courier);
 
 }  // namespace autonomy::tools

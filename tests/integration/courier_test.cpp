@@ -1,0 +1,313 @@
+// The courier service end to end: the real simulator on the office floor (lockstep), rhino's
+// behavior process and the courier process over DDS. The paper's two commands of section 2 with
+// door A-120 staying open (Fig. 6), closing after the red letter is loaded and reopening while
+// the robot fetches the green book (Fig. 5), or closing for good (Fig. 7); two red letters; and a
+// courier killed with SIGKILL mid-delivery that restarts from its journal.
+//
+// The door is the world's hand here: the test watches the objects' ground truth and commands
+// A-120 at the moments the paper describes, so the figures do not depend on how fast rhino drives.
+//
+// One DDS domain per test (ctest runs them in parallel); this file uses 160-169 only:
+//
+//   domain  test
+//   ------  -----------------------------------------------
+//    160    CourierTest.Fig6DoorStaysOpenBothDelivered
+//    161    CourierTest.Fig5DoorClosesThenReopensTheRedLetterIsDeliveredOpportunistically
+//    162    CourierTest.Fig7DoorStaysClosedTheRedLetterFailsAndIsReturned
+//    163    CourierTest.TwoRedLettersAreNeverAboardTogether
+//    164    CourierTest.KilledMidDeliveryTheRestartedCourierFinishesFromItsJournal
+//    165    CourierTest.BadCommandsAreRejectedWithReasonsAndTheServiceGoesOn
+#include "tests/support/process_test.hpp"
+
+#include <gtest/gtest.h>
+
+#include <csignal>
+
+namespace autonomy::test {
+namespace {
+
+using namespace std::chrono_literals;
+
+constexpr char kRedLetter[] =
+    "put the red letter on the meeting table in room A-111 on the desk in room A-120 within 3 minutes";
+constexpr char kGreenBook[] = "deliver the green book from the librarian's desk in room A-110 to the desk in room A-114";
+
+// The shipped office floor without A-120's timed script (the tests move that door themselves),
+// its day starting at 09:00, when everybody the commands name is in.
+std::string office_scenario(const std::string& extra = "") {
+  std::string text = read_file(std::string(AUTONOMY_SOURCE_DIR) + "/deploy/scenarios/office.pbtxt");
+  const std::string day_start = "day_start: \"08:30\"";
+  if (const auto at = text.find(day_start); at != std::string::npos) text.replace(at, day_start.size(), "day_start: \"09:00\"");
+  const std::string script =
+      "  script {\n    events { time_s: 60 angle: 0.0000000 }\n    events { time_s: 240 angle: 1.5707963 }\n  }\n";
+  const auto at = text.find(script);
+  if (at != std::string::npos) text.erase(at, script.size());
+  return text + extra;
+}
+
+class CourierTest : public ProcessTest {
+ protected:
+  void start_world(const std::string& scenario_text) {
+    scenario_ = dir().file("office.pbtxt");
+    write_file(scenario_, scenario_text);
+    journal_ = dir().file("courier.db");
+    start_simulator({"--config", scenario_, "--mode", "lockstep", "--wait-for", "behavior/rhino", "--wait-for",
+                     "courier/main"});
+    behavior_ = &start_behavior("rhino", {"--config", scenario_});
+    courier_ = &start_courier();
+  }
+  ChildProcess& start_courier(const std::string& name = "courier") {
+    return start(name, AUTONOMY_COURIER_BIN,
+                 {"--config", scenario_, "--journal", journal_, "--domain", std::to_string(domain_), "--log-dir",
+                  dir().path()});
+  }
+  void send(const std::string& id, const std::string& text) {
+    ASSERT_TRUE(command_writer_->wait_for_readers(1, kDeadline));
+    msg::CourierCommand c;
+    c.command_id = id;
+    c.requester = "test";
+    c.text = text;
+    command_writer_->write(c);
+  }
+  void set_door(double angle) { door_writer_->write({"A-120", angle, "test"}); }
+  void poll() {
+    objects_->poll();
+    jobs_->poll();
+    replies_->poll();
+    reports_->poll();
+  }
+  // The tick at which `object` was first seen as `where` (carried by rhino, or lying at a place).
+  std::optional<int64_t> object_tick(const std::string& object, const std::string& carrier, const std::string& place) {
+    for (const auto& o : objects_->all())
+      if (o.object_id == object && o.carrier == carrier && o.place == place) return o.tick;
+    return std::nullopt;
+  }
+  std::optional<msg::CourierJobStatus> job_in(const std::string& job, msg::JobState state) {
+    for (const auto& s : jobs_->all())
+      if (s.job_id == job && s.state == state) return s;
+    return std::nullopt;
+  }
+  bool finished(const std::string& job) {
+    return job_in(job, msg::JobState::Completed) || job_in(job, msg::JobState::Failed) ||
+           job_in(job, msg::JobState::Cancelled);
+  }
+  std::string job_story(const std::string& job) {
+    std::string out;
+    for (const auto& s : jobs_->all())
+      if (s.job_id == job)
+        out += std::string(" -> ") + msg::to_string(s.state) + (s.phase.empty() ? "" : "/" + s.phase) +
+               (s.reason.empty() ? "" : " (" + s.reason + ")") + "@" + std::to_string(s.tick);
+    return out;
+  }
+  void setup_observers(int domain) {
+    join(domain);
+    beats_.emplace(participant(), dds::topics::heartbeat);
+    objects_.emplace(participant(), dds::topics::truth_object);
+    jobs_.emplace(participant(), dds::topics::courier_job_status);
+    replies_.emplace(participant(), dds::topics::courier_reply);
+    reports_.emplace(participant(), dds::topics::courier_report);
+    command_topic_.emplace(participant(), dds::topics::courier_command);
+    command_writer_.emplace(participant(), *command_topic_);
+    door_topic_.emplace(participant(), dds::topics::door_command);
+    door_writer_.emplace(participant(), *door_topic_);
+  }
+  // Both paper commands accepted as job-1 (red letter) and job-2 (green book).
+  void send_paper_commands() {
+    ASSERT_TRUE(await_ready(*beats_, *courier_));
+    send("c1", kRedLetter);
+    send("c2", kGreenBook);
+    ASSERT_TRUE(await("both commands answered", [&] {
+      poll();
+      return replies_->all().size() >= 2;
+    }));
+    for (const auto& r : replies_->all()) ASSERT_TRUE(r.accepted) << r.command_id << ": " << r.reason << " " << r.detail;
+  }
+
+  std::string scenario_, journal_;
+  ChildProcess* behavior_ = nullptr;
+  ChildProcess* courier_ = nullptr;
+  std::optional<Recorder<msg::Heartbeat>> beats_;
+  std::optional<Recorder<msg::ObjectState>> objects_;
+  std::optional<Recorder<msg::CourierJobStatus>> jobs_;
+  std::optional<Recorder<msg::CourierReply>> replies_;
+  std::optional<Recorder<msg::CourierReport>> reports_;
+  std::optional<dds::Topic<msg::CourierCommand>> command_topic_;
+  std::optional<dds::Writer<msg::CourierCommand>> command_writer_;
+  std::optional<dds::Topic<msg::DoorCommand>> door_topic_;
+  std::optional<dds::Writer<msg::DoorCommand>> door_writer_;
+};
+
+constexpr auto kRun = 120s;
+
+TEST_F(CourierTest, Fig6DoorStaysOpenBothDelivered) {
+  setup_observers(160);
+  start_world(office_scenario());
+  send_paper_commands();
+  ASSERT_TRUE(await("both jobs finished", [&] {
+    poll();
+    return finished("job-1") && finished("job-2");
+  }, kRun)) << job_story("job-1") << "\n" << job_story("job-2");
+  EXPECT_TRUE(job_in("job-1", msg::JobState::Completed)) << job_story("job-1");
+  EXPECT_TRUE(job_in("job-2", msg::JobState::Completed)) << job_story("job-2");
+  EXPECT_FALSE(job_in("job-1", msg::JobState::Opportunistic)) << job_story("job-1");
+  const auto red_loaded = object_tick("letter-red", "rhino", "");
+  const auto red_delivered = object_tick("letter-red", "", "michael-desk");
+  const auto green_delivered = object_tick("book-green", "", "a114-desk");
+  ASSERT_TRUE(red_loaded && red_delivered && green_delivered);
+  EXPECT_LT(*red_loaded, *red_delivered);
+  EXPECT_LT(*red_delivered, *green_delivered);  // A-120 lies on the way to A-114
+  ASSERT_GE(reports_->all().size(), 2u);
+  for (const auto& r : reports_->all()) EXPECT_TRUE(r.success) << r.text;
+}
+
+TEST_F(CourierTest, Fig5DoorClosesThenReopensTheRedLetterIsDeliveredOpportunistically) {
+  setup_observers(161);
+  start_world(office_scenario());
+  send_paper_commands();
+  ASSERT_TRUE(await("the red letter loaded", [&] {
+    poll();
+    return object_tick("letter-red", "rhino", "").has_value();
+  }, kRun));
+  set_door(0.0);  // "At this moment the door of A-120 is closed."
+  ASSERT_TRUE(await("the green book loaded", [&] {
+    poll();
+    return object_tick("book-green", "rhino", "").has_value();
+  }, kRun)) << job_story("job-1") << "\n" << job_story("job-2");
+  set_door(1.5707963);  // "At this moment room A-120 is opened again."
+  ASSERT_TRUE(await("both jobs finished", [&] {
+    poll();
+    return finished("job-1") && finished("job-2");
+  }, kRun)) << job_story("job-1") << "\n" << job_story("job-2");
+
+  const auto red_loaded = object_tick("letter-red", "rhino", "");
+  const auto opportunistic = job_in("job-1", msg::JobState::Opportunistic);
+  const auto green_loaded = object_tick("book-green", "rhino", "");
+  const auto red_delivered = object_tick("letter-red", "", "michael-desk");
+  const auto green_delivered = object_tick("book-green", "", "a114-desk");
+  ASSERT_TRUE(opportunistic) << job_story("job-1");
+  ASSERT_TRUE(red_loaded && green_loaded && red_delivered && green_delivered) << job_story("job-1");
+  EXPECT_NE(opportunistic->reason.find("A-120 closed at"), std::string::npos) << opportunistic->reason;
+  // The paper's steps 2 to 7, in order.
+  EXPECT_LT(*red_loaded, opportunistic->tick);
+  EXPECT_LT(opportunistic->tick, *green_loaded);
+  EXPECT_LT(*green_loaded, *red_delivered);
+  EXPECT_LT(*red_delivered, *green_delivered);  // the green book's delivery was interrupted for it
+  EXPECT_TRUE(job_in("job-1", msg::JobState::Completed)) << job_story("job-1");
+  EXPECT_TRUE(job_in("job-2", msg::JobState::Completed)) << job_story("job-2");
+}
+
+TEST_F(CourierTest, Fig7DoorStaysClosedTheRedLetterFailsAndIsReturned) {
+  setup_observers(162);
+  start_world(office_scenario());
+  send_paper_commands();
+  ASSERT_TRUE(await("the red letter loaded", [&] {
+    poll();
+    return object_tick("letter-red", "rhino", "").has_value();
+  }, kRun));
+  set_door(0.0);
+  ASSERT_TRUE(await("both jobs finished", [&] {
+    poll();
+    return finished("job-1") && finished("job-2");
+  }, kRun)) << job_story("job-1") << "\n" << job_story("job-2");
+  const auto failed = job_in("job-1", msg::JobState::Failed);
+  ASSERT_TRUE(failed) << job_story("job-1");
+  EXPECT_NE(failed->reason.find("A-120 closed at"), std::string::npos) << failed->reason;
+  EXPECT_NE(failed->reason.find("letter-red returned to meeting-table"), std::string::npos) << failed->reason;
+  EXPECT_TRUE(job_in("job-2", msg::JobState::Completed)) << job_story("job-2");
+  // Not dropped: back where it came from, after the green book's delivery.
+  const auto returned = object_tick("letter-red", "", "meeting-table");
+  const auto green_delivered = object_tick("book-green", "", "a114-desk");
+  ASSERT_TRUE(returned && green_delivered);
+  EXPECT_LT(*green_delivered, *returned);
+  EXPECT_FALSE(object_tick("letter-red", "", "michael-desk"));
+}
+
+TEST_F(CourierTest, TwoRedLettersAreNeverAboardTogether) {
+  setup_observers(163);
+  start_world(office_scenario("objects { id: \"letter-red-2\" kind: \"letter\" colour: \"red\" place: \"librarian-desk\" }\n"));
+  ASSERT_TRUE(await_ready(*beats_, *courier_));
+  ASSERT_TRUE(command_writer_->wait_for_readers(1, kDeadline));
+  msg::CourierCommand a;
+  a.command_id = "a";
+  a.kind = msg::CourierCommandKind::Deliver;
+  a.object_id = "letter-red";
+  a.from = "meeting-table";
+  a.to = "Anna";
+  command_writer_->write(a);
+  msg::CourierCommand b = a;
+  b.command_id = "b";
+  b.object_id = "letter-red-2";
+  b.from = "librarian";
+  b.to = "Michael";
+  command_writer_->write(b);
+  ASSERT_TRUE(await("both jobs finished", [&] {
+    poll();
+    return finished("job-1") && finished("job-2");
+  }, kRun)) << job_story("job-1") << "\n" << job_story("job-2");
+  EXPECT_TRUE(job_in("job-1", msg::JobState::Completed)) << job_story("job-1");
+  EXPECT_TRUE(job_in("job-2", msg::JobState::Completed)) << job_story("job-2");
+  // One letter's delivery ends before the other's load.
+  const auto load1 = object_tick("letter-red", "rhino", "");
+  const auto drop1 = object_tick("letter-red", "", "a114-desk");
+  const auto load2 = object_tick("letter-red-2", "rhino", "");
+  const auto drop2 = object_tick("letter-red-2", "", "michael-desk");
+  ASSERT_TRUE(load1 && drop1 && load2 && drop2);
+  EXPECT_TRUE(*drop1 < *load2 || *drop2 < *load1)
+      << "letter-red aboard " << *load1 << ".." << *drop1 << ", letter-red-2 " << *load2 << ".." << *drop2;
+}
+
+TEST_F(CourierTest, KilledMidDeliveryTheRestartedCourierFinishesFromItsJournal) {
+  setup_observers(164);
+  start_world(office_scenario());
+  send_paper_commands();
+  ASSERT_TRUE(await("the red letter loaded", [&] {
+    poll();
+    return object_tick("letter-red", "rhino", "").has_value();
+  }, kRun));
+  stop_watching(*courier_);
+  courier_->signal(SIGKILL);
+  ASSERT_TRUE(courier_->wait_for_exit(10s));
+  ChildProcess& again = start_courier("courier-restarted");
+  ASSERT_TRUE(await_ready(*beats_, again));
+  ASSERT_TRUE(await("both jobs finished after the restart", [&] {
+    poll();
+    return finished("job-1") && finished("job-2");
+  }, kRun)) << job_story("job-1") << "\n" << job_story("job-2");
+  EXPECT_TRUE(job_in("job-1", msg::JobState::Completed)) << job_story("job-1");
+  EXPECT_TRUE(job_in("job-2", msg::JobState::Completed)) << job_story("job-2");
+  EXPECT_TRUE(object_tick("letter-red", "", "michael-desk"));
+  EXPECT_TRUE(object_tick("book-green", "", "a114-desk"));
+  // Loaded once: the restarted courier knew the letter was aboard (no second load of it).
+  int loads = 0;
+  for (const auto& o : objects_->all()) loads += o.object_id == "letter-red" && o.carrier == "rhino";
+  EXPECT_EQ(loads, 1);
+}
+
+TEST_F(CourierTest, BadCommandsAreRejectedWithReasonsAndTheServiceGoesOn) {
+  setup_observers(165);
+  start_world(office_scenario());
+  ASSERT_TRUE(await_ready(*beats_, *courier_));
+  send("x1", "deliver the green book from the librarian to room A-122");
+  send("x2", std::string(5000, 'z'));
+  msg::CourierCommand huge_id;
+  huge_id.command_id = std::string(100000, 'q');
+  huge_id.text = kGreenBook;
+  command_writer_->write(huge_id);
+  send("x3", kGreenBook);
+  ASSERT_TRUE(await("four replies", [&] {
+    poll();
+    return replies_->all().size() >= 4;
+  }));
+  std::map<std::string, msg::CourierReply> by_id;
+  for (const auto& r : replies_->all()) by_id[r.command_id] = r;
+  EXPECT_EQ(by_id["x1"].reason, "unknown_room");
+  EXPECT_EQ(by_id["x1"].word, "A-122");
+  EXPECT_EQ(by_id["x2"].reason, "too_long");
+  ASSERT_EQ(by_id.count(std::string(128, 'q')), 1u);
+  EXPECT_EQ(by_id[std::string(128, 'q')].reason, "too_long");
+  EXPECT_TRUE(by_id["x3"].accepted) << by_id["x3"].reason;
+  EXPECT_TRUE(courier_->running());
+}
+
+}  // namespace
+}  // namespace autonomy::test
