@@ -8,7 +8,9 @@
 #include <map>
 #include <memory>
 
+#include "common/dds/reader.hpp"
 #include "common/dds/topics.hpp"
+#include "common/dds/writer.hpp"
 #include "tools/autonomy/commands.hpp"
 
 namespace autonomy::tools {
