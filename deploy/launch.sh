@@ -20,8 +20,9 @@ Usage: deploy/launch.sh [options] SET        start service set SET (deploy/sets/
 Every process of the set runs in its own session with its output in RUN_DIR/NAME.out and its pid
 in RUN_DIR/NAME.pid (NAME with / as -). The launcher waits until each one's heartbeat says ready
 (autonomy node wait), prints "launch: set 'SET' ready", then supervises the set:
-  - by default in the foreground; Ctrl-C, SIGTERM or 'launch.sh stop RUN_DIR' from another
-    terminal stop the whole set, and the launcher ends (exit code 0);
+  - by default in the foreground; Ctrl-C, SIGTERM, SIGHUP (the terminal closed) or
+    'launch.sh stop RUN_DIR' from another terminal stop the whole set, and the launcher ends
+    (exit code 0);
   - with --detach it goes to the background and this command returns once the set is ready.
     The detached launcher supervises the set the same way; its reports go to RUN_DIR/launch.log.
     'launch.sh stop RUN_DIR' ends it and the set.
@@ -418,6 +419,7 @@ on_exit() { stop_set >/dev/null 2>&1 || true; }
 trap on_exit EXIT
 trap 'stop_request=SIGINT' INT
 trap 'stop_request=SIGTERM' TERM
+trap 'stop_request=SIGHUP' HUP  # the terminal closed
 
 for i in "${!names[@]}"; do start_process "$i"; done
 
