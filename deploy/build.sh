@@ -1,16 +1,29 @@
 #!/usr/bin/env bash
-# Configures and builds the whole tree into build/ (or build-asan/ with --sanitize).
-# Usage: deploy/build.sh [--sanitize] [--release]
+# Configures and builds the tree into build/ (or build-asan/ with --sanitize): everything, or only
+# the named targets and what they need. --demo builds the demo's programs only (the simulator, the
+# behavior controller and the autonomy CLI, no tests or benchmarks) in the same configuration, so
+# a later full build reuses what it compiled.
+# Usage: deploy/build.sh [--sanitize] [--release] [--demo] [--target NAME]...
 set -euo pipefail
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 dir=build
 args=(-DCMAKE_BUILD_TYPE=RelWithDebInfo)
-for a in "$@"; do
-  case $a in
+targets=()
+while [ $# -gt 0 ]; do
+  case $1 in
     --sanitize) dir=build-asan; args=(-DCMAKE_BUILD_TYPE=Debug -DAUTONOMY_SANITIZE=ON) ;;
     --release) args=(-DCMAKE_BUILD_TYPE=Release) ;;
-    *) echo "build: unknown option $a (use --sanitize or --release)" >&2; exit 2 ;;
+    --demo) targets+=(simulator behavior autonomy) ;;
+    --target)
+      [ $# -ge 2 ] || { echo "build: --target needs a target name" >&2; exit 2; }
+      targets+=("$2"); shift ;;
+    *) echo "build: unknown option $1 (use --sanitize, --release, --demo or --target NAME)" >&2; exit 2 ;;
   esac
+  shift
 done
 cmake -S "$repo" -B "$repo/$dir" -G Ninja "${args[@]}" >/dev/null
-cmake --build "$repo/$dir" --parallel "$(nproc)"
+if [ ${#targets[@]} -gt 0 ]; then
+  cmake --build "$repo/$dir" --parallel "$(nproc)" --target "${targets[@]}"
+else
+  cmake --build "$repo/$dir" --parallel "$(nproc)"
+fi

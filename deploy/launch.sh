@@ -1,23 +1,49 @@
 #!/usr/bin/env bash
-# Starts a named service set in the background, waits until every process reports ready through
-# its heartbeat, and stops the whole set cleanly on request or on Ctrl-C.
+# Starts a service set, waits until every process reports ready through its heartbeat, then
+# supervises it: a process that ends is reported (exit code or signal, the last lines of its
+# output) and handled by its on-exit policy (stop the set, respawn it with a back-off, or ignore
+# it). The launcher owns the run: Ctrl-C, SIGTERM or `launch.sh stop RUN_DIR` from another
+# terminal make it stop the whole set and end. With --detach the launcher itself goes to the
+# background (its pid in RUN_DIR/launch.pid, its reports in RUN_DIR/launch.log).
 set -euo pipefail
 
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+self="$repo/deploy/launch.sh"
 
 usage() {
   cat <<USAGE
-Usage: deploy/launch.sh [options] SET        start service set SET (deploy/sets/SET.set)
-       deploy/launch.sh stop RUN_DIR         stop a set started with --detach
+Usage: deploy/launch.sh [options] SET        start service set SET (deploy/sets/SET.set, or a
+                                             path to a .set file)
+       deploy/launch.sh stop RUN_DIR         stop the set running in RUN_DIR (from any terminal)
        deploy/launch.sh --list               list the service sets
 
-Every process of the set runs in the background with its log and pid file in one run folder.
-The script waits until each one's heartbeat says ready (autonomy node wait), then:
-  - by default stays in the foreground; Ctrl-C (or SIGTERM) stops the whole set, and so does
-    any process of the set exiting on its own;
-  - with --detach returns at once, printing the run folder to pass to 'stop'.
-Stopping sends SIGINT to every process, waits up to 10 s, then SIGKILLs what is left: no
-orphans either way.
+Every process of the set runs in its own session with its output in RUN_DIR/NAME.out and its pid
+in RUN_DIR/NAME.pid (NAME with / as -). The launcher waits until each one's heartbeat says ready
+(autonomy node wait), prints "launch: set 'SET' ready", then supervises the set:
+  - by default in the foreground; Ctrl-C, SIGTERM, SIGHUP (the terminal closed) or
+    'launch.sh stop RUN_DIR' from another terminal stop the whole set, and the launcher ends
+    (exit code 0);
+  - with --detach it goes to the background and this command returns once the set is ready.
+    The detached launcher supervises the set the same way; its reports go to RUN_DIR/launch.log.
+    'launch.sh stop RUN_DIR' ends it and the set.
+The launcher's pid is in RUN_DIR/launch.pid. 'stop' sends it SIGTERM and waits for it to end; when
+no launcher is alive (it was killed) 'stop' stops the processes of the pid files itself.
+Stopping sends SIGINT to every process, waits up to 10 s, then SIGKILLs what is left; a process
+whose launcher dies anyhow (even kill -9) gets SIGTERM from the kernel: no orphans either way.
+
+When a process of the set ends while the set runs, the launcher reports it: its name and pid,
+"exit code N" or "killed by SIGNAME" (a program's own exit code above 128 reads as a signal),
+how long it ran, and the last 10 lines of its output. Then its on-exit policy decides:
+  on-exit=stop       (default) stop the whole set; the launcher ends with exit code 1
+  on-exit=ignore     leave it ended; the rest of the set goes on (the launcher ends, with 0,
+                     when no process is left)
+  on-exit=respawn[:max=N][:backoff=S]
+                     start it again after S seconds (default 1), doubling for each further
+                     respawn (at most 60 s), at most N times (default 3; a run of 60 s or more
+                     before it ended starts the count afresh); then stop the set as 'stop' does.
+                     The new process gets a new pid file, its output is appended to NAME.out,
+                     and its readiness is checked again (autonomy node wait, --timeout).
+A process that ends before the set is ready is handled the same way.
 
 Options:
   --domain N        DDS domain id (default: \$AUTONOMY_DOMAIN or 0)
@@ -25,37 +51,58 @@ Options:
                     With lan, AUTONOMY_PEERS="host1 host2" adds unicast peers.
   --run-dir DIR     run folder (default: runs/SET-<date>-<time> in the repository)
   --bin DIR         folder of the programs (default: build/bin in the repository)
-  --timeout S       seconds to wait for readiness (default 20)
-  --detach          start and return
+  --timeout S       seconds to wait for readiness (default 20), also after a respawn
+  --detach          start, wait until ready, return; the launcher supervises in the background
   -h, --help        this text
 
-A set file has one process per line: NAME (service/instance as its heartbeat reports it), then
-the program and its arguments. Lines starting with # are comments. {run} in an argument stands
-for the run folder, {repo} for the repository. launch.sh adds --domain and --log-dir RUN_DIR to each.
+A set file has one process per line:
+  NAME [on-exit=POLICY] PROGRAM [ARGS...]
+NAME is service/instance as its heartbeat reports it (service alone means service/main), PROGRAM
+a program in the --bin folder. Lines starting with # are comments. {run} in an argument stands
+for the run folder, {repo} for the repository. launch.sh adds --domain and --log-dir RUN_DIR to
+each. Mistakes (unknown program or policy, a NAME twice) are reported as FILE:LINE before
+anything starts.
 USAGE
 }
 
 list_sets() { for f in "$repo"/deploy/sets/*.set; do basename "$f" .set; done; }
 
-# stop_set RUN_DIR: SIGINT to every process of the run, SIGKILL after 10 s.
-stop_set() {
-  local run_dir=$1 pid name deadline alive
+# describe_exit STATUS: how a process ended, from the status bash's wait returns.
+describe_exit() {
+  local status=$1 sig
+  if [ "$status" -gt 128 ] && sig=$(kill -l $((status - 128)) 2>/dev/null); then
+    echo "killed by SIG$sig"
+  else
+    echo "exit code $status"
+  fi
+}
+
+# is_running PID: the process exists and has not ended (an ended process whose parent has not
+# collected it yet, a zombie, has ended).
+is_running() {
+  local state
+  state=$(sed -n 's/^.*) \(.\).*$/\1/p' "/proc/$1/stat" 2>/dev/null) || return 1
+  [ -n "$state" ] && [ "$state" != Z ] && [ "$state" != X ]
+}
+
+# stop_processes RUN_DIR: SIGINT to every process of the pid files, SIGKILL after 10 s.
+stop_processes() {
+  local run_dir=$1 pid name deadline alive f
   shopt -s nullglob
   local pidfiles=("$run_dir"/*.pid)
-  [ ${#pidfiles[@]} -gt 0 ] || { echo "launch: no pid files in $run_dir" >&2; return 1; }
-  for f in "${pidfiles[@]}"; do
-    pid=$(cat "$f")
-    kill -INT "$pid" 2>/dev/null || true
-  done
+  local targets=()
+  for f in "${pidfiles[@]}"; do [ "$(basename "$f")" = launch.pid ] || targets+=("$f"); done
+  [ ${#targets[@]} -gt 0 ] || return 0
+  for f in "${targets[@]}"; do kill -INT "$(cat "$f")" 2>/dev/null || true; done
   deadline=$((SECONDS + 10))
   while :; do
     alive=0
-    for f in "${pidfiles[@]}"; do kill -0 "$(cat "$f")" 2>/dev/null && alive=1; done
+    for f in "${targets[@]}"; do is_running "$(cat "$f")" && alive=1; done
     [ $alive -eq 0 ] && break
     if [ $SECONDS -ge $deadline ]; then
-      for f in "${pidfiles[@]}"; do
+      for f in "${targets[@]}"; do
         pid=$(cat "$f"); name=$(basename "$f" .pid)
-        if kill -0 "$pid" 2>/dev/null; then
+        if is_running "$pid"; then
           echo "launch: $name (pid $pid) ignored SIGINT for 10 s: killing it" >&2
           kill -KILL "$pid" 2>/dev/null || true
         fi
@@ -64,7 +111,40 @@ stop_set() {
     fi
     sleep 0.1
   done
-  rm -f "${pidfiles[@]}"
+  rm -f "${targets[@]}"
+}
+
+# launcher_of RUN_DIR: the pid of the launcher that owns the run, if it is alive.
+launcher_of() {
+  local pid
+  pid=$(cat "$1/launch.pid" 2>/dev/null) || return 1
+  [[ "$pid" =~ ^[0-9]+$ ]] && is_running "$pid" || return 1
+  # The pid may have been reused by another program since: it must be a launch.sh.
+  tr '\0' ' ' <"/proc/$pid/cmdline" | grep -q "launch\.sh" || return 1
+  echo "$pid"
+}
+
+# stop_run RUN_DIR: 'launch.sh stop'. The launcher that owns the run stops its set and ends;
+# without one, the processes of the pid files are stopped here.
+stop_run() {
+  local run_dir=$1 pid deadline
+  [ -d "$run_dir" ] || { echo "launch: stop: no run folder $run_dir" >&2; return 2; }
+  if pid=$(launcher_of "$run_dir"); then
+    kill -TERM "$pid" 2>/dev/null || true
+    # Its own stop takes at most 10 s (then SIGKILL); a few more for the reporting.
+    deadline=$((SECONDS + 15))
+    while is_running "$pid" && [ $SECONDS -lt $deadline ]; do sleep 0.1; done
+    if ! is_running "$pid"; then
+      echo "launch: stopped the set in $run_dir (its launcher, pid $pid, has ended)"
+      return 0
+    fi
+    echo "launch: the launcher (pid $pid) did not end within 15 s; stopping its processes here" >&2
+  fi
+  shopt -s nullglob
+  local pidfiles=("$run_dir"/*.pid)
+  [ ${#pidfiles[@]} -gt 0 ] || { echo "launch: nothing runs in $run_dir (no launcher, no pid files)" >&2; return 1; }
+  stop_processes "$run_dir"
+  rm -f "$run_dir/launch.pid"
   echo "launch: stopped the set in $run_dir"
 }
 
@@ -74,37 +154,52 @@ run_dir=""
 bin="$repo/build/bin"
 timeout=20
 detach=0
-set_name=""
+set_arg=""
+# Set by a launcher for the copy of itself it leaves in the background (--detach).
+detached_launcher=${AUTONOMY_LAUNCH_DETACHED:-}
+unset AUTONOMY_LAUNCH_DETACHED
 
+need_value() { [ $# -ge 2 ] || { echo "launch: $1 needs a value (see --help)" >&2; exit 2; }; }
 while [ $# -gt 0 ]; do
   case $1 in
     -h|--help) usage; exit 0 ;;
     --list) list_sets; exit 0 ;;
-    --domain) domain=$2; shift 2 ;;
-    --profile) profile=$2; shift 2 ;;
-    --run-dir) run_dir=$2; shift 2 ;;
-    --bin) bin=$2; shift 2 ;;
-    --timeout) timeout=$2; shift 2 ;;
+    --domain) need_value "$@"; domain=$2; shift 2 ;;
+    --profile) need_value "$@"; profile=$2; shift 2 ;;
+    --run-dir) need_value "$@"; run_dir=$2; shift 2 ;;
+    --bin) need_value "$@"; bin=$2; shift 2 ;;
+    --timeout) need_value "$@"; timeout=$2; shift 2 ;;
     --detach) detach=1; shift ;;
     stop)
-      [ $# -ge 2 ] || { echo "launch: stop needs the run folder" >&2; exit 2; }
-      stop_set "$2"; exit $? ;;
+      [ $# -eq 2 ] || { echo "launch: usage: launch.sh stop RUN_DIR" >&2; exit 2; }
+      rc=0; stop_run "$2" || rc=$?; exit $rc ;;
     -*) echo "launch: unknown option $1 (see --help)" >&2; exit 2 ;;
-    *) [ -z "$set_name" ] || { echo "launch: one set at a time ($set_name, $1)" >&2; exit 2; }
-       set_name=$1; shift ;;
+    *) [ -z "$set_arg" ] || { echo "launch: one set at a time ($set_arg, $1)" >&2; exit 2; }
+       set_arg=$1; shift ;;
   esac
 done
 
-[ -n "$set_name" ] || { usage >&2; exit 2; }
-set_file="$repo/deploy/sets/$set_name.set"
-[ -f "$set_file" ] || { echo "launch: no service set '$set_name'; known sets: $(list_sets | tr '\n' ' ')" >&2; exit 2; }
+[ -n "$set_arg" ] || { usage >&2; exit 2; }
+if [[ "$set_arg" == */* || "$set_arg" == *.set ]]; then
+  set_file=$set_arg
+  [ -f "$set_file" ] || { echo "launch: set file $set_file not found" >&2; exit 2; }
+else
+  set_file="$repo/deploy/sets/$set_arg.set"
+  [ -f "$set_file" ] || { echo "launch: no service set '$set_arg'; known sets: $(list_sets | tr '\n' ' ')" >&2; exit 2; }
+fi
+set_file="$(cd "$(dirname "$set_file")" && pwd)/$(basename "$set_file")"
+set_name=$(basename "$set_file" .set)
 [[ "$domain" =~ ^[0-9]+$ ]] && [ "$domain" -le 232 ] || { echo "launch: --domain must be 0..232, got '$domain'" >&2; exit 2; }
-[ -x "$bin/autonomy" ] || { echo "launch: $bin/autonomy not found: build first (cmake --build build)" >&2; exit 2; }
+[[ "$timeout" =~ ^[0-9]+([.][0-9]+)?$ ]] || { echo "launch: --timeout must be a number of seconds, got '$timeout'" >&2; exit 2; }
+[ -d "$bin" ] || { echo "launch: --bin $bin is not a folder" >&2; exit 2; }
+bin=$(cd "$bin" && pwd)
+[ -x "$bin/autonomy" ] || { echo "launch: $bin/autonomy not found: build first (bash deploy/build.sh --demo)" >&2; exit 2; }
 
 case $profile in
   loopback|lan) uri="file://$repo/deploy/dds/$profile.xml" ;;
   *) [ -f "$profile" ] || { echo "launch: profile file $profile not found" >&2; exit 2; }
-     uri="file://$(cd "$(dirname "$profile")" && pwd)/$(basename "$profile")" ;;
+     profile="$(cd "$(dirname "$profile")" && pwd)/$(basename "$profile")"
+     uri="file://$profile" ;;
 esac
 if [ "$profile" = lan ] && [ -n "${AUTONOMY_PEERS:-}" ]; then
   peers=""
@@ -117,60 +212,241 @@ export AUTONOMY_DOMAIN=$domain
 [ -n "$run_dir" ] || run_dir="$repo/runs/$set_name-$(date +%Y%m%d-%H%M%S)"
 mkdir -p "$run_dir"
 run_dir=$(cd "$run_dir" && pwd)
+if pid=$(launcher_of "$run_dir") && [ "$pid" != $$ ]; then
+  echo "launch: $run_dir is the run of a launcher still alive (pid $pid): stop it first" >&2
+  exit 2
+fi
 
-names=()
+# ---- The set file, checked whole before anything starts.
+names=() files=() programs=() commands=() policies=() max_respawns=() backoffs=()
+declare -A line_of_name=()
 line_no=0
+set_error() { echo "launch: $set_file:$line_no: $*" >&2; exit 2; }
 while IFS= read -r line || [ -n "$line" ]; do
   line_no=$((line_no + 1))
   line=${line%%#*}
   read -r -a words <<<"$line" || true
   [ ${#words[@]} -gt 0 ] || continue
-  [ ${#words[@]} -ge 2 ] || { echo "launch: $set_file:$line_no: expected NAME PROGRAM [ARGS...]" >&2; stop_set "$run_dir" >/dev/null 2>&1 || true; exit 2; }
-  name=${words[0]}; program=${words[1]}
-  [ -x "$bin/$program" ] || { echo "launch: $set_file:$line_no: program $bin/$program not found" >&2; stop_set "$run_dir" >/dev/null 2>&1 || true; exit 2; }
-  file_name=${name//\//-}
-  args=()
-  for w in "${words[@]:2}"; do w="${w//\{run\}/$run_dir}"; args+=("${w//\{repo\}/$repo}"); done
-  # setsid: the processes do not share the terminal's process group, so only this script decides
-  # how they are stopped (one SIGINT each), also when it runs detached.
-  setsid "$bin/$program" "${args[@]}" --domain "$domain" --log-dir "$run_dir" \
-    >"$run_dir/$file_name.out" 2>&1 </dev/null &
-  echo $! >"$run_dir/$file_name.pid"
-  names+=("$name")
-  echo "launch: started $name (pid $!): $program ${args[*]}"
-done <"$set_file"
-
-cleanup() { trap - INT TERM EXIT; stop_set "$run_dir"; }
-trap 'echo; cleanup; exit 0' INT TERM
-[ $detach -eq 1 ] || trap cleanup EXIT
-
-if ! "$bin/autonomy" node wait --domain "$domain" --timeout "$timeout" "${names[@]}"; then
-  echo "launch: not every process became ready within $timeout s; last lines of their output:" >&2
-  for n in "${names[@]}"; do
-    echo "--- $n" >&2; tail -n 5 "$run_dir/${n//\//-}.out" >&2 || true
+  name=${words[0]}
+  [[ "$name" =~ ^[A-Za-z0-9_.-]+(/[A-Za-z0-9_.-]+)?$ ]] || set_error "'$name' is not a NAME (service/instance, letters, digits, _ . -)"
+  [[ "$name" == */* ]] || name="$name/main"
+  [ -z "${line_of_name[$name]:-}" ] || set_error "$name is already line ${line_of_name[$name]}'s process"
+  line_of_name[$name]=$line_no
+  policy=stop max=3 backoff=1
+  rest=("${words[@]:1}")
+  if [ ${#rest[@]} -gt 0 ] && [[ "${rest[0]}" == on-exit=* ]]; then
+    spec=${rest[0]#on-exit=}
+    rest=("${rest[@]:1}")
+    IFS=: read -r -a parts <<<"$spec"
+    case ${parts[0]:-} in
+      stop|ignore) policy=${parts[0]}
+        [ ${#parts[@]} -eq 1 ] || set_error "on-exit=${parts[0]} takes no options (only respawn has max= and backoff=)" ;;
+      respawn) policy=respawn
+        for opt in "${parts[@]:1}"; do
+          case $opt in
+            max=*) max=${opt#max=}
+              [[ "$max" =~ ^[0-9]+$ ]] && [ "$max" -ge 1 ] && [ "$max" -le 1000 ] || set_error "respawn max must be 1..1000, got '$max'" ;;
+            backoff=*) backoff=${opt#backoff=}
+              [[ "$backoff" =~ ^[0-9]+([.][0-9]+)?$ ]] && [ "$(awk -v b="$backoff" 'BEGIN{print (b > 0 && b <= 60)}')" = 1 ] \
+                || set_error "respawn backoff must be seconds in (0, 60], got '$backoff'" ;;
+            *) set_error "unknown respawn option '$opt' (max=N, backoff=S)" ;;
+          esac
+        done ;;
+      *) set_error "unknown on-exit policy '$spec' (stop, ignore, respawn[:max=N][:backoff=S])" ;;
+    esac
+  fi
+  [ ${#rest[@]} -ge 1 ] || set_error "expected NAME [on-exit=POLICY] PROGRAM [ARGS...]"
+  program=${rest[0]}
+  [[ "$program" != */* ]] || set_error "PROGRAM is a name in the --bin folder, not a path: '$program'"
+  [ -x "$bin/$program" ] || set_error "program $bin/$program not found"
+  command=""
+  for w in "${rest[@]:1}"; do
+    w="${w//\{run\}/$run_dir}"
+    command+="$(printf '%q' "${w//\{repo\}/$repo}") "
   done
-  cleanup
+  names+=("$name"); files+=("${name//\//-}"); programs+=("$program"); commands+=("$command")
+  policies+=("$policy"); max_respawns+=("$max"); backoffs+=("$backoff")
+done <"$set_file"
+[ ${#names[@]} -gt 0 ] || { echo "launch: $set_file has no process" >&2; exit 2; }
+
+# ---- Detached: the same launcher in the background, in its own session; this one returns when
+# the set is ready (exit 0) or the launcher gave up (exit 1, its report printed).
+if [ $detach -eq 1 ]; then
+  rm -f "$run_dir/launch.state"
+  AUTONOMY_LAUNCH_DETACHED=1 setsid bash "$self" --domain "$domain" --profile "$profile" --run-dir "$run_dir" --bin "$bin" \
+    --timeout "$timeout" "$set_file" >"$run_dir/launch.log" 2>&1 </dev/null &
+  launcher=$!
+  trap 'kill -TERM $launcher 2>/dev/null; wait $launcher 2>/dev/null; cat "$run_dir/launch.log"; exit 130' INT TERM
+  state=""
+  while is_running $launcher; do
+    state=$(cat "$run_dir/launch.state" 2>/dev/null || true)
+    [ "$state" != ready ] || break
+    sleep 0.1
+  done
+  cat "$run_dir/launch.log"
+  if [ "$state" = ready ]; then
+    echo "launch: detached; the launcher (pid $launcher) supervises the set, reports in $run_dir/launch.log"
+    echo "launch: stop it with: deploy/launch.sh stop $run_dir"
+    exit 0
+  fi
+  echo "launch: the set did not start (report above, also in $run_dir/launch.log)" >&2
   exit 1
 fi
-echo "launch: set '$set_name' ready on domain $domain; logs in $run_dir"
 
-if [ $detach -eq 1 ]; then
-  trap - INT TERM EXIT
-  echo "launch: stop it with: deploy/launch.sh stop $run_dir"
-  exit 0
-fi
+# ---- The launcher: starts the set and supervises it until it is stopped.
+echo $$ >"$run_dir/launch.pid"
+set_state() { echo "$1" >"$run_dir/launch.state"; }
+set_state starting
 
-echo "launch: Ctrl-C stops the set"
-while :; do
-  for n in "${names[@]}"; do
-    f="$run_dir/${n//\//-}.pid"
-    if [ -f "$f" ] && ! kill -0 "$(cat "$f")" 2>/dev/null; then
-      wait "$(cat "$f")" 2>/dev/null && code=0 || code=$?
-      echo "launch: $n exited on its own (exit code $code); stopping the set" >&2
-      rm -f "$f"
-      cleanup
-      exit 1
-    fi
+declare -A index_of_pid=()   # pid of a set process -> its index
+declare -A respawn_timer=()  # pid of a back-off sleep -> index of the process it respawns
+declare -A ready_check=()    # pid of an 'autonomy node wait' -> index of the process it awaits
+started_at=() respawn_count=() ready=() gone=()
+set_ready=0
+stop_request=""
+stopped=0
+
+# start_process I [respawn]: starts process I in its own session (SIGTERM reaches it when this
+# launcher dies, however it dies) and the check that it becomes ready.
+start_process() {
+  local i=$1 file=${files[$1]} pid
+  local -a args
+  eval "args=(${commands[$i]})"
+  if [ "${2:-}" = respawn ]; then
+    echo "=== launch: respawn ${respawn_count[$i]} at $(date +%T)" >>"$run_dir/$file.out"
+  else
+    : >"$run_dir/$file.out"
+  fi
+  setpriv --pdeathsig TERM setsid "$bin/${programs[$i]}" "${args[@]}" --domain "$domain" --log-dir "$run_dir" \
+    >>"$run_dir/$file.out" 2>&1 </dev/null &
+  pid=$!
+  echo $pid >"$run_dir/$file.pid"
+  index_of_pid[$pid]=$i
+  started_at[$i]=$SECONDS
+  ready[$i]=0
+  echo "launch: started ${names[$i]} (pid $pid): ${programs[$i]} ${args[*]}"
+  "$bin/autonomy" node wait --domain "$domain" --timeout "$timeout" "${names[$i]}" &
+  ready_check[$!]=$i
+}
+
+# stop_set: the timers and readiness checks first (no respawn during the stop), then the set.
+stop_set() {
+  [ $stopped -eq 0 ] || return 0
+  stopped=1
+  set_state stopping
+  local pid
+  for pid in "${!respawn_timer[@]}" "${!ready_check[@]}"; do kill -TERM "$pid" 2>/dev/null || true; done
+  stop_processes "$run_dir"
+  wait 2>/dev/null || true
+  set_state stopped
+  rm -f "$run_dir/launch.pid"
+  echo "launch: stopped the set in $run_dir"
+}
+
+print_tail() {
+  local out="$run_dir/$1.out"
+  echo "launch: last lines of $out:"
+  tail -n 10 "$out" 2>/dev/null | sed 's/^/  | /'
+}
+
+# check_set_ready: once every process that is expected to run is ready, say so (once).
+check_set_ready() {
+  local i without=""
+  [ $set_ready -eq 0 ] || return 0
+  for i in "${!names[@]}"; do
+    if [ "${gone[$i]:-0}" -eq 1 ]; then without+=" ${names[$i]}"; continue; fi
+    [ "${ready[$i]}" -eq 1 ] || return 0
   done
-  sleep 0.5
+  set_ready=1
+  set_state ready
+  echo "launch: set '$set_name' ready on domain $domain; logs in $run_dir${without:+ (without$without, which ended)}"
+  if [ -z "$detached_launcher" ]; then
+    echo "launch: Ctrl-C stops the set; so does, from another terminal: deploy/launch.sh stop $run_dir"
+  fi
+}
+
+# process_ended I STATUS PID: report, then the process's on-exit policy.
+process_ended() {
+  local i=$1 status=$2 name=${names[$1]} ran delay n pid
+  ran=$((SECONDS - started_at[$i]))
+  rm -f "$run_dir/${files[$i]}.pid"
+  # Its readiness check has nothing left to wait for.
+  for pid in "${!ready_check[@]}"; do
+    [ "${ready_check[$pid]}" != "$i" ] || { kill -TERM "$pid" 2>/dev/null || true; unset "ready_check[$pid]"; }
+  done
+  echo "launch: $name (pid $3) ended: $(describe_exit "$status") after $ran s"
+  print_tail "${files[$i]}"
+  case ${policies[$i]} in
+    ignore)
+      gone[$i]=1
+      echo "launch: $name: on-exit=ignore, the rest of the set goes on"
+      check_set_ready ;;
+    stop)
+      echo "launch: $name: on-exit=stop, stopping the set"
+      stop_set; exit 1 ;;
+    respawn)
+      [ "$ran" -lt 60 ] || respawn_count[$i]=0
+      n=${respawn_count[$i]:-0}
+      if [ "$n" -ge "${max_respawns[$i]}" ]; then
+        echo "launch: $name: no respawn left (max=${max_respawns[$i]} reached), stopping the set"
+        stop_set; exit 1
+      fi
+      respawn_count[$i]=$((n + 1))
+      delay=$(awk -v b="${backoffs[$i]}" -v n="$n" 'BEGIN { d = b * 2 ^ n; if (d > 60) d = 60; print d }')
+      echo "launch: $name: respawning in $delay s (respawn $((n + 1)) of at most ${max_respawns[$i]})"
+      sleep "$delay" &
+      respawn_timer[$!]=$i ;;
+  esac
+}
+
+# ready_checked I STATUS: the readiness check of process I ended.
+ready_checked() {
+  local i=$1
+  if [ "$2" -eq 0 ]; then
+    ready[$i]=1
+    check_set_ready
+  elif [ $set_ready -eq 0 ]; then
+    echo "launch: ${names[$i]} did not become ready within $timeout s, stopping the set"
+    print_tail "${files[$i]}"
+    stop_set; exit 1
+  else
+    echo "launch: ${names[$i]} was respawned but is not ready within $timeout s; it keeps running"
+    print_tail "${files[$i]}"
+  fi
+}
+
+on_exit() { stop_set >/dev/null 2>&1 || true; }
+trap on_exit EXIT
+trap 'stop_request=SIGINT' INT
+trap 'stop_request=SIGTERM' TERM
+trap 'stop_request=SIGHUP' HUP  # the terminal closed
+
+for i in "${!names[@]}"; do start_process "$i"; done
+
+# One event loop: whichever child ends first (a set process, a readiness check, a back-off
+# timer) is handled; a signal interrupts the wait at once.
+while :; do
+  if [ -n "$stop_request" ]; then
+    echo "launch: $stop_request: stopping the set"
+    stop_set; exit 0
+  fi
+  who="" status=0
+  wait -n -p who 2>/dev/null || status=$?
+  [ -z "$stop_request" ] || continue
+  if [ -z "$who" ]; then
+    # No child left: every process ended under on-exit=ignore.
+    [ "$status" -eq 127 ] || continue
+    echo "launch: no process of the set is left"
+    stop_set; exit 0
+  fi
+  if [ -n "${index_of_pid[$who]:-}" ]; then
+    i=${index_of_pid[$who]}; unset "index_of_pid[$who]"
+    process_ended "$i" "$status" "$who"
+  elif [ -n "${respawn_timer[$who]:-}" ]; then
+    i=${respawn_timer[$who]}; unset "respawn_timer[$who]"
+    start_process "$i" respawn
+  elif [ -n "${ready_check[$who]:-}" ]; then
+    i=${ready_check[$who]}; unset "ready_check[$who]"
+    ready_checked "$i" "$status"
+  fi
 done
