@@ -6,14 +6,16 @@
 //      the robot and the part west of it; the schedule is West, South, East: one loop around the
 //      hallway starting towards the west. Stops at one location stay together.
 //   3. While the schedule has a conflict, one conflict is removed, the first one in stop order:
-//        - a delivery before its pickup: the delivery moves to a second loop (appended after the
-//          first, in loop order);
+//        - a delivery before its pickup: the delivery moves into the next loop after the
+//          pickup, at its place in loop order there;
 //        - a pickup while a look-alike object is aboard: the pickup moves to right after that
 //          object's delivery (the paper's two red letters: one job completely, then the other);
 //        - a pickup beyond capacity: it moves to right after the next delivery;
 //        - a missed deadline: the late job's delivery moves to right after its pickup, and if it is
 //          still late both move to the front; a move that does not reduce lateness is undone and
 //          the job is left late.
+// Conflicts still left after 8 rounds per stop (moves that undo each other) fall back to every
+// job completely, one after the other, in pickup order: never a look-alike or capacity conflict.
 // Several couriers (the paper has one robot): jobs aboard stay with their courier; the others go,
 // in job order, to the courier with the fewest jobs so far, ties to the one nearest the pickup.
 // Locations without a position keep their index order (x = index, all south).
@@ -159,7 +161,21 @@ class PaperEngine final : public SchedulerEngine {
     for (std::size_t round = 0; round < limit && !search.stopped(); ++round) {
       if (!remove_a_conflict(search, courier, placed, fixed, deadline_moves)) break;
     }
-    return stops_of(placed);
+    Objective cost;
+    if (search.route_cost(courier, stops_of(placed), cost)) return stops_of(placed);
+    // Conflicts left (moves that undo each other): every job completely, one after the other, in
+    // the order of the pickups, objects already aboard first. Always free of look-alike and
+    // capacity conflicts.
+    std::vector<StopRef> sequential(prefix.begin(), prefix.end());
+    for (std::size_t k = fixed; k < placed.size(); ++k)
+      if (placed[k].stop.kind == StopKind::kDelivery && search.delivery_only(placed[k].stop.job))
+        sequential.push_back(placed[k].stop);
+    for (std::size_t k = fixed; k < placed.size(); ++k)
+      if (placed[k].stop.kind == StopKind::kPickup) {
+        sequential.push_back(placed[k].stop);
+        sequential.push_back({placed[k].stop.job, StopKind::kDelivery});
+      }
+    return sequential;
   }
 
   // Removes the first conflict; false when there is none left (or none it can remove).
@@ -173,8 +189,17 @@ class PaperEngine final : public SchedulerEngine {
       if (stop.kind == StopKind::kDelivery && !s.carries(stop.job)) {
         if (k < fixed) return false;
         const int pick = index_of(placed, {stop.job, StopKind::kPickup});
-        placed[k].lap = (pick >= 0 ? placed[static_cast<std::size_t>(pick)].lap : 0) + 1;
-        sort_by_loop(placed, fixed);
+        if (pick < 0) return false;  // an object neither aboard nor picked up: not ours to fix
+        // Into the next loop after the pickup: past the pickup's own loop, in loop order there.
+        Placed moving = placed[k];
+        moving.lap = placed[static_cast<std::size_t>(pick)].lap + 1;
+        placed.erase(placed.begin() + static_cast<std::ptrdiff_t>(k));
+        std::size_t at = static_cast<std::size_t>(pick);  // the pickup moved up by one
+        while (at < placed.size() &&
+               (placed[at].lap < moving.lap ||
+                (placed[at].lap == moving.lap && placed[at].rank <= moving.rank)))
+          ++at;
+        placed.insert(placed.begin() + static_cast<std::ptrdiff_t>(at), moving);
         return true;
       }
       if (stop.kind == StopKind::kPickup && k >= fixed) {
