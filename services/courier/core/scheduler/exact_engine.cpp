@@ -26,6 +26,7 @@ namespace {
 
 constexpr int kMaxJobsPerCourier = 30;
 constexpr std::uint64_t kMaxAssignments = 1u << 14;
+constexpr int kIncumbentRounds = 20;  // ruin-and-recreate rounds without improvement
 
 // All-pairs shortest travel (the matrix may not obey the triangle inequality; bounds must).
 std::vector<double> shortest_travel(const SchedulingProblem& p) {
@@ -79,6 +80,33 @@ class CourierSearch {
       if (start_.carries(jobs_[i])) initially_picked_ |= 1u << i;
     all_ = jobs_.size() == 32 ? ~0u : (1u << jobs_.size()) - 1u;
     labels_.reserve(1 << 12);
+    // Places this search can be at: the start and the jobs' stops, with local ids for masks.
+    local_.assign(n_, -1);
+    auto add = [&](int loc) {
+      if (local_[static_cast<std::size_t>(loc)] < 0) {
+        local_[static_cast<std::size_t>(loc)] = static_cast<int>(places_.size());
+        places_.push_back(loc);
+      }
+    };
+    add(start_.loc);
+    for (int j : jobs_) {
+      const JobData& d = sim_.job(j);
+      if (!start_.carries(j)) add(d.pick_loc);
+      add(d.del_loc);
+    }
+    // Per place, the other places by travel time to it (nearest first).
+    nearest_.resize(places_.size());
+    for (std::size_t a = 0; a < places_.size(); ++a) {
+      for (std::size_t b = 0; b < places_.size(); ++b)
+        if (a != b) nearest_[a].push_back({sp(places_[b], places_[a]), static_cast<int>(b)});
+      std::sort(nearest_[a].begin(), nearest_[a].end());
+    }
+    masks_ok_ = places_.size() <= 64;
+    for (std::size_t i = 0; i < jobs_.size(); ++i) by_deadline_.push_back(static_cast<int>(i));
+    std::sort(by_deadline_.begin(), by_deadline_.end(), [&](int x, int y) {
+      return sim_.job(jobs_[static_cast<std::size_t>(x)]).deadline <
+             sim_.job(jobs_[static_cast<std::size_t>(y)]).deadline;
+    });
   }
 
   // Returns true when the search finished (the best found is optimal), false when the budget
@@ -99,39 +127,101 @@ class CourierSearch {
     return shortest_[static_cast<std::size_t>(a) * n_ + static_cast<std::size_t>(b)];
   }
 
-  // False when some job left cannot be finished at all from s.
+  // False when some job left cannot be finished at all from s. The bound combines, for the jobs
+  // left (r of them):
+  //   e_j  earliest completion of job j if it were done next, alone;
+  //   w_j  the time job j's remaining stops take at least: their handovers, plus the travel into
+  //        each place still to visit, charged to the first job with a stop there (none for the
+  //        place the courier stands at): from the nearest place the courier can come from (where
+  //        it is, or another place still to visit). Distinct places need distinct legs, so the
+  //        sum of w over any k jobs bounds the time those k take;
+  //   c_k  a lower bound on the k-th smallest completion: max(e_(k), t + the k smallest w_j
+  //        (those k jobs' stops are all done by then), c_(k-1) + the shortest delivery handover);
+  //   late jobs >= max(#{e_j > d_j}, jobs that cannot get an on-time slot among the c_k, matched
+  //        greedily by deadline: slots are prefixes, so greedy is exact);
+  //   lateness >= max(sum max(0, e_j - d_j), sum max(0, c_k - d_(k)) with deadlines sorted: the
+  //        sorted matching minimises a sum of a convex function of c - d);
+  //   completion >= sum (c_k - now).
   bool lower_bound(const RouteState& s, std::uint32_t picked, std::uint32_t delivered,
                    Objective& lb) {
     const SchedulingProblem& p = rs_.problem();
     lb = s.cost;
     double* e = earliest_;
+    double* work = handover_;
+    double* due = due_;
+    // Travel into each place still to visit, charged to one stop there (the first, in job
+    // order); the courier comes from its current place or another place still to visit. Nothing
+    // for stops where the courier stands now.
+    std::uint64_t active = 0;
+    const int here = local_[static_cast<std::size_t>(s.loc)];
+    if (masks_ok_) {
+      active |= 1ull << here;
+      for (std::size_t i = 0; i < jobs_.size(); ++i) {
+        if (delivered >> i & 1u) continue;
+        const JobData& d = sim_.job(jobs_[i]);
+        if (!(picked >> i & 1u)) active |= 1ull << local_[static_cast<std::size_t>(d.pick_loc)];
+        active |= 1ull << local_[static_cast<std::size_t>(d.del_loc)];
+      }
+    }
+    std::uint64_t charged = masks_ok_ ? 1ull << here : ~0ull;
+    auto inbound = [&](int loc) {
+      if (!masks_ok_) return 0.0;
+      const int a = local_[static_cast<std::size_t>(loc)];
+      if (charged >> a & 1ull) return 0.0;
+      charged |= 1ull << a;
+      for (const auto& [t, src] : nearest_[static_cast<std::size_t>(a)])
+        if (active >> src & 1ull) return t < kNoRoute ? t : 0.0;
+      return 0.0;
+    };
     int r = 0;
+    int late_alone = 0;
+    double lateness_alone = 0.0;
     for (std::size_t i = 0; i < jobs_.size(); ++i) {
       if (delivered >> i & 1u) continue;
       const JobData& d = sim_.job(jobs_[i]);
       double t = s.t;
       int loc = s.loc;
+      double handovers = d.del_dur;
       if (!(picked >> i & 1u)) {
-        t = earliest_handover_start(p, d.pick_person, t + sp(loc, d.pick_loc), d.pick_dur) +
-            d.pick_dur;
+        t = start_within(d.pick_windows, t + sp(loc, d.pick_loc), d.pick_dur) + d.pick_dur;
         loc = d.pick_loc;
+        handovers += d.pick_dur + inbound(d.pick_loc);
       }
-      t = earliest_handover_start(p, d.del_person, t + sp(loc, d.del_loc), d.del_dur) + d.del_dur;
+      handovers += inbound(d.del_loc);
+      t = start_within(d.del_windows, t + sp(loc, d.del_loc), d.del_dur) + d.del_dur;
       if (!(t < kNoRoute)) return false;
       if (t > d.deadline + 1e-9) {
-        ++lb.late_jobs;
-        lb.lateness_s += t - d.deadline;
+        ++late_alone;
+        lateness_alone += t - d.deadline;
       }
-      e[r++] = t;
+      e[r] = t;
+      work[r] = handovers;
+      ++r;
     }
+    int q = 0;
+    for (int i : by_deadline_)
+      if (!(delivered >> i & 1u)) due[q++] = sim_.job(jobs_[static_cast<std::size_t>(i)]).deadline;
     std::sort(e, e + r);
+    std::sort(work, work + r);
     double previous = -kNoRoute;
+    double busy = s.t;
     const double gap = sim_.min_delivery_duration();
+    double completion = 0.0, lateness_sorted = 0.0;
     for (int k = 0; k < r; ++k) {
-      const double c = std::max(e[k], previous + gap);
-      lb.completion_s += c - p.now_s;
+      busy += work[k];
+      const double c = std::max({e[k], busy, previous + gap});
+      slot_[k] = c;
+      completion += c - p.now_s;
+      if (c > due[k] + 1e-9) lateness_sorted += c - due[k];
       previous = c;
     }
+    // Greedy on-time matching: deadlines ascending, each takes the earliest free slot if on time.
+    int next_slot = 0, on_time = 0;
+    for (int k = 0; k < r; ++k)
+      if (next_slot < r && slot_[next_slot] <= due[k] + 1e-9) ++next_slot, ++on_time;
+    lb.late_jobs += std::max(late_alone, r - on_time);
+    lb.lateness_s += std::max(lateness_alone, lateness_sorted);
+    lb.completion_s += completion;
     return true;
   }
 
@@ -211,10 +301,12 @@ class CourierSearch {
       ++count;
     }
     // Earliest finish first: good routes early, so the incumbent tightens quickly.
-    std::sort(children, children + count,
-              [](const Child& a, const Child& b) { return a.state.t < b.state.t; });
+    int order[64];
+    for (int k = 0; k < count; ++k) order[k] = k;
+    std::sort(order, order + count,
+              [&](int a, int b) { return children[a].state.t < children[b].state.t; });
     for (int k = 0; k < count && !stopped_; ++k) {
-      const Child& c = children[k];
+      const Child& c = children[order[k]];
       path_.push_back(c.stop);
       const std::uint32_t bit = 1u << c.bit;
       if (c.stop.kind == StopKind::kPickup)
@@ -237,6 +329,14 @@ class CourierSearch {
   std::uint32_t initially_picked_ = 0;
   std::uint32_t all_ = 0;
   double earliest_[kMaxJobsPerCourier + 2] = {};
+  double handover_[kMaxJobsPerCourier + 2] = {};
+  std::vector<int> local_;   // location -> place id, -1 if not a place of this search
+  std::vector<int> places_;  // place id -> location
+  std::vector<std::vector<std::pair<double, int>>> nearest_;
+  bool masks_ok_ = true;  // at most 64 places (else no travel is charged)
+  std::vector<int> by_deadline_;
+  double due_[kMaxJobsPerCourier + 2] = {};
+  double slot_[kMaxJobsPerCourier + 2] = {};
   std::unordered_map<StateKey, std::vector<Label>, StateKeyHash> labels_;
   std::vector<StopRef> path_;
   std::vector<StopRef> best_route_;
@@ -269,13 +369,13 @@ class ExactEngine final : public SchedulerEngine {
                                  name(), rs.work());
       starts.push_back(s);
     }
-    // Incumbent: greedy dispatch and one descent (cheap; the search does the rest).
+    // Incumbent: the large engine's search, briefly (an optimal incumbent lets the bound cut at
+    // the first objective term; the search only has to prove it).
     Routes heuristic;
     std::vector<Objective> heuristic_costs;
     Objective heuristic_total;
-    bool have_heuristic =
-        rs.greedy(heuristic) && rs.total_cost(heuristic, heuristic_costs, heuristic_total);
-    if (have_heuristic) rs.descend(heuristic, heuristic_costs, -1);
+    bool have_heuristic = large_search(rs, heuristic, kIncumbentRounds) &&
+                          rs.total_cost(heuristic, heuristic_costs, heuristic_total);
     if (rs.stopped()) return give_up(problem, rs, have_heuristic ? &heuristic : nullptr, 0);
     const auto shortest = shortest_travel(problem);
 

@@ -39,6 +39,13 @@ RouteSimulator::RouteSimulator(const SchedulingProblem& problem) : p_(&problem) 
     d.del_dur = handover_duration(problem, job.delivery);
     min_del_dur_ = std::min(min_del_dur_, d.del_dur);
     d.deadline = job.deadline_s ? *job.deadline_s : kNoRoute;
+    auto windows = [&](int person) -> const std::vector<TimeWindow>* {
+      if (person < 0) return nullptr;
+      const auto& w = problem.people[static_cast<std::size_t>(person)].presence;
+      return w.empty() ? nullptr : &w;
+    };
+    if (!d.aboard) d.pick_windows = windows(d.pick_person);
+    d.del_windows = windows(d.del_person);
     d.cls = classes
                 .emplace(std::make_pair(job.object.kind, job.object.colour),
                          static_cast<int>(classes.size()))
@@ -82,11 +89,12 @@ bool RouteSimulator::advance(RouteState& s, StopRef stop, ScheduledStop* out) co
   const int loc = pickup ? d.pick_loc : d.del_loc;
   const int person = pickup ? d.pick_person : d.del_person;
   const double dur = pickup ? d.pick_dur : d.del_dur;
+  const auto* windows = pickup ? d.pick_windows : d.del_windows;
   const bool same_visit = s.visited && loc == s.loc;
   const double tt = travel(s.loc, loc);
   if (!(tt < kNoRoute)) return false;
   const double arrival = s.t + tt;
-  const double begin = earliest_handover_start(*p_, person, arrival, dur);
+  const double begin = start_within(windows, arrival, dur);
   if (!(begin < kNoRoute)) return false;
   const double finish = begin + dur;
   s.cost.travel_s += tt;
@@ -114,11 +122,11 @@ double RouteSimulator::earliest_completion(const RouteState& s, int j) const {
   int loc = s.loc;
   if (!s.carries(j)) {
     t += travel(loc, d.pick_loc);
-    t = earliest_handover_start(*p_, d.pick_person, t, d.pick_dur) + d.pick_dur;
+    t = start_within(d.pick_windows, t, d.pick_dur) + d.pick_dur;
     loc = d.pick_loc;
   }
   t += travel(loc, d.del_loc);
-  return earliest_handover_start(*p_, d.del_person, t, d.del_dur) + d.del_dur;
+  return start_within(d.del_windows, t, d.del_dur) + d.del_dur;
 }
 
 void collect_assumptions(const SchedulingProblem& problem, const CourierRoute& route,

@@ -22,10 +22,25 @@ struct JobData {
   double pick_dur = 0.0;
   double del_dur = 0.0;
   double deadline = kNoRoute;  // +inf = none
-  int cls = 0;                 // look-alike class id
-  int fixed_courier = -1;      // the courier it is aboard, or -1
+  // Presence windows of the person at each end; nullptr = always available (station, or a person
+  // without windows).
+  const std::vector<TimeWindow>* pick_windows = nullptr;
+  const std::vector<TimeWindow>* del_windows = nullptr;
+  int cls = 0;             // look-alike class id
+  int fixed_courier = -1;  // the courier it is aboard, or -1
   bool aboard = false;
 };
+
+// earliest_handover_start on flattened windows (the hot path of every engine).
+inline double start_within(const std::vector<TimeWindow>* windows, double arrival,
+                           double duration) {
+  if (!windows) return arrival;
+  for (const TimeWindow& w : *windows) {
+    const double begin = arrival > w.start_s ? arrival : w.start_s;
+    if (begin + duration <= w.end_s) return begin;
+  }
+  return kNoRoute;
+}
 
 struct RouteState {
   double t = 0.0;
