@@ -18,7 +18,6 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <unordered_map>
 
 namespace autonomy::courier::detail {
 
@@ -41,25 +40,82 @@ std::vector<double> shortest_travel(const SchedulingProblem& p) {
   return d;
 }
 
-struct Label {
-  double t;
-  Objective cost;
-};
+// Labels of expanded partial routes per state (picked, delivered, location): open addressing
+// with linear probing into chains of labels in one pool (no allocation per state).
+class LabelTable {
+ public:
+  LabelTable() : slots_(1u << 12) {}
 
-struct StateKey {
-  std::uint64_t masks;  // picked | delivered << 32
-  int loc;
-  bool operator==(const StateKey& o) const { return masks == o.masks && loc == o.loc; }
-};
+  // True when a stored label is no later and no worse than (t, cost); otherwise stores it, in the
+  // place of one it dominates if there is one (the others it dominates are disabled).
+  bool dominated_or_insert(std::uint64_t masks, int loc, double t, const Objective& cost) {
+    Slot& slot = find(masks, loc);
+    int reuse = -1;
+    for (int k = slot.head; k >= 0; k = pool_[static_cast<std::size_t>(k)].next) {
+      Node& n = pool_[static_cast<std::size_t>(k)];
+      if (n.t <= t + 1e-9 && compare(n.cost, cost) <= 0) return true;
+      if (t <= n.t + 1e-9 && compare(cost, n.cost) <= 0) {
+        if (reuse < 0) {
+          reuse = k;
+        } else {
+          n.t = kNoRoute;  // never dominates again
+        }
+      }
+    }
+    if (reuse >= 0) {
+      pool_[static_cast<std::size_t>(reuse)].t = t;
+      pool_[static_cast<std::size_t>(reuse)].cost = cost;
+      return false;
+    }
+    if (slot.head < 0 && slot.loc < 0) {
+      slot.masks = masks;
+      slot.loc = loc;
+      ++used_;
+    }
+    pool_.push_back({t, cost, slot.head});
+    slot.head = static_cast<int>(pool_.size() - 1);
+    if (2 * used_ > slots_.size()) grow();
+    return false;
+  }
 
-struct StateKeyHash {
-  std::size_t operator()(const StateKey& k) const {
-    std::uint64_t x = k.masks ^ (static_cast<std::uint64_t>(k.loc) * 0x9E3779B97F4A7C15ull);
+ private:
+  struct Slot {
+    std::uint64_t masks = 0;
+    int loc = -1;
+    int head = -1;
+  };
+  struct Node {
+    double t;
+    Objective cost;
+    int next;
+  };
+
+  static std::size_t hash(std::uint64_t masks, int loc) {
+    std::uint64_t x = masks ^ (static_cast<std::uint64_t>(loc) * 0x9E3779B97F4A7C15ull);
     x ^= x >> 31;
     x *= 0xBF58476D1CE4E5B9ull;
     x ^= x >> 29;
     return static_cast<std::size_t>(x);
   }
+
+  Slot& find(std::uint64_t masks, int loc) {
+    const std::size_t mask = slots_.size() - 1;
+    for (std::size_t i = hash(masks, loc) & mask;; i = (i + 1) & mask) {
+      Slot& s = slots_[i];
+      if (s.loc < 0 || (s.masks == masks && s.loc == loc)) return s;
+    }
+  }
+
+  void grow() {
+    std::vector<Slot> old = std::move(slots_);
+    slots_.assign(old.size() * 2, Slot{});
+    for (const Slot& s : old)
+      if (s.loc >= 0) find(s.masks, s.loc) = s;
+  }
+
+  std::vector<Slot> slots_;
+  std::vector<Node> pool_;
+  std::size_t used_ = 0;
 };
 
 // One courier, a given set of jobs, from the state after its forced prefix.
@@ -79,7 +135,6 @@ class CourierSearch {
     for (std::size_t i = 0; i < jobs_.size(); ++i)
       if (start_.carries(jobs_[i])) initially_picked_ |= 1u << i;
     all_ = jobs_.size() == 32 ? ~0u : (1u << jobs_.size()) - 1u;
-    labels_.reserve(1 << 12);
     // Places this search can be at: the start and the jobs' stops, with local ids for masks.
     local_.assign(n_, -1);
     auto add = [&](int loc) {
@@ -238,16 +293,8 @@ class CourierSearch {
 
   // True when an expanded label at this state is no later and no worse; else records this one.
   bool dominated(const RouteState& s, std::uint32_t picked, std::uint32_t delivered) {
-    auto& list = labels_[StateKey{picked | static_cast<std::uint64_t>(delivered) << 32, s.loc}];
-    for (const Label& l : list)
-      if (l.t <= s.t + 1e-9 && compare(l.cost, s.cost) <= 0) return true;
-    list.erase(std::remove_if(list.begin(), list.end(),
-                              [&](const Label& l) {
-                                return s.t <= l.t + 1e-9 && compare(s.cost, l.cost) <= 0;
-                              }),
-               list.end());
-    list.push_back({s.t, s.cost});
-    return false;
+    return labels_.dominated_or_insert(picked | static_cast<std::uint64_t>(delivered) << 32, s.loc,
+                                       s.t, s.cost);
   }
 
   void dfs(const RouteState& s, std::uint32_t picked, std::uint32_t delivered) {
@@ -337,7 +384,7 @@ class CourierSearch {
   std::vector<int> by_deadline_;
   double due_[kMaxJobsPerCourier + 2] = {};
   double slot_[kMaxJobsPerCourier + 2] = {};
-  std::unordered_map<StateKey, std::vector<Label>, StateKeyHash> labels_;
+  LabelTable labels_;
   std::vector<StopRef> path_;
   std::vector<StopRef> best_route_;
   Objective best_;

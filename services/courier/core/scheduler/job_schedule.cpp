@@ -2,16 +2,6 @@
 
 namespace autonomy::courier {
 
-namespace {
-constexpr double kTolerance = 1e-6;
-
-int compare_time(double a, double b) {
-  if (a < b - kTolerance) return -1;
-  if (a > b + kTolerance) return 1;
-  return 0;
-}
-}  // namespace
-
 Objective& Objective::operator+=(const Objective& o) {
   late_jobs += o.late_jobs;
   lateness_s += o.lateness_s;
@@ -19,15 +9,6 @@ Objective& Objective::operator+=(const Objective& o) {
   travel_s += o.travel_s;
   interruptions += o.interruptions;
   return *this;
-}
-
-int compare(const Objective& a, const Objective& b) {
-  if (a.late_jobs != b.late_jobs) return a.late_jobs < b.late_jobs ? -1 : 1;
-  if (int c = compare_time(a.lateness_s, b.lateness_s)) return c;
-  if (int c = compare_time(a.completion_s, b.completion_s)) return c;
-  if (int c = compare_time(a.travel_s, b.travel_s)) return c;
-  if (a.interruptions != b.interruptions) return a.interruptions < b.interruptions ? -1 : 1;
-  return 0;
 }
 
 Objective worst_objective() {

@@ -24,8 +24,20 @@ struct Objective {
   friend Objective operator+(Objective a, const Objective& b) { return a += b; }
 };
 
-// -1, 0, +1 as a is better than, equal to (within tolerance) or worse than b.
-int compare(const Objective& a, const Objective& b);
+// -1, 0, +1 as a is better than, equal to (within tolerance) or worse than b. Inline: the
+// engines' inner loops compare objectives millions of times.
+inline int compare(const Objective& a, const Objective& b) {
+  constexpr double kTolerance = 1e-6;
+  auto time = [](double x, double y) {
+    return x < y - kTolerance ? -1 : x > y + kTolerance ? 1 : 0;
+  };
+  if (a.late_jobs != b.late_jobs) return a.late_jobs < b.late_jobs ? -1 : 1;
+  if (int c = time(a.lateness_s, b.lateness_s)) return c;
+  if (int c = time(a.completion_s, b.completion_s)) return c;
+  if (int c = time(a.travel_s, b.travel_s)) return c;
+  if (a.interruptions != b.interruptions) return a.interruptions < b.interruptions ? -1 : 1;
+  return 0;
+}
 inline bool better(const Objective& a, const Objective& b) {
   return compare(a, b) < 0;
 }
