@@ -1,0 +1,42 @@
+#include "services/courier/core/scheduler/scheduler_engine.hpp"
+
+#include "services/courier/core/scheduler/route_search.hpp"
+
+namespace autonomy::courier {
+
+std::unique_ptr<SchedulerEngine> make_scheduler_engine(const std::string& name) {
+  if (name == "exact") return detail::make_exact_engine();
+  if (name == "large") return detail::make_large_engine();
+  if (name == "paper") return detail::make_paper_engine();
+  return nullptr;
+}
+
+std::vector<std::string> scheduler_engine_names() {
+  return {"exact", "large", "paper"};
+}
+
+OpportunityCheck check_opportunity(const SchedulingProblem& problem, int courier,
+                                   const std::vector<StopRef>& stops, SchedulerEngine& engine,
+                                   const SearchBudget& budget) {
+  OpportunityCheck out;
+  out.without_detour = engine.solve(problem, budget);
+  SchedulingProblem detour = problem;
+  if (courier >= 0 && static_cast<std::size_t>(courier) < detour.couriers.size()) {
+    auto& prefix = detour.couriers[static_cast<std::size_t>(courier)].forced_prefix;
+    prefix.insert(prefix.end(), stops.begin(), stops.end());
+  }
+  out.with_detour = engine.solve(detour, budget);
+  if (!out.without_detour.ok() || !out.with_detour.ok()) {
+    out.keeps_deadlines = out.with_detour.ok();
+    return out;
+  }
+  out.keeps_deadlines = true;
+  for (const JobOutcome& before : out.without_detour.outcomes) {
+    if (before.late) continue;
+    for (const JobOutcome& after : out.with_detour.outcomes)
+      if (after.job == before.job && after.late) out.keeps_deadlines = false;
+  }
+  return out;
+}
+
+}  // namespace autonomy::courier
