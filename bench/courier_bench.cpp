@@ -33,7 +33,7 @@
 
 namespace {
 
-using namespace autonomy::courier;
+using namespace autonomy::courier::scheduling;
 using Clock = std::chrono::steady_clock;
 
 double ms_since(Clock::time_point t0) {

@@ -21,7 +21,7 @@
 #include <sstream>
 
 int main(int argc, char** argv) {
-  using namespace autonomy::courier;
+  using namespace autonomy::courier::scheduling;
   CLI::App app{
       "Schedules courier jobs: reads a problem (JSON: couriers, jobs, a travel-time matrix or a\n"
       "map with places, presence windows, handover times), runs an engine and prints the\n"

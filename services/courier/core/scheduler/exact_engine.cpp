@@ -19,7 +19,7 @@
 #include <cmath>
 #include <map>
 
-namespace autonomy::courier::detail {
+namespace autonomy::courier::scheduling::detail {
 
 namespace {
 
@@ -546,4 +546,4 @@ std::unique_ptr<SchedulerEngine> make_exact_engine() {
   return std::make_unique<ExactEngine>();
 }
 
-}  // namespace autonomy::courier::detail
+}  // namespace autonomy::courier::scheduling::detail

@@ -1,6 +1,6 @@
 #include "services/courier/core/scheduler/job_schedule.hpp"
 
-namespace autonomy::courier {
+namespace autonomy::courier::scheduling {
 
 Objective& Objective::operator+=(const Objective& o) {
   late_jobs += o.late_jobs;
@@ -48,4 +48,4 @@ std::vector<std::vector<StopRef>> JobSchedule::order() const {
   return out;
 }
 
-}  // namespace autonomy::courier
+}  // namespace autonomy::courier::scheduling

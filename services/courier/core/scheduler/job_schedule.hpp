@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace autonomy::courier {
+namespace autonomy::courier::scheduling {
 
 // Lexicographic: late_jobs, then lateness_s, completion_s, travel_s, interruptions. Doubles are
 // compared with a 1e-6 s tolerance (sums of the same times in another order are equal).
@@ -115,4 +115,4 @@ struct [[nodiscard]] JobSchedule {
   std::vector<std::vector<StopRef>> order() const;
 };
 
-}  // namespace autonomy::courier
+}  // namespace autonomy::courier::scheduling

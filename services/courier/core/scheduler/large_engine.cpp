@@ -5,7 +5,7 @@
 
 #include <algorithm>
 
-namespace autonomy::courier::detail {
+namespace autonomy::courier::scheduling::detail {
 
 namespace {
 
@@ -113,4 +113,4 @@ std::unique_ptr<SchedulerEngine> make_large_engine() {
   return std::make_unique<LargeEngine>();
 }
 
-}  // namespace autonomy::courier::detail
+}  // namespace autonomy::courier::scheduling::detail

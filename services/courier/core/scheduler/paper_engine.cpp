@@ -24,7 +24,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace autonomy::courier::detail {
+namespace autonomy::courier::scheduling::detail {
 
 namespace {
 
@@ -293,4 +293,4 @@ std::unique_ptr<SchedulerEngine> make_paper_engine() {
   return std::make_unique<PaperEngine>();
 }
 
-}  // namespace autonomy::courier::detail
+}  // namespace autonomy::courier::scheduling::detail

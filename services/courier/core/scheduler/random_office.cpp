@@ -4,7 +4,7 @@
 #include <random>
 #include <string>
 
-namespace autonomy::courier {
+namespace autonomy::courier::scheduling {
 
 namespace {
 
@@ -114,4 +114,4 @@ SchedulingProblem random_office(const OfficeSpec& spec) {
   return p;
 }
 
-}  // namespace autonomy::courier
+}  // namespace autonomy::courier::scheduling

@@ -12,7 +12,7 @@
 
 #include <cstdint>
 
-namespace autonomy::courier {
+namespace autonomy::courier::scheduling {
 
 struct OfficeSpec {
   int jobs = 12;
@@ -30,4 +30,4 @@ struct OfficeSpec {
 
 SchedulingProblem random_office(const OfficeSpec& spec);
 
-}  // namespace autonomy::courier
+}  // namespace autonomy::courier::scheduling

@@ -4,7 +4,7 @@
 
 #include <unordered_map>
 
-namespace autonomy::courier {
+namespace autonomy::courier::scheduling {
 
 namespace {
 
@@ -103,4 +103,4 @@ ReferenceDpResult reference_dp(const SchedulingProblem& problem, int courier) {
   return out;
 }
 
-}  // namespace autonomy::courier
+}  // namespace autonomy::courier::scheduling

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace autonomy::courier {
+namespace autonomy::courier::scheduling {
 
 struct ReferenceDpResult {
   bool feasible = false;
@@ -23,4 +23,4 @@ struct ReferenceDpResult {
 // feasible).
 ReferenceDpResult reference_dp(const SchedulingProblem& problem, int courier = 0);
 
-}  // namespace autonomy::courier
+}  // namespace autonomy::courier::scheduling

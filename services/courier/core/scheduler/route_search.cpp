@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <numeric>
 
-namespace autonomy::courier::detail {
+namespace autonomy::courier::scheduling::detail {
 
 namespace {
 
@@ -447,4 +447,4 @@ JobSchedule failed_schedule(const SchedulingProblem& problem, ScheduleStatus sta
   return s;
 }
 
-}  // namespace autonomy::courier::detail
+}  // namespace autonomy::courier::scheduling::detail

@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-namespace autonomy::courier::detail {
+namespace autonomy::courier::scheduling::detail {
 
 using Routes = std::vector<std::vector<StopRef>>;
 
@@ -107,4 +107,4 @@ std::unique_ptr<SchedulerEngine> make_paper_engine();
 // The large engine's search, for engines that want a good first incumbent.
 bool large_search(RouteSearch& search, Routes& routes, int stale_limit);
 
-}  // namespace autonomy::courier::detail
+}  // namespace autonomy::courier::scheduling::detail

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <map>
 
-namespace autonomy::courier::detail {
+namespace autonomy::courier::scheduling::detail {
 
 bool RouteState::carries(int job) const {
   for (int i = 0; i < load; ++i)
@@ -145,4 +145,4 @@ void collect_assumptions(const SchedulingProblem& problem, const CourierRoute& r
   }
 }
 
-}  // namespace autonomy::courier::detail
+}  // namespace autonomy::courier::scheduling::detail

@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace autonomy::courier::detail {
+namespace autonomy::courier::scheduling::detail {
 
 // Couriers carry at most this many objects (problem_error enforces it): the aboard set is inline.
 constexpr int kMaxCapacity = 16;
@@ -95,4 +95,4 @@ class RouteSimulator {
 void collect_assumptions(const SchedulingProblem& problem, const CourierRoute& route,
                          std::vector<RoomAssumption>& out);
 
-}  // namespace autonomy::courier::detail
+}  // namespace autonomy::courier::scheduling::detail

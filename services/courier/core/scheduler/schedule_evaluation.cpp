@@ -4,7 +4,7 @@
 
 #include <string>
 
-namespace autonomy::courier {
+namespace autonomy::courier::scheduling {
 
 namespace {
 
@@ -187,4 +187,4 @@ JobSchedule evaluate_order(const SchedulingProblem& p,
   return out;
 }
 
-}  // namespace autonomy::courier
+}  // namespace autonomy::courier::scheduling

@@ -6,7 +6,7 @@
 
 #include <vector>
 
-namespace autonomy::courier {
+namespace autonomy::courier::scheduling {
 
 // Jobs no schedule can contain, in job order: pickup or delivery unreachable from every courier
 // that could do the job (+inf travel; a job aboard can only be done by its courier), or a person
@@ -23,4 +23,4 @@ std::vector<UnschedulableJob> find_unschedulable(const SchedulingProblem& proble
 JobSchedule evaluate_order(const SchedulingProblem& problem,
                            const std::vector<std::vector<StopRef>>& order);
 
-}  // namespace autonomy::courier
+}  // namespace autonomy::courier::scheduling

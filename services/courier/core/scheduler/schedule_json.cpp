@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <map>
 
-namespace autonomy::courier {
+namespace autonomy::courier::scheduling {
 
 namespace {
 
@@ -483,4 +483,4 @@ nlohmann::json schedule_to_json(const SchedulingProblem& p, const JobSchedule& s
   return out;
 }
 
-}  // namespace autonomy::courier
+}  // namespace autonomy::courier::scheduling

@@ -11,7 +11,7 @@
 #include <optional>
 #include <string>
 
-namespace autonomy::courier {
+namespace autonomy::courier::scheduling {
 
 struct [[nodiscard]] ParsedProblem {
   SchedulingProblem problem;
@@ -33,4 +33,4 @@ std::optional<double> parse_time_of_day(const std::string& text);
 // Seconds of the day to "HH:MM:SS" (rounded to the second; past midnight "+1d" is appended).
 std::string format_time_of_day(double seconds);
 
-}  // namespace autonomy::courier
+}  // namespace autonomy::courier::scheduling

@@ -2,7 +2,7 @@
 
 #include "services/courier/core/scheduler/route_search.hpp"
 
-namespace autonomy::courier {
+namespace autonomy::courier::scheduling {
 
 std::unique_ptr<SchedulerEngine> make_scheduler_engine(const std::string& name) {
   if (name == "exact") return detail::make_exact_engine();
@@ -39,4 +39,4 @@ OpportunityCheck check_opportunity(const SchedulingProblem& problem, int courier
   return out;
 }
 
-}  // namespace autonomy::courier
+}  // namespace autonomy::courier::scheduling

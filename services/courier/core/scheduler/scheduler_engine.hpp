@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-namespace autonomy::courier {
+namespace autonomy::courier::scheduling {
 
 struct SearchBudget {
   std::uint64_t max_work = std::numeric_limits<std::uint64_t>::max();
@@ -56,4 +56,4 @@ OpportunityCheck check_opportunity(const SchedulingProblem& problem, int courier
                                    const std::vector<StopRef>& stops, SchedulerEngine& engine,
                                    const SearchBudget& budget);
 
-}  // namespace autonomy::courier
+}  // namespace autonomy::courier::scheduling

@@ -4,7 +4,7 @@
 #include <set>
 #include <string>
 
-namespace autonomy::courier {
+namespace autonomy::courier::scheduling {
 
 TravelMatrix::TravelMatrix(std::size_t locations, double fill)
     : n_(locations), s_(locations * locations, fill) {
@@ -164,4 +164,4 @@ std::string describe_place(const SchedulingProblem& p, const Place& place) {
   return p.people[static_cast<std::size_t>(place.person)].name + " at " + where;
 }
 
-}  // namespace autonomy::courier
+}  // namespace autonomy::courier::scheduling

@@ -33,7 +33,7 @@
 #include <string>
 #include <vector>
 
-namespace autonomy::courier {
+namespace autonomy::courier::scheduling {
 
 constexpr double kNoRoute = std::numeric_limits<double>::infinity();
 
@@ -147,4 +147,4 @@ double handover_duration(const SchedulingProblem& problem, const Place& place);
 // Who hands over at a place, for messages: the person's name or the location's name.
 std::string describe_place(const SchedulingProblem& problem, const Place& place);
 
-}  // namespace autonomy::courier
+}  // namespace autonomy::courier::scheduling

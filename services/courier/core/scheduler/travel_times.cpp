@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-namespace autonomy::courier {
+namespace autonomy::courier::scheduling {
 
 std::optional<grid::Cell> cell_at(const grid::OccupancyRaster& raster, const MapPosition& p) {
   if (!std::isfinite(p.x_m) || !std::isfinite(p.y_m)) return std::nullopt;
@@ -62,4 +62,4 @@ TravelTimesResult travel_times_from_map(const grid::OccupancyRaster& raster,
   return out;
 }
 
-}  // namespace autonomy::courier
+}  // namespace autonomy::courier::scheduling

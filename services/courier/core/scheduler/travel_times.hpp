@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace autonomy::courier {
+namespace autonomy::courier::scheduling {
 
 struct MapPosition {
   double x_m = 0.0;  // map frame, as the raster's origin
@@ -34,4 +34,4 @@ TravelTimesResult travel_times_from_map(const grid::OccupancyRaster& raster,
                                         const std::vector<MapPosition>& places, double speed_mps,
                                         const std::vector<grid::Cell>& blocked = {});
 
-}  // namespace autonomy::courier
+}  // namespace autonomy::courier::scheduling

@@ -5,7 +5,7 @@
 
 #include <chrono>
 
-namespace autonomy::courier {
+namespace autonomy::courier::scheduling {
 
 inline SearchBudget wall_clock_budget(std::chrono::microseconds limit, std::uint64_t seed = 1) {
   SearchBudget budget;
@@ -15,4 +15,4 @@ inline SearchBudget wall_clock_budget(std::chrono::microseconds limit, std::uint
   return budget;
 }
 
-}  // namespace autonomy::courier
+}  // namespace autonomy::courier::scheduling

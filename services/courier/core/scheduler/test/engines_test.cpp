@@ -12,7 +12,7 @@
 #include <cstdio>
 #include <vector>
 
-namespace autonomy::courier {
+namespace autonomy::courier::scheduling {
 namespace {
 
 using test::D;
@@ -470,4 +470,4 @@ TEST(LargeEngine, ReschedulesFromThePreviousOrderAfterADoorCloses) {
 }
 
 }  // namespace
-}  // namespace autonomy::courier
+}  // namespace autonomy::courier::scheduling

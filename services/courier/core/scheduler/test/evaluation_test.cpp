@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-namespace autonomy::courier {
+namespace autonomy::courier::scheduling {
 namespace {
 
 using test::D;
@@ -165,4 +165,4 @@ TEST(ProblemError, NamesTheField) {
 }
 
 }  // namespace
-}  // namespace autonomy::courier
+}  // namespace autonomy::courier::scheduling

@@ -11,7 +11,7 @@
 
 #include <unistd.h>
 
-namespace autonomy::courier {
+namespace autonomy::courier::scheduling {
 namespace {
 
 using nlohmann::json;
@@ -162,4 +162,4 @@ TEST(TimeOfDay, ParseAndFormat) {
 }
 
 }  // namespace
-}  // namespace autonomy::courier
+}  // namespace autonomy::courier::scheduling

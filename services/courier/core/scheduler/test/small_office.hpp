@@ -8,7 +8,7 @@
 
 #include <string>
 
-namespace autonomy::courier::test {
+namespace autonomy::courier::scheduling::test {
 
 inline SchedulingProblem small_office(int capacity = 2) {
   SchedulingProblem p;
@@ -51,4 +51,4 @@ constexpr StopRef D(int j) {
   return {j, StopKind::kDelivery};
 }
 
-}  // namespace autonomy::courier::test
+}  // namespace autonomy::courier::scheduling::test

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-namespace autonomy::courier {
+namespace autonomy::courier::scheduling {
 namespace {
 
 // 20 x 10 cells of 0.5 m; a wall at col 10 except the door cell (10, 5).
@@ -64,4 +64,4 @@ TEST(TravelTimes, RotatedOriginIsHonoured) {
 }
 
 }  // namespace
-}  // namespace autonomy::courier
+}  // namespace autonomy::courier::scheduling
