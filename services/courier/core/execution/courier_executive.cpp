@@ -321,7 +321,9 @@ void CourierExecutive::finish(Job& job, JobState state, const std::string& reaso
 PlanRequest CourierExecutive::request_for(double now_s, const std::vector<std::string>& extra_jobs) const {
   PlanRequest req;
   req.now_s = now_s;
-  for (const auto& [id, r] : robots_) req.robots.push_back({id, r.x, r.y, r.capacity});
+  // A robot whose pose has not arrived yet cannot be planned for (it would seem to stand at 0, 0).
+  for (const auto& [id, r] : robots_)
+    if (r.pose_known) req.robots.push_back({id, r.x, r.y, r.capacity});
   for (const auto& [id, door] : doors_.doors())
     if (!door.open) req.closed_doors.insert(id);
   for (const auto& [id, job] : jobs_) {
@@ -513,13 +515,22 @@ void CourierExecutive::idle_policy(Robot& robot, double now_s) {
 }
 
 Orders CourierExecutive::step(double now_s) {
+  // Nothing can be planned before any robot is known to be somewhere; events wait for that.
+  const bool located = std::any_of(robots_.begin(), robots_.end(), [](const auto& r) { return r.second.pose_known; });
+  if (!located) {
+    Orders out = std::move(orders_);
+    orders_ = Orders{};
+    return out;
+  }
   if (opportunity_pending_) opportunity_check(now_s);
   if (reschedule_needed_) reschedule(now_s);
-  for (auto& [id, r] : robots_) dispatch(r, now_s);
+  for (auto& [id, r] : robots_)
+    if (r.pose_known) dispatch(r, now_s);
   // The idle policy may have turned jobs into returns: plan and start them in this same tick.
   if (reschedule_needed_) {
     reschedule(now_s);
-    for (auto& [id, r] : robots_) dispatch(r, now_s);
+    for (auto& [id, r] : robots_)
+      if (r.pose_known) dispatch(r, now_s);
   }
   Orders out = std::move(orders_);
   orders_ = Orders{};

@@ -305,6 +305,22 @@ TEST_F(ExecutiveTest, BlockedGoalNamingAClosedDoorIsTakenAsASighting) {
   EXPECT_EQ(goal_place(), "meeting-table");
 }
 
+TEST(Executive, NothingIsPlannedBeforeARobotsPoseIsKnown) {
+  const Floor floor = paper_floor();
+  InOrderScheduler scheduler(floor);
+  CourierExecutive exec(floor, scheduler);
+  exec.add_robot("rhino", 3);
+  exec.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), 0.0);
+  Orders o = exec.step(1.0);
+  EXPECT_TRUE(o.goals.empty());
+  EXPECT_EQ(scheduler.calls, 0);
+  EXPECT_EQ(exec.job("j1")->state, JobState::queued);
+  exec.on_pose("rhino", 1.5, 8.0);
+  o = exec.step(2.0);
+  ASSERT_EQ(o.goals.size(), 1u);
+  EXPECT_EQ(scheduler.calls, 1);
+}
+
 TEST_F(ExecutiveTest, RestoredJobAboardGoesOnToItsDestination) {
   Job j = delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk");
   j.state = JobState::underway;
