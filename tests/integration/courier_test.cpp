@@ -4,8 +4,9 @@
 // the robot fetches the green book (Fig. 5), or closing for good (Fig. 7); two red letters; and a
 // courier killed with SIGKILL mid-delivery that restarts from its journal.
 //
-// The door is the world's hand here: the test watches the objects' ground truth and commands
-// A-120 at the moments the paper describes, so the figures do not depend on how fast rhino drives.
+// The world holds tick 0 until the test's own lockstep registration ("test/commands") arrives,
+// and the test leaves lockstep only once both commands are accepted: every run starts with the
+// jobs known at simulated time 0, so A-120's scripted times fall where the paper has them.
 //
 // One DDS domain per test (ctest runs them in parallel); this file uses 160-169 only:
 //
@@ -29,19 +30,21 @@ namespace {
 using namespace std::chrono_literals;
 
 constexpr char kRedLetter[] =
-    "put the red letter on the meeting table in room A-111 on the desk in room A-120 within 3 minutes";
+    "put the red letter on the meeting table in room A-111 on the desk in room A-120 within 1 minute";
 constexpr char kGreenBook[] = "deliver the green book from the librarian's desk in room A-110 to the desk in room A-114";
 
-// The shipped office floor without A-120's timed script (the tests move that door themselves),
-// its day starting at 09:00, when everybody the commands name is in.
-std::string office_scenario(const std::string& extra = "") {
+// A-120's door in the shipped office floor: closes at 15 s (just after the red letter is loaded),
+// opens at 40 s (while the green book is fetched): the paper's Fig. 5.
+const std::string kFig5Script =
+    "  script {\n    events { time_s: 15 angle: 0.0000000 }\n    events { time_s: 40 angle: 1.5707963 }\n  }\n";
+const std::string kFig7Script = "  script {\n    events { time_s: 15 angle: 0.0000000 }\n  }\n";
+
+// The shipped office floor with A-120's script replaced by `a120_script` ("" = the door stays
+// open), and `extra` appended.
+std::string office_scenario(const std::string& a120_script, const std::string& extra = "") {
   std::string text = read_file(std::string(AUTONOMY_SOURCE_DIR) + "/deploy/scenarios/office.pbtxt");
-  const std::string day_start = "day_start: \"08:30\"";
-  if (const auto at = text.find(day_start); at != std::string::npos) text.replace(at, day_start.size(), "day_start: \"09:00\"");
-  const std::string script =
-      "  script {\n    events { time_s: 60 angle: 0.0000000 }\n    events { time_s: 240 angle: 1.5707963 }\n  }\n";
-  const auto at = text.find(script);
-  if (at != std::string::npos) text.erase(at, script.size());
+  const auto at = text.find(kFig5Script);
+  if (at != std::string::npos) text.replace(at, kFig5Script.size(), a120_script);
   return text + extra;
 }
 
@@ -52,7 +55,7 @@ class CourierTest : public ProcessTest {
     write_file(scenario_, scenario_text);
     journal_ = dir().file("courier.db");
     start_simulator({"--config", scenario_, "--mode", "lockstep", "--wait-for", "behavior/rhino", "--wait-for",
-                     "courier/main"});
+                     "courier/main", "--wait-for", "test/commands"});
     behavior_ = &start_behavior("rhino", {"--config", scenario_});
     courier_ = &start_courier();
   }
@@ -69,17 +72,20 @@ class CourierTest : public ProcessTest {
     c.text = text;
     command_writer_->write(c);
   }
-  void set_door(double angle) { door_writer_->write({"A-120", angle, "test"}); }
+  // The world waits at tick 0 while the test is a lockstep participant that never acknowledges.
+  void hold_world() { registration_writer_->write({"test/commands", true}); }
+  void release_world() { registration_writer_->write({"test/commands", false}); }
   void poll() {
     objects_->poll();
     jobs_->poll();
     replies_->poll();
     reports_->poll();
   }
-  // The tick at which `object` was first seen as `where` (carried by rhino, or lying at a place).
-  std::optional<int64_t> object_tick(const std::string& object, const std::string& carrier, const std::string& place) {
+  // The first tick after `after` at which `object` was seen as `where` (carried, or at a place).
+  std::optional<int64_t> object_tick(const std::string& object, const std::string& carrier, const std::string& place,
+                                     int64_t after = 0) {
     for (const auto& o : objects_->all())
-      if (o.object_id == object && o.carrier == carrier && o.place == place) return o.tick;
+      if (o.object_id == object && o.carrier == carrier && o.place == place && o.tick > after) return o.tick;
     return std::nullopt;
   }
   std::optional<msg::CourierJobStatus> job_in(const std::string& job, msg::JobState state) {
@@ -108,8 +114,9 @@ class CourierTest : public ProcessTest {
     reports_.emplace(participant(), dds::topics::courier_report);
     command_topic_.emplace(participant(), dds::topics::courier_command);
     command_writer_.emplace(participant(), *command_topic_);
-    door_topic_.emplace(participant(), dds::topics::door_command);
-    door_writer_.emplace(participant(), *door_topic_);
+    registration_topic_.emplace(participant(), dds::topics::lockstep_registration);
+    registration_writer_.emplace(participant(), *registration_topic_);
+    hold_world();
   }
   // Both paper commands accepted as job-1 (red letter) and job-2 (green book).
   void send_paper_commands() {
@@ -121,6 +128,7 @@ class CourierTest : public ProcessTest {
       return replies_->all().size() >= 2;
     }));
     for (const auto& r : replies_->all()) ASSERT_TRUE(r.accepted) << r.command_id << ": " << r.reason << " " << r.detail;
+    release_world();
   }
 
   std::string scenario_, journal_;
@@ -133,15 +141,15 @@ class CourierTest : public ProcessTest {
   std::optional<Recorder<msg::CourierReport>> reports_;
   std::optional<dds::Topic<msg::CourierCommand>> command_topic_;
   std::optional<dds::Writer<msg::CourierCommand>> command_writer_;
-  std::optional<dds::Topic<msg::DoorCommand>> door_topic_;
-  std::optional<dds::Writer<msg::DoorCommand>> door_writer_;
+  std::optional<dds::Topic<msg::LockstepRegistration>> registration_topic_;
+  std::optional<dds::Writer<msg::LockstepRegistration>> registration_writer_;
 };
 
 constexpr auto kRun = 120s;
 
 TEST_F(CourierTest, Fig6DoorStaysOpenBothDelivered) {
   setup_observers(160);
-  start_world(office_scenario());
+  start_world(office_scenario(""));
   send_paper_commands();
   ASSERT_TRUE(await("both jobs finished", [&] {
     poll();
@@ -162,18 +170,8 @@ TEST_F(CourierTest, Fig6DoorStaysOpenBothDelivered) {
 
 TEST_F(CourierTest, Fig5DoorClosesThenReopensTheRedLetterIsDeliveredOpportunistically) {
   setup_observers(161);
-  start_world(office_scenario());
+  start_world(office_scenario(kFig5Script));
   send_paper_commands();
-  ASSERT_TRUE(await("the red letter loaded", [&] {
-    poll();
-    return object_tick("letter-red", "rhino", "").has_value();
-  }, kRun));
-  set_door(0.0);  // "At this moment the door of A-120 is closed."
-  ASSERT_TRUE(await("the green book loaded", [&] {
-    poll();
-    return object_tick("book-green", "rhino", "").has_value();
-  }, kRun)) << job_story("job-1") << "\n" << job_story("job-2");
-  set_door(1.5707963);  // "At this moment room A-120 is opened again."
   ASSERT_TRUE(await("both jobs finished", [&] {
     poll();
     return finished("job-1") && finished("job-2");
@@ -198,13 +196,8 @@ TEST_F(CourierTest, Fig5DoorClosesThenReopensTheRedLetterIsDeliveredOpportunisti
 
 TEST_F(CourierTest, Fig7DoorStaysClosedTheRedLetterFailsAndIsReturned) {
   setup_observers(162);
-  start_world(office_scenario());
+  start_world(office_scenario(kFig7Script));
   send_paper_commands();
-  ASSERT_TRUE(await("the red letter loaded", [&] {
-    poll();
-    return object_tick("letter-red", "rhino", "").has_value();
-  }, kRun));
-  set_door(0.0);
   ASSERT_TRUE(await("both jobs finished", [&] {
     poll();
     return finished("job-1") && finished("job-2");
@@ -215,7 +208,9 @@ TEST_F(CourierTest, Fig7DoorStaysClosedTheRedLetterFailsAndIsReturned) {
   EXPECT_NE(failed->reason.find("letter-red returned to meeting-table"), std::string::npos) << failed->reason;
   EXPECT_TRUE(job_in("job-2", msg::JobState::Completed)) << job_story("job-2");
   // Not dropped: back where it came from, after the green book's delivery.
-  const auto returned = object_tick("letter-red", "", "meeting-table");
+  const auto loaded = object_tick("letter-red", "rhino", "");
+  ASSERT_TRUE(loaded);
+  const auto returned = object_tick("letter-red", "", "meeting-table", *loaded);
   const auto green_delivered = object_tick("book-green", "", "a114-desk");
   ASSERT_TRUE(returned && green_delivered);
   EXPECT_LT(*green_delivered, *returned);
@@ -224,7 +219,7 @@ TEST_F(CourierTest, Fig7DoorStaysClosedTheRedLetterFailsAndIsReturned) {
 
 TEST_F(CourierTest, TwoRedLettersAreNeverAboardTogether) {
   setup_observers(163);
-  start_world(office_scenario("objects { id: \"letter-red-2\" kind: \"letter\" colour: \"red\" place: \"librarian-desk\" }\n"));
+  start_world(office_scenario("", "objects { id: \"letter-red-2\" kind: \"letter\" colour: \"red\" place: \"librarian-desk\" }\n"));
   ASSERT_TRUE(await_ready(*beats_, *courier_));
   ASSERT_TRUE(command_writer_->wait_for_readers(1, kDeadline));
   msg::CourierCommand a;
@@ -240,6 +235,11 @@ TEST_F(CourierTest, TwoRedLettersAreNeverAboardTogether) {
   b.from = "librarian";
   b.to = "Michael";
   command_writer_->write(b);
+  ASSERT_TRUE(await("both commands answered", [&] {
+    poll();
+    return replies_->all().size() >= 2;
+  }));
+  release_world();
   ASSERT_TRUE(await("both jobs finished", [&] {
     poll();
     return finished("job-1") && finished("job-2");
@@ -258,7 +258,7 @@ TEST_F(CourierTest, TwoRedLettersAreNeverAboardTogether) {
 
 TEST_F(CourierTest, KilledMidDeliveryTheRestartedCourierFinishesFromItsJournal) {
   setup_observers(164);
-  start_world(office_scenario());
+  start_world(office_scenario(""));
   send_paper_commands();
   ASSERT_TRUE(await("the red letter loaded", [&] {
     poll();
@@ -285,7 +285,8 @@ TEST_F(CourierTest, KilledMidDeliveryTheRestartedCourierFinishesFromItsJournal) 
 
 TEST_F(CourierTest, BadCommandsAreRejectedWithReasonsAndTheServiceGoesOn) {
   setup_observers(165);
-  start_world(office_scenario());
+  start_world(office_scenario(""));
+  release_world();
   ASSERT_TRUE(await_ready(*beats_, *courier_));
   send("x1", "deliver the green book from the librarian to room A-122");
   send("x2", std::string(5000, 'z'));

@@ -54,7 +54,7 @@ PEOPLE = {"librarian-desk": "the librarian", "michael-desk": "Michael", "a114-de
           "a112-desk": "Jan", "a118-desk": "Wolfram", "a121-desk": "Sebastian"}
 
 # Door schedules: A-120 closes and reopens as in the paper's run; A-116 and A-113 at random.
-SCRIPTS = {"A-120": [(60.0, 0.0), (240.0, math.pi / 2)]}
+SCRIPTS = {"A-120": [(15.0, 0.0), (40.0, math.pi / 2)]}
 RANDOM = {"A-116": (1 / 300, 1 / 120), "A-113": (1 / 600, 1 / 300)}
 
 

@@ -94,8 +94,8 @@ TEST(ShippedScenarios, OfficeFloorHasTheCourierPapersRoomsDoorsAndPlaces) {
   ASSERT_EQ(s.office->stations.size(), 2u);
   EXPECT_EQ(s.office->stations[0].place, "mail-tray");
   const office::OfficeState office(*s.office);
-  EXPECT_EQ(office.people_present("michael-desk", 0.0), std::vector<std::string>{});  // 08:30
-  EXPECT_EQ(office.people_present("michael-desk", 1800.0), std::vector<std::string>{"Michael"});  // 09:00
+  EXPECT_EQ(office.people_present("michael-desk", 0.0), std::vector<std::string>{"Michael"});  // 09:00
+  EXPECT_EQ(office.people_present("michael-desk", 12600.0), std::vector<std::string>{});  // 12:30, lunch
   EXPECT_TRUE(office.object("book-green")->location.is_at("librarian-desk"));
   EXPECT_EQ(office.place("michael-desk")->room, "A-120");
   // Every door is reachable through its doorway from the hallway: sight from the hallway centre
