@@ -26,6 +26,8 @@ namespace autonomy::courier::detail {
 namespace {
 
 constexpr int kMaxJobsPerCourier = 30;
+// Partial routes kept at most (about 160 bytes each): beyond, the search gives up, not proved.
+constexpr std::size_t kMaxLabels = 1u << 19;
 constexpr std::uint64_t kMaxAssignments = 1u << 14;
 constexpr int kIncumbentRounds = 5;  // ruin-and-recreate rounds without improvement
 
@@ -100,6 +102,7 @@ class CourierSearch {
   const Objective& best() const { return best_; }
   const std::vector<StopRef>& best_route() const { return best_route_; }
   std::uint64_t nodes() const { return nodes_; }
+  bool out_of_memory() const { return out_of_memory_; }
 
  private:
   double sp(int a, int b) const {
@@ -328,6 +331,10 @@ class CourierSearch {
           }
           if (dominated) continue;
           child.next = slot.head;
+          if (arena.size() >= kMaxLabels) {
+            stopped_ = out_of_memory_ = true;
+            break;
+          }
           arena.push_back(child);
           slot.head = static_cast<int>(arena.size() - 1);
           next.push_back(slot.head);
@@ -381,6 +388,7 @@ class CourierSearch {
   Objective best_;
   bool found_ = false;
   bool stopped_ = false;
+  bool out_of_memory_ = false;
   std::uint64_t nodes_ = 0;
 };
 
@@ -431,6 +439,7 @@ class ExactEngine final : public SchedulerEngine {
 
     std::uint64_t nodes = 0;
     bool complete = true;
+    const char* why = "the budget ran out";
     struct Solved {
       bool feasible = false;
       Objective cost;
@@ -446,6 +455,7 @@ class ExactEngine final : public SchedulerEngine {
       Solved solved;
       if (jobs.size() > static_cast<std::size_t>(kMaxJobsPerCourier)) {
         complete = false;
+        why = "more than 30 jobs for one courier";
         return memo[{c, subset}] = solved;
       }
       std::sort(jobs.begin(), jobs.end());
@@ -465,6 +475,7 @@ class ExactEngine final : public SchedulerEngine {
       const bool finished = search.run(use_heuristic ? heuristic_costs[c] : worst_objective(),
                                        use_heuristic ? &tail : nullptr);
       complete = complete && finished;
+      if (search.out_of_memory()) why = "more than 2^19 partial routes to keep";
       nodes += search.nodes();
       solved.feasible = search.found();
       solved.cost = search.best();
@@ -503,9 +514,9 @@ class ExactEngine final : public SchedulerEngine {
       if (couriers == 1 && it != memo.end() && it->second.feasible) {
         Routes partial(1, problem.couriers[0].forced_prefix);
         partial[0].insert(partial[0].end(), it->second.route.begin(), it->second.route.end());
-        return give_up(problem, rs, &partial, nodes);
+        return give_up(problem, rs, &partial, nodes, why);
       }
-      return give_up(problem, rs, have_heuristic ? &heuristic : nullptr, nodes);
+      return give_up(problem, rs, have_heuristic ? &heuristic : nullptr, nodes, why);
     }
     if (!found)
       return failed_schedule(problem, ScheduleStatus::kInfeasible,
