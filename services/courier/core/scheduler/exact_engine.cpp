@@ -1,16 +1,18 @@
-// The exact engine: depth-first branch and bound over partial routes of one courier, with
-//   - an incumbent from the large engine's greedy dispatch and descent (so pruning starts at once);
-//   - a lower bound per node: every job left finishes no earlier than if it were done alone next
-//     (shortest-path travel, presence windows), so the late count, the lateness and, after sorting
-//     these earliest completions and spacing them by the shortest delivery handover, the completion
-//     sum are bounded; travel is bounded by the farthest place still to visit (only computed when
-//     the three terms before it tie with the incumbent);
+// The exact engine: branch and bound over partial routes of one courier, breadth first by the
+// number of stops done, with
+//   - an incumbent from the large engine's search (greedy dispatch, descent, a few ruin and
+//     recreate rounds), so pruning starts at once;
+//   - a lower bound per partial route (lower_bound below: earliest completions, handover and
+//     travel time still needed, on-time slot matching); travel is bounded by the farthest place
+//     still to visit, only when the three terms before it tie with the incumbent;
 //   - dominance: two partial routes that picked up and delivered the same jobs and stand at the
 //     same location have the same choices left, and every future cost term is non-decreasing in
 //     the start time (waiting for presence is allowed, deadlines are soft). So one that is there
-//     no later and no worse lexicographically than a route already expanded cannot lead to
-//     anything better, and is cut. The "textbook" dynamic program over (stops done, position)
-//     keeps the same labels but expands every one of them breadth first.
+//     no earlier and no better lexicographically than another cannot lead to anything better,
+//     and is dropped. Breadth first, every label of a state is known before any is expanded, so
+//     only non-dominated ones are (depth first expanded about as many later-dominated labels as
+//     surviving ones, measured). The textbook dynamic program (reference_dp.hpp) keeps the same
+//     labels but without bound or incumbent.
 // Several couriers: every assignment of the waiting jobs to couriers, each courier's job set
 // solved once (memoised); refused (large engine's answer, not proved) beyond 2^14 assignments.
 #include "services/courier/core/scheduler/route_search.hpp"
@@ -24,8 +26,10 @@ namespace autonomy::courier::scheduling::detail {
 namespace {
 
 constexpr int kMaxJobsPerCourier = 30;
+// Partial routes kept at most (about 160 bytes each): beyond, the search gives up, not proved.
+constexpr std::size_t kMaxLabels = 1u << 19;
 constexpr std::uint64_t kMaxAssignments = 1u << 14;
-constexpr int kIncumbentRounds = 20;  // ruin-and-recreate rounds without improvement
+constexpr int kIncumbentRounds = 5;  // ruin-and-recreate rounds without improvement
 
 // All-pairs shortest travel (the matrix may not obey the triangle inequality; bounds must).
 std::vector<double> shortest_travel(const SchedulingProblem& p) {
@@ -39,84 +43,6 @@ std::vector<double> shortest_travel(const SchedulingProblem& p) {
     }
   return d;
 }
-
-// Labels of expanded partial routes per state (picked, delivered, location): open addressing
-// with linear probing into chains of labels in one pool (no allocation per state).
-class LabelTable {
- public:
-  LabelTable() : slots_(1u << 12) {}
-
-  // True when a stored label is no later and no worse than (t, cost); otherwise stores it, in the
-  // place of one it dominates if there is one (the others it dominates are disabled).
-  bool dominated_or_insert(std::uint64_t masks, int loc, double t, const Objective& cost) {
-    Slot& slot = find(masks, loc);
-    int reuse = -1;
-    for (int k = slot.head; k >= 0; k = pool_[static_cast<std::size_t>(k)].next) {
-      Node& n = pool_[static_cast<std::size_t>(k)];
-      if (n.t <= t + 1e-9 && compare(n.cost, cost) <= 0) return true;
-      if (t <= n.t + 1e-9 && compare(cost, n.cost) <= 0) {
-        if (reuse < 0) {
-          reuse = k;
-        } else {
-          n.t = kNoRoute;  // never dominates again
-        }
-      }
-    }
-    if (reuse >= 0) {
-      pool_[static_cast<std::size_t>(reuse)].t = t;
-      pool_[static_cast<std::size_t>(reuse)].cost = cost;
-      return false;
-    }
-    if (slot.head < 0 && slot.loc < 0) {
-      slot.masks = masks;
-      slot.loc = loc;
-      ++used_;
-    }
-    pool_.push_back({t, cost, slot.head});
-    slot.head = static_cast<int>(pool_.size() - 1);
-    if (2 * used_ > slots_.size()) grow();
-    return false;
-  }
-
- private:
-  struct Slot {
-    std::uint64_t masks = 0;
-    int loc = -1;
-    int head = -1;
-  };
-  struct Node {
-    double t;
-    Objective cost;
-    int next;
-  };
-
-  static std::size_t hash(std::uint64_t masks, int loc) {
-    std::uint64_t x = masks ^ (static_cast<std::uint64_t>(loc) * 0x9E3779B97F4A7C15ull);
-    x ^= x >> 31;
-    x *= 0xBF58476D1CE4E5B9ull;
-    x ^= x >> 29;
-    return static_cast<std::size_t>(x);
-  }
-
-  Slot& find(std::uint64_t masks, int loc) {
-    const std::size_t mask = slots_.size() - 1;
-    for (std::size_t i = hash(masks, loc) & mask;; i = (i + 1) & mask) {
-      Slot& s = slots_[i];
-      if (s.loc < 0 || (s.masks == masks && s.loc == loc)) return s;
-    }
-  }
-
-  void grow() {
-    std::vector<Slot> old = std::move(slots_);
-    slots_.assign(old.size() * 2, Slot{});
-    for (const Slot& s : old)
-      if (s.loc >= 0) find(s.masks, s.loc) = s;
-  }
-
-  std::vector<Slot> slots_;
-  std::vector<Node> pool_;
-  std::size_t used_ = 0;
-};
 
 // One courier, a given set of jobs, from the state after its forced prefix.
 class CourierSearch {
@@ -169,13 +95,14 @@ class CourierSearch {
   bool run(const Objective& incumbent_cost, const std::vector<StopRef>* incumbent) {
     best_ = incumbent_cost;
     if (incumbent) best_route_ = *incumbent, found_ = true;
-    dfs(start_, initially_picked_, 0);
+    search();
     return !stopped_;
   }
   bool found() const { return found_; }
   const Objective& best() const { return best_; }
   const std::vector<StopRef>& best_route() const { return best_route_; }
   std::uint64_t nodes() const { return nodes_; }
+  bool out_of_memory() const { return out_of_memory_; }
 
  private:
   double sp(int a, int b) const {
@@ -291,77 +218,150 @@ class CourierSearch {
     return far;
   }
 
-  // True when an expanded label at this state is no later and no worse; else records this one.
-  bool dominated(const RouteState& s, std::uint32_t picked, std::uint32_t delivered) {
-    return labels_.dominated_or_insert(picked | static_cast<std::uint64_t>(delivered) << 32, s.loc,
-                                       s.t, s.cost);
+  // One partial route: its state, which jobs it picked up and delivered, how it got here.
+  struct Entry {
+    RouteState state;
+    std::uint32_t picked = 0;
+    std::uint32_t delivered = 0;
+    int parent = -1;
+    StopRef stop;
+    int next = -1;  // the next label of the same state
+    bool alive = true;
+  };
+
+  // Open addressing from a state (picked, delivered, location) to its chain of labels.
+  struct StateTable {
+    struct Slot {
+      std::uint64_t masks = 0;
+      int loc = -1;
+      int head = -1;
+    };
+    std::vector<Slot> slots = std::vector<Slot>(1u << 10);
+    std::size_t used = 0;
+
+    static std::size_t hash(std::uint64_t masks, int loc) {
+      std::uint64_t x = masks ^ (static_cast<std::uint64_t>(loc) * 0x9E3779B97F4A7C15ull);
+      x ^= x >> 31;
+      x *= 0xBF58476D1CE4E5B9ull;
+      x ^= x >> 29;
+      return static_cast<std::size_t>(x);
+    }
+    Slot& find(std::uint64_t masks, int loc) {
+      const std::size_t mask = slots.size() - 1;
+      for (std::size_t i = hash(masks, loc) & mask;; i = (i + 1) & mask) {
+        Slot& s = slots[i];
+        if (s.loc < 0 || (s.masks == masks && s.loc == loc)) return s;
+      }
+    }
+    Slot& claim(std::uint64_t masks, int loc) {
+      if (2 * (used + 1) > slots.size()) {
+        std::vector<Slot> old = std::move(slots);
+        slots.assign(old.size() * 2, Slot{});
+        for (const Slot& s : old)
+          if (s.loc >= 0) find(s.masks, s.loc) = s;
+      }
+      Slot& s = find(masks, loc);
+      if (s.loc < 0) s.masks = masks, s.loc = loc, ++used;
+      return s;
+    }
+  };
+
+  // Breadth first by the number of stops done, so that every label of a state is known before
+  // any of them is expanded: only non-dominated labels are expanded (a depth-first search expands
+  // many that a later label dominates). Each expanded label is bounded against the incumbent.
+  void search() {
+    std::vector<Entry> arena;
+    arena.reserve(1u << 12);
+    Entry root;
+    root.state = start_;
+    root.picked = initially_picked_;
+    arena.push_back(root);
+    std::vector<int> layer{0};
+    int best_parent = -2;  // -2: the incumbent given to run()
+    StopRef best_last;
+    while (!layer.empty() && !stopped_) {
+      StateTable table;
+      std::vector<int> next;
+      for (int index : layer) {
+        if (stopped_) break;
+        if (!arena[static_cast<std::size_t>(index)].alive) continue;
+        if ((++nodes_ & 1023u) == 0 && budget_.exhausted(nodes_ + rs_.work())) {
+          stopped_ = true;
+          break;
+        }
+        const Entry e = arena[static_cast<std::size_t>(index)];
+        const RouteState& s = e.state;
+        if (!bounded_below_best(s, e.picked, e.delivered)) continue;
+        for (std::size_t i = 0; i < jobs_.size(); ++i) {
+          if (e.delivered >> i & 1u) continue;
+          const int j = jobs_[i];
+          const std::uint32_t bit = 1u << i;
+          const bool deliver = e.picked & bit;
+          if (!deliver && (s.load >= capacity_ || !sim_.may_pick_up(s, j))) continue;
+          Entry child;
+          child.state = s;
+          child.stop = {j, deliver ? StopKind::kDelivery : StopKind::kPickup};
+          if (!sim_.advance(child.state, child.stop)) continue;
+          child.picked = e.picked | (deliver ? 0u : bit);
+          child.delivered = e.delivered | (deliver ? bit : 0u);
+          child.parent = index;
+          if (child.delivered == all_) {
+            if (!found_ || better(child.state.cost, best_)) {
+              best_ = child.state.cost;
+              best_parent = index;
+              best_last = child.stop;
+              found_ = true;
+            }
+            continue;
+          }
+          if (found_ && compare(child.state.cost, best_) >= 0) continue;
+          auto& slot = table.claim(child.picked | static_cast<std::uint64_t>(child.delivered) << 32,
+                                   child.state.loc);
+          bool dominated = false;
+          for (int k = slot.head; k >= 0 && !dominated;
+               k = arena[static_cast<std::size_t>(k)].next) {
+            Entry& other = arena[static_cast<std::size_t>(k)];
+            if (!other.alive) continue;
+            if (other.state.t <= child.state.t + 1e-9 &&
+                compare(other.state.cost, child.state.cost) <= 0)
+              dominated = true;
+            else if (child.state.t <= other.state.t + 1e-9 &&
+                     compare(child.state.cost, other.state.cost) <= 0)
+              other.alive = false;
+          }
+          if (dominated) continue;
+          child.next = slot.head;
+          if (arena.size() >= kMaxLabels) {
+            stopped_ = out_of_memory_ = true;
+            break;
+          }
+          arena.push_back(child);
+          slot.head = static_cast<int>(arena.size() - 1);
+          next.push_back(slot.head);
+        }
+      }
+      layer.swap(next);
+    }
+    if (best_parent == -2) return;  // nothing better than the incumbent
+    best_route_.clear();
+    best_route_.push_back(best_last);
+    for (int k = best_parent; k > 0; k = arena[static_cast<std::size_t>(k)].parent)
+      best_route_.push_back(arena[static_cast<std::size_t>(k)].stop);
+    std::reverse(best_route_.begin(), best_route_.end());
   }
 
-  void dfs(const RouteState& s, std::uint32_t picked, std::uint32_t delivered) {
-    if (stopped_) return;
-    if ((++nodes_ & 1023u) == 0 && budget_.exhausted(nodes_ + rs_.work())) {
-      stopped_ = true;
-      return;
-    }
-    if (delivered == all_) {
-      if (!found_ || better(s.cost, best_)) {
-        best_ = s.cost;
-        best_route_ = path_;
-        found_ = true;
-      }
-      return;
-    }
+  // False when the bound says no completion of this partial route beats the incumbent.
+  bool bounded_below_best(const RouteState& s, std::uint32_t picked, std::uint32_t delivered) {
     Objective lb;
-    if (!lower_bound(s, picked, delivered, lb)) return;
-    if (found_) {
-      if (compare(lb, best_) >= 0) return;
-      if (lb.late_jobs == best_.late_jobs && std::abs(lb.lateness_s - best_.lateness_s) < 1e-6 &&
-          std::abs(lb.completion_s - best_.completion_s) < 1e-6) {
-        lb.travel_s += travel_bound(s, picked, delivered);
-        if (compare(lb, best_) >= 0) return;
-      }
+    if (!lower_bound(s, picked, delivered, lb)) return false;
+    if (!found_) return true;
+    if (compare(lb, best_) >= 0) return false;
+    if (lb.late_jobs == best_.late_jobs && std::abs(lb.lateness_s - best_.lateness_s) < 1e-6 &&
+        std::abs(lb.completion_s - best_.completion_s) < 1e-6) {
+      lb.travel_s += travel_bound(s, picked, delivered);
+      if (compare(lb, best_) >= 0) return false;
     }
-    if (dominated(s, picked, delivered)) return;
-
-    struct Child {
-      RouteState state;
-      StopRef stop;
-      int bit;
-    };
-    Child children[64];
-    int count = 0;
-    for (std::size_t i = 0; i < jobs_.size(); ++i) {
-      if (delivered >> i & 1u) continue;
-      const int j = jobs_[i];
-      StopRef stop;
-      if (picked >> i & 1u) {
-        stop = {j, StopKind::kDelivery};
-      } else {
-        if (s.load >= capacity_ || !sim_.may_pick_up(s, j)) continue;
-        stop = {j, StopKind::kPickup};
-      }
-      Child& c = children[count];
-      c.state = s;
-      if (!sim_.advance(c.state, stop)) continue;
-      c.stop = stop;
-      c.bit = static_cast<int>(i);
-      ++count;
-    }
-    // Earliest finish first: good routes early, so the incumbent tightens quickly.
-    int order[64];
-    for (int k = 0; k < count; ++k) order[k] = k;
-    std::sort(order, order + count,
-              [&](int a, int b) { return children[a].state.t < children[b].state.t; });
-    for (int k = 0; k < count && !stopped_; ++k) {
-      const Child& c = children[order[k]];
-      path_.push_back(c.stop);
-      const std::uint32_t bit = 1u << c.bit;
-      if (c.stop.kind == StopKind::kPickup)
-        dfs(c.state, picked | bit, delivered);
-      else
-        dfs(c.state, picked, delivered | bit);
-      path_.pop_back();
-    }
+    return true;
   }
 
   RouteSearch& rs_;
@@ -384,12 +384,11 @@ class CourierSearch {
   std::vector<int> by_deadline_;
   double due_[kMaxJobsPerCourier + 2] = {};
   double slot_[kMaxJobsPerCourier + 2] = {};
-  LabelTable labels_;
-  std::vector<StopRef> path_;
   std::vector<StopRef> best_route_;
   Objective best_;
   bool found_ = false;
   bool stopped_ = false;
+  bool out_of_memory_ = false;
   std::uint64_t nodes_ = 0;
 };
 
@@ -440,6 +439,7 @@ class ExactEngine final : public SchedulerEngine {
 
     std::uint64_t nodes = 0;
     bool complete = true;
+    const char* why = "the budget ran out";
     struct Solved {
       bool feasible = false;
       Objective cost;
@@ -455,6 +455,7 @@ class ExactEngine final : public SchedulerEngine {
       Solved solved;
       if (jobs.size() > static_cast<std::size_t>(kMaxJobsPerCourier)) {
         complete = false;
+        why = "more than 30 jobs for one courier";
         return memo[{c, subset}] = solved;
       }
       std::sort(jobs.begin(), jobs.end());
@@ -474,6 +475,7 @@ class ExactEngine final : public SchedulerEngine {
       const bool finished = search.run(use_heuristic ? heuristic_costs[c] : worst_objective(),
                                        use_heuristic ? &tail : nullptr);
       complete = complete && finished;
+      if (search.out_of_memory()) why = "more than 2^19 partial routes to keep";
       nodes += search.nodes();
       solved.feasible = search.found();
       solved.cost = search.best();
@@ -512,9 +514,9 @@ class ExactEngine final : public SchedulerEngine {
       if (couriers == 1 && it != memo.end() && it->second.feasible) {
         Routes partial(1, problem.couriers[0].forced_prefix);
         partial[0].insert(partial[0].end(), it->second.route.begin(), it->second.route.end());
-        return give_up(problem, rs, &partial, nodes);
+        return give_up(problem, rs, &partial, nodes, why);
       }
-      return give_up(problem, rs, have_heuristic ? &heuristic : nullptr, nodes);
+      return give_up(problem, rs, have_heuristic ? &heuristic : nullptr, nodes, why);
     }
     if (!found)
       return failed_schedule(problem, ScheduleStatus::kInfeasible,
