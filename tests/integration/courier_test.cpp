@@ -48,6 +48,8 @@ std::string office_scenario(const std::string& a120_script, const std::string& e
   return text + extra;
 }
 
+constexpr auto kRun = 120s;
+
 class CourierTest : public ProcessTest {
  protected:
   void start_world(const std::string& scenario_text) {
@@ -75,6 +77,21 @@ class CourierTest : public ProcessTest {
   // The world waits at tick 0 while the test is a lockstep participant that never acknowledges.
   void hold_world() { registration_writer_->write({"test/commands", true}); }
   void release_world() { registration_writer_->write({"test/commands", false}); }
+  // While registered, the test steps the world itself: it acknowledges tick after tick until
+  // `condition` holds after one, and then stops acknowledging, so the world waits right there.
+  ::testing::AssertionResult step_until(const std::string& what, const std::function<bool()>& condition) {
+    int64_t acked = -1;
+    return await(what, [&] {
+      std::optional<int64_t> latest;
+      for (const auto& c : clock_->poll()) latest = std::max(latest.value_or(c.tick), c.tick);
+      if (!latest || *latest <= acked) return false;
+      poll();
+      if (condition()) return true;
+      acked = *latest;
+      ack_writer_->write({"test/commands", acked, 0});
+      return false;
+    }, kRun);
+  }
   void poll() {
     objects_->poll();
     jobs_->poll();
@@ -114,12 +131,16 @@ class CourierTest : public ProcessTest {
     reports_.emplace(participant(), dds::topics::courier_report);
     command_topic_.emplace(participant(), dds::topics::courier_command);
     command_writer_.emplace(participant(), *command_topic_);
+    clock_.emplace(participant(), dds::topics::clock);
+    ack_topic_.emplace(participant(), dds::topics::tick_ack);
+    ack_writer_.emplace(participant(), *ack_topic_);
     registration_topic_.emplace(participant(), dds::topics::lockstep_registration);
     registration_writer_.emplace(participant(), *registration_topic_);
     hold_world();
   }
   // Both paper commands accepted as job-1 (red letter) and job-2 (green book).
-  void send_paper_commands() {
+  // keep_holding: the test stays a lockstep participant (to step the world with step_until).
+  void send_paper_commands(bool keep_holding = false) {
     ASSERT_TRUE(await_ready(*beats_, *courier_));
     send("c1", kRedLetter);
     send("c2", kGreenBook);
@@ -128,7 +149,7 @@ class CourierTest : public ProcessTest {
       return replies_->all().size() >= 2;
     }));
     for (const auto& r : replies_->all()) ASSERT_TRUE(r.accepted) << r.command_id << ": " << r.reason << " " << r.detail;
-    release_world();
+    if (!keep_holding) release_world();
   }
 
   std::string scenario_, journal_;
@@ -141,11 +162,12 @@ class CourierTest : public ProcessTest {
   std::optional<Recorder<msg::CourierReport>> reports_;
   std::optional<dds::Topic<msg::CourierCommand>> command_topic_;
   std::optional<dds::Writer<msg::CourierCommand>> command_writer_;
+  std::optional<Recorder<msg::SimClock>> clock_;
+  std::optional<dds::Topic<msg::TickAck>> ack_topic_;
+  std::optional<dds::Writer<msg::TickAck>> ack_writer_;
   std::optional<dds::Topic<msg::LockstepRegistration>> registration_topic_;
   std::optional<dds::Writer<msg::LockstepRegistration>> registration_writer_;
 };
-
-constexpr auto kRun = 120s;
 
 TEST_F(CourierTest, Fig6DoorStaysOpenBothDelivered) {
   setup_observers(160);
@@ -259,14 +281,15 @@ TEST_F(CourierTest, TwoRedLettersAreNeverAboardTogether) {
 TEST_F(CourierTest, KilledMidDeliveryTheRestartedCourierFinishesFromItsJournal) {
   setup_observers(164);
   start_world(office_scenario(""));
-  send_paper_commands();
-  ASSERT_TRUE(await("the red letter loaded", [&] {
-    poll();
-    return object_tick("letter-red", "rhino", "").has_value();
-  }, kRun));
+  send_paper_commands(true);
+  ASSERT_TRUE(step_until("the red letter aboard", [&] { return object_tick("letter-red", "rhino", "").has_value(); }));
+  // Mid-delivery: the letter is aboard, nothing has been delivered yet.
+  EXPECT_FALSE(finished("job-1")) << job_story("job-1");
+  EXPECT_FALSE(object_tick("letter-red", "", "michael-desk"));
   stop_watching(*courier_);
   courier_->signal(SIGKILL);
   ASSERT_TRUE(courier_->wait_for_exit(10s));
+  release_world();
   ChildProcess& again = start_courier("courier-restarted");
   ASSERT_TRUE(await_ready(*beats_, again));
   ASSERT_TRUE(await("both jobs finished after the restart", [&] {
