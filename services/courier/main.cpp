@@ -23,6 +23,9 @@ int main(int argc, char** argv) {
         app.add_option("--robot", robots, "A courier robot to drive (repeatable; default: the scenario's couriers)");
         app.add_option("--journal", options.journal_path,
                        "SQLite journal of commands and jobs (default: <log-dir>/courier-<instance>.db)");
+        app.add_option("--events", options.events_path,
+                       "Append what happens (loads, doors seen, opportunities, ...) as JSON lines to this file, "
+                       "for courier_plot");
         app.add_option("--engine", options.engine, "Scheduler engine for small job sets: exact, large or paper")
             ->check(CLI::IsMember({"exact", "large", "paper"}))
             ->capture_default_str();

@@ -57,14 +57,14 @@ class CourierTest : public ProcessTest {
     write_file(scenario_, scenario_text);
     journal_ = dir().file("courier.db");
     start_simulator({"--config", scenario_, "--mode", "lockstep", "--wait-for", "behavior/rhino", "--wait-for",
-                     "courier/main", "--wait-for", "test/commands"});
+                     "courier/main", "--wait-for", "test/commands", "--trajectory", dir().file("trajectory.csv")});
     behavior_ = &start_behavior("rhino", {"--config", scenario_});
     courier_ = &start_courier();
   }
   ChildProcess& start_courier(const std::string& name = "courier") {
     return start(name, AUTONOMY_COURIER_BIN,
-                 {"--config", scenario_, "--journal", journal_, "--domain", std::to_string(domain_), "--log-dir",
-                  dir().path()});
+                 {"--config", scenario_, "--journal", journal_, "--events", dir().file("events.jsonl"), "--domain",
+                  std::to_string(domain_), "--log-dir", dir().path()});
   }
   void send(const std::string& id, const std::string& text) {
     ASSERT_TRUE(command_writer_->wait_for_readers(1, kDeadline));

@@ -3,6 +3,7 @@
 #include "common/msg/text_limits.hpp"
 #include "services/courier/core/bridge/engine_schedule_source.hpp"
 
+#include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
 #include <stdexcept>
@@ -94,6 +95,10 @@ CourierNode::CourierNode(service::Service& service, CourierNodeOptions options)
   executive_ = std::make_unique<CourierExecutive>(options_.office.floor, *scheduler_);
   for (const auto& r : options_.robots) executive_->add_robot(r.id, r.capacity);
 
+  if (!options_.events_path.empty()) {
+    events_file_.open(options_.events_path, std::ios::app);
+    if (!events_file_) throw std::runtime_error("cannot write the events file " + options_.events_path);
+  }
   journal_ = std::make_unique<Journal>(options_.journal_path);
   const Journal::Contents journalled = journal_->load();
   int unfinished = 0;
@@ -127,8 +132,11 @@ CourierNode::CourierNode(service::Service& service, CourierNodeOptions options)
     }
   });
   loop.on_samples<msg::RobotState>(state_reader_, [this](auto samples) {
-    for (const auto& s : samples)
-      if (s.valid) executive_->on_pose(s.value.robot_id, s.value.x, s.value.y);
+    for (const auto& s : samples) {
+      if (!s.valid || !executive_->has_robot(s.value.robot_id)) continue;
+      executive_->on_pose(s.value.robot_id, s.value.x, s.value.y);
+      poses_[s.value.robot_id] = {s.value.x, s.value.y};
+    }
   });
   loop.on_samples<msg::DoorObservation>(door_reader_, [this](auto samples) {
     for (const auto& s : samples) {
@@ -186,7 +194,17 @@ msg::CourierJobStatus CourierNode::status_of(const Job& job, int64_t tick) const
 }
 
 void CourierNode::carry_out(Orders orders, int64_t tick) {
-  for (const auto& e : orders.events) spdlog::info("{}", e);
+  for (const auto& e : orders.events) {
+    spdlog::info("{}", e.text);
+    if (events_file_) {
+      // One JSON object per line: when, where each robot was, and what happened.
+      nlohmann::json line = {{"tick", tick},   {"sim_s", now_sim_s()},        {"time", clock_text(now_day_s())},
+                             {"kind", to_string(e.kind)}, {"text", e.text}};
+      for (const auto& [id, pose] : poses_) line["robots"][id] = {pose.first, pose.second};
+      events_file_ << line.dump() << "\n";
+    }
+  }
+  if (events_file_) events_file_.flush();
   // The journal first: what goes on the wire is never ahead of what a restart would know.
   std::vector<const Job*> changed;
   for (const auto& id : orders.changed_jobs)

@@ -13,6 +13,7 @@
 #include "services/courier/dds/office_file.hpp"
 #include "services/courier/journal/journal.hpp"
 
+#include <fstream>
 #include <map>
 #include <memory>
 #include <optional>
@@ -24,6 +25,7 @@ struct CourierNodeOptions {
   CourierOffice office;
   std::vector<CourierRobotSpec> robots;  // the couriers it drives
   std::string journal_path;
+  std::string events_path;  // JSON lines of what happened, for pictures; "" = none
   std::string engine = "exact";  // for small job sets; "large" takes over above exact_max_jobs
   int exact_max_jobs = 8;
   double budget_ms = 50.0;
@@ -47,6 +49,8 @@ class CourierNode {
   std::unique_ptr<CourierExecutive> executive_;
   std::unique_ptr<Journal> journal_;
   std::unique_ptr<CommandDesk> desk_;
+  std::ofstream events_file_;
+  std::map<std::string, std::pair<double, double>> poses_;  // latest of each courier robot
   int64_t tick_ = 0;
   bool have_clock_ = false;
 

@@ -35,7 +35,31 @@ std::vector<PlanStop> CourierExecutive::route(const std::string& robot) const {
   return it == robots_.end() ? std::vector<PlanStop>{} : it->second.route;
 }
 
-void CourierExecutive::event(std::string text) { orders_.events.push_back(std::move(text)); }
+void CourierExecutive::event(ExecutionEvent::Kind kind, std::string text) {
+  orders_.events.push_back({kind, std::move(text)});
+}
+
+const char* to_string(ExecutionEvent::Kind k) {
+  switch (k) {
+    case ExecutionEvent::Kind::accepted: return "accepted";
+    case ExecutionEvent::Kind::revised: return "revised";
+    case ExecutionEvent::Kind::heading: return "heading";
+    case ExecutionEvent::Kind::loaded: return "loaded";
+    case ExecutionEvent::Kind::unloaded: return "unloaded";
+    case ExecutionEvent::Kind::door_closed: return "door_closed";
+    case ExecutionEvent::Kind::door_opened: return "door_opened";
+    case ExecutionEvent::Kind::goal_blocked: return "goal_blocked";
+    case ExecutionEvent::Kind::goal_ended: return "goal_ended";
+    case ExecutionEvent::Kind::handover_failed: return "handover_failed";
+    case ExecutionEvent::Kind::handover_refused: return "handover_refused";
+    case ExecutionEvent::Kind::failed_over: return "failed_over";
+    case ExecutionEvent::Kind::opportunity_taken: return "opportunity_taken";
+    case ExecutionEvent::Kind::opportunity_declined: return "opportunity_declined";
+    case ExecutionEvent::Kind::returning: return "returning";
+    case ExecutionEvent::Kind::finished: return "finished";
+  }
+  return "?";
+}
 
 void CourierExecutive::changed(const Job& job) {
   if (std::find(orders_.changed_jobs.begin(), orders_.changed_jobs.end(), job.id) == orders_.changed_jobs.end())
@@ -49,7 +73,7 @@ void CourierExecutive::add_job(Job job, double now_s) {
   job.accepted_at_s = now_s;
   const std::string id = job.id;
   jobs_[id] = std::move(job);
-  event("job " + id + " accepted");
+  event(ExecutionEvent::Kind::accepted, "job " + id + " accepted");
   changed(jobs_[id]);
   reschedule_needed_ = true;
 }
@@ -98,11 +122,11 @@ std::optional<std::string> CourierExecutive::revise(const std::string& job_id,
   if (destination) {
     if (!floor_.place(*destination)) return "no place '" + *destination + "'";
     job.destination = *destination;
-    event("job " + job_id + " now goes to " + *destination);
+    event(ExecutionEvent::Kind::revised, "job " + job_id + " now goes to " + *destination);
   }
   if (deadline_s) {
     job.deadline_s = *deadline_s;
-    event("job " + job_id + " deadline " + (*deadline_s ? clock_text(**deadline_s) : std::string("none")));
+    event(ExecutionEvent::Kind::revised, "job " + job_id + " deadline " + (*deadline_s ? clock_text(**deadline_s) : std::string("none")));
   }
   // A job that waited for a door may be possible at its new destination.
   if (job.state == JobState::opportunistic && destination) {
@@ -140,7 +164,7 @@ void CourierExecutive::on_door(const std::string& robot, const std::string& door
   const DoorChange change = doors_.observe(door_id, angle_rad, now_s, robot);
   if (change == DoorChange::none) return;
   if (change == DoorChange::closed) {
-    event(door_id + " seen closed by " + robot + " at " + clock_text(now_s));
+    event(ExecutionEvent::Kind::door_closed, door_id + " seen closed by " + robot + " at " + clock_text(now_s));
     // A broken assumption: each open job whose next step lies behind this door fails over to the
     // opportunistic primaries, and the rest is rescheduled in this same tick.
     for (auto& [id, job] : jobs_) {
@@ -154,7 +178,7 @@ void CourierExecutive::on_door(const std::string& robot, const std::string& door
     }
     reschedule_needed_ = true;
   } else {
-    event(door_id + " seen open by " + robot + " at " + clock_text(now_s));
+    event(ExecutionEvent::Kind::door_opened, door_id + " seen open by " + robot + " at " + clock_text(now_s));
     for (const auto& [id, job] : jobs_)
       if (job.state == JobState::opportunistic) opportunity_pending_ = true;
     reschedule_needed_ = true;
@@ -179,7 +203,7 @@ void CourierExecutive::on_goal(const std::string& robot, const std::string& goal
       const std::string place = r.goal_place;
       r.goal_id.clear();
       r.goal_place.clear();
-      event("goal to " + place + " blocked for " + robot + ": " + reason);
+      event(ExecutionEvent::Kind::goal_blocked, "goal to " + place + " blocked for " + robot + ": " + reason);
       // The behavior names the door it saw closed ("... door A-120 closed"): its robot's eyes.
       const std::string marker = "door ";
       for (size_t at = reason.find(marker); at != std::string::npos; at = reason.find(marker, at + 1)) {
@@ -206,7 +230,7 @@ void CourierExecutive::on_goal(const std::string& robot, const std::string& goal
     case GoalOutcome::rejected:
     case GoalOutcome::cancelled:
       // Somebody else took the robot, or the goal was refused: ask again at the next dispatch.
-      event("goal " + goal_id + " " + (outcome == GoalOutcome::rejected ? "rejected" : "ended") + ": " + reason);
+      event(ExecutionEvent::Kind::goal_ended, "goal " + goal_id + " " + (outcome == GoalOutcome::rejected ? "rejected" : "ended") + ": " + reason);
       r.goal_id.clear();
       r.goal_place.clear();
       return;
@@ -232,11 +256,11 @@ void CourierExecutive::on_handover(const std::string& request_id, HandoverOutcom
       if (order.load) {
         job.object_place.clear();
         job.object_carrier = r.id;
-        event(job.object.id + " loaded at " + order.place + " by " + r.id + " at " + clock_text(now_s));
+        event(ExecutionEvent::Kind::loaded, job.object.id + " loaded at " + order.place + " by " + r.id + " at " + clock_text(now_s));
       } else {
         job.object_carrier.clear();
         job.object_place = order.place;
-        event(job.object.id + " unloaded at " + order.place + " by " + r.id + " at " + clock_text(now_s));
+        event(ExecutionEvent::Kind::unloaded, job.object.id + " unloaded at " + order.place + " by " + r.id + " at " + clock_text(now_s));
       }
       job.reason.clear();
       if (!job.return_to.empty() && job.object_place == job.return_to) {
@@ -251,13 +275,13 @@ void CourierExecutive::on_handover(const std::string& request_id, HandoverOutcom
       return;
     }
     if (outcome == HandoverOutcome::failed) {
-      event(what + " failed: " + reason + (detail.empty() ? "" : " (" + detail + ")"));
+      event(ExecutionEvent::Kind::handover_failed, what + " failed: " + reason + (detail.empty() ? "" : " (" + detail + ")"));
       job.phase = JobPhase::none;
       changed(job);
       return;  // tried again at the next dispatch
     }
     // Rejected.
-    event(what + " refused: " + reason + (detail.empty() ? "" : " (" + detail + ")"));
+    event(ExecutionEvent::Kind::handover_refused, what + " refused: " + reason + (detail.empty() ? "" : " (" + detail + ")"));
     if (reason == "nobody_present" || reason == "helper_busy" || reason == "robot_busy" ||
         reason == "object_in_handover") {
       r.hold_until_s = now_s + settings_.retry_after_s;
@@ -286,7 +310,7 @@ void CourierExecutive::make_opportunistic(Job& job, const std::string& reason, d
   job.phase = JobPhase::none;
   job.reason = reason;
   job.estimated_completion_s.reset();
-  event("job " + job.id + " failed over to opportunistic: " + reason + " (" + clock_text(now_s) + ")");
+  event(ExecutionEvent::Kind::failed_over, "job " + job.id + " failed over to opportunistic: " + reason + " (" + clock_text(now_s) + ")");
   changed(job);
 }
 
@@ -297,7 +321,7 @@ void CourierExecutive::start_return(Job& job, JobState end_state, const std::str
   job.state = JobState::underway;
   job.phase = JobPhase::returning;
   job.reason = reason + "; returning " + job.object.id + " to " + job.return_to;
-  event("job " + job.id + ": " + job.reason + " (" + clock_text(now_s) + ")");
+  event(ExecutionEvent::Kind::returning, "job " + job.id + ": " + job.reason + " (" + clock_text(now_s) + ")");
   changed(job);
 }
 
@@ -314,7 +338,7 @@ void CourierExecutive::finish(Job& job, JobState state, const std::string& reaso
                   clock_text(now_s);
   else
     report.text = std::string(to_string(state)) + ": " + reason + " (" + clock_text(now_s) + ")";
-  event("job " + job.id + " " + report.text);
+  event(ExecutionEvent::Kind::finished, "job " + job.id + " " + report.text);
   orders_.reports.push_back(std::move(report));
 }
 
@@ -413,12 +437,12 @@ void CourierExecutive::opportunity_check(double now_s) {
       }
     }
     if (late_with > late_without || lateness_with > lateness_without + 1e-6) {
-      event("opportunity for job " + id + " declined: it would make other jobs later");
+      event(ExecutionEvent::Kind::opportunity_declined, "opportunity for job " + id + " declined: it would make other jobs later");
       continue;
     }
     job.state = JobState::queued;
     job.reason.clear();
-    event("opportunity: job " + id + " taken up now (" + clock_text(now_s) + ")");
+    event(ExecutionEvent::Kind::opportunity_taken, "opportunity: job " + id + " taken up now (" + clock_text(now_s) + ")");
     changed(job);
     adopt(with, now_s);
     reschedule_needed_ = false;
@@ -449,7 +473,7 @@ void CourierExecutive::send_goal(Robot& robot, const std::string& place, double 
   robot.at_place.clear();
   const double tolerance = std::min(settings_.goal_tolerance_m, 0.5 * p->radius);
   orders_.goals.push_back({robot.id, robot.goal_id, p->x, p->y, tolerance});
-  event(robot.id + " heads for " + place + " (" + clock_text(now_s) + ")");
+  event(ExecutionEvent::Kind::heading, robot.id + " heads for " + place + " (" + clock_text(now_s) + ")");
 }
 
 void CourierExecutive::send_handover(Robot& robot, const PlanStop& stop, double now_s) {

@@ -65,6 +65,17 @@ struct ReportNote {
   std::string text;
 };
 
+// One thing that happened, for logs, the events file and pictures (the paper's numbered steps).
+struct ExecutionEvent {
+  enum class Kind {
+    accepted, revised, heading, loaded, unloaded, door_closed, door_opened, goal_blocked, goal_ended,
+    handover_failed, handover_refused, failed_over, opportunity_taken, opportunity_declined, returning, finished
+  };
+  Kind kind;
+  std::string text;
+};
+const char* to_string(ExecutionEvent::Kind k);
+
 // What the node must do after the events of a tick, in this order: journal and publish changed
 // jobs, send handovers (journalled first) and goals, publish schedules and reports.
 struct Orders {
@@ -73,7 +84,7 @@ struct Orders {
   std::vector<NavGoalOrder> goals;
   std::vector<ScheduleNote> schedules;
   std::vector<ReportNote> reports;
-  std::vector<std::string> events;  // what happened, in words, in order (logs, tests)
+  std::vector<ExecutionEvent> events;  // what happened, in order (logs, tests, pictures)
   bool empty() const {
     return changed_jobs.empty() && handovers.empty() && goals.empty() && schedules.empty() && reports.empty() &&
            events.empty();
@@ -156,7 +167,7 @@ class CourierExecutive {
   void start_return(Job& job, JobState end_state, const std::string& reason, double now_s);
   void finish(Job& job, JobState state, const std::string& reason, double now_s);
   void changed(const Job& job);
-  void event(std::string text);
+  void event(ExecutionEvent::Kind kind, std::string text);
   // The door that a step at `place` needs open, when it is believed closed.
   std::optional<std::string> closed_door_for(const std::string& place) const;
   std::string closed_reason(const std::string& door) const;

@@ -85,7 +85,7 @@ class ExecutiveTest : public ::testing::Test {
   // Steps once and keeps what happened.
   Orders step() {
     Orders o = exec_.step(now_);
-    for (const auto& e : o.events) events_.push_back(e);
+    for (const auto& e : o.events) events_.push_back(e.text);
     for (const auto& g : o.goals) last_goal_ = g;
     for (const auto& h : o.handovers) last_handover_ = h;
     return o;
