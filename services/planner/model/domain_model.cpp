@@ -413,6 +413,7 @@ std::optional<PlanningProblem> build_problem(const DomainModel& model, const pb:
     fd.initial = initial;
     fd.optional = f.optional();
     fd.penalty = f.penalty();
+    fd.where = f.location().file() + ":" + std::to_string(f.location().line());
     fd.object = problem.object(f.object());
     if (fd.object < 0 || problem.objects[fd.object].class_index < 0) {
       check.error(f.location(), "unknown object '" + f.object() + "'");
@@ -489,7 +490,8 @@ std::optional<PlanningProblem> build_problem(const DomainModel& model, const pb:
     std::string why = relation_bounds_problem(r.relation().bounds());
     if (!why.empty()) check.error(r.location(), why);
     problem.relations.push_back({from->second, to->second, r.relation().kind(),
-                                 r.relation().bounds().lb(), r.relation().bounds().ub()});
+                                 r.relation().bounds().lb(), r.relation().bounds().ub(),
+                                 r.location().file() + ":" + std::to_string(r.location().line())});
   }
   if (check.failed()) return std::nullopt;
   return problem;

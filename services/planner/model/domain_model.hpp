@@ -121,12 +121,14 @@ struct FactDef {
   ModelTime duration_lb = 0, duration_ub = kNoBound;
   bool initial = false, optional = false;
   double penalty = 0;
+  std::string where;  // "file:line" of the statement, for explanations
 };
 
 struct FactRelationDef {
   int from = -1, to = -1;  // indices in PlanningProblem::facts
   pb::TemporalRelation::Kind relation;
   ModelTime lb = 0, ub = kNoBound;
+  std::string where;
 };
 
 struct ObjectDef {

@@ -76,6 +76,7 @@ TemporalResult TemporalNetwork::add_constraint(TimepointId from, TimepointId to,
     ok = propagate_from({edges_[e].to}, {edges_[e].from}, id, &conflict);
   }
   if (!ok) {
+    if (explain_) conflict = negative_cycle();  // with the new constraint still in
     undo_to(before);
     constraints_.push_back({from, to, lb, ub, false});
     result.consistent = false;
@@ -269,6 +270,48 @@ void TemporalNetwork::recompute() {
 TimeBounds TemporalNetwork::window_distance(TimepointId from, TimepointId to) const {
   return {earliest_[to] - latest_[from],
           latest_[to] >= kInfinity ? kInfinity : latest_[to] - earliest_[from]};
+}
+
+// Bellman-Ford from a virtual source joined to every timepoint: after n rounds a timepoint
+// that still improves lies downstream of a negative cycle; walking n predecessor links back
+// from it lands on the cycle, which is then read off.
+std::vector<TemporalConstraintId> TemporalNetwork::negative_cycle() const {
+  struct E {
+    TimepointId from, to;
+    Time w;
+    TemporalConstraintId c;
+  };
+  std::vector<E> all;
+  for (const Edge& e : edges_)
+    if (constraints_[e.constraint].active) all.push_back({e.from, e.to, e.weight, e.constraint});
+  for (TimepointId t = 1; t < earliest_.size(); ++t) {
+    if (horizon_ < kInfinity) all.push_back({origin(), t, horizon_, kHorizonConstraint});
+    all.push_back({t, origin(), 0, kHorizonConstraint});
+  }
+  const std::size_t n = earliest_.size();
+  std::vector<Time> dist(n, 0);
+  std::vector<std::size_t> pred(n, SIZE_MAX);
+  TimepointId last = SIZE_MAX;
+  for (std::size_t round = 0; round <= n; ++round) {
+    last = SIZE_MAX;
+    for (std::size_t i = 0; i < all.size(); ++i) {
+      if (dist[all[i].from] + all[i].w < dist[all[i].to]) {
+        dist[all[i].to] = dist[all[i].from] + all[i].w;
+        pred[all[i].to] = i;
+        last = all[i].to;
+      }
+    }
+    if (last == SIZE_MAX) return {};
+  }
+  for (std::size_t i = 0; i < n; ++i) last = all[pred[last]].from;
+  std::vector<TemporalConstraintId> cycle;
+  TimepointId t = last;
+  do {
+    const E& e = all[pred[t]];
+    if (std::find(cycle.begin(), cycle.end(), e.c) == cycle.end()) cycle.push_back(e.c);
+    t = e.from;
+  } while (t != last && cycle.size() <= all.size());
+  return cycle;
 }
 
 Time TemporalNetwork::shortest_distance(TimepointId from, TimepointId to) const {

@@ -86,6 +86,13 @@ class TemporalNetwork {
 
   std::size_t propagations() const { return propagations_; }
 
+  // When on, a failed add_constraint() names the constraints of one negative cycle exactly
+  // (a Bellman-Ford pass over the whole network, only on failure); when off (the default, for
+  // search), only the closing constraint and what the propagation's links show.
+  void set_explain_conflicts(bool on) { explain_ = on; }
+  // In a conflict: the implicit "every timepoint within [0, horizon]" constraint.
+  static constexpr TemporalConstraintId kHorizonConstraint = static_cast<TemporalConstraintId>(-1);
+
  private:
   struct Edge {  // to - from <= weight, from a constraint (each constraint gives two edges)
     TimepointId from, to;
@@ -103,6 +110,8 @@ class TemporalNetwork {
   void set_latest(TimepointId t, Time v);
   void set_earliest(TimepointId t, Time v);
   void recompute();
+  std::vector<TemporalConstraintId> negative_cycle() const;
+  bool explain_ = false;
 
   Time horizon_;
   std::vector<Time> earliest_, latest_;

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 namespace autonomy::planner {
@@ -45,6 +46,23 @@ TEST(TemporalNetwork, NegativeCycleIsDetectedAtTheClosingConstraintAndLeavesNoTr
   // The network is still usable, and c - a <= 25 is fine.
   EXPECT_TRUE(tn.add_constraint(c, a, -25, 0));
   EXPECT_EQ(tn.shortest_distance(a, c), 25);
+}
+
+TEST(TemporalNetwork, ExplainedConflictsNameTheWholeCycleThroughTheOrigin) {
+  TemporalNetwork tn(1000);
+  tn.set_explain_conflicts(true);
+  TimepointId a = tn.add_timepoint(), b = tn.add_timepoint(), unrelated = tn.add_timepoint();
+  TemporalConstraintId a_late, ab, other, b_early;
+  ASSERT_TRUE(tn.add_constraint(TemporalNetwork::origin(), a, 0, 20, &a_late));
+  ASSERT_TRUE(tn.add_constraint(a, b, 10, 10, &ab));
+  ASSERT_TRUE(tn.add_constraint(TemporalNetwork::origin(), unrelated, 5, 6, &other));
+  TemporalResult r = tn.add_constraint(TemporalNetwork::origin(), b, 40, 50, &b_early);
+  ASSERT_FALSE(r);
+  std::vector<TemporalConstraintId> expected{b_early, a_late, ab};
+  std::vector<TemporalConstraintId> got = r.conflict;
+  std::sort(expected.begin(), expected.end());
+  std::sort(got.begin(), got.end());
+  EXPECT_EQ(got, expected);
 }
 
 TEST(TemporalNetwork, EmptyIntervalAndHorizonAreInconsistent) {
