@@ -2,6 +2,8 @@
 
 #include <cctype>
 #include <cmath>
+#include <fstream>
+#include <sstream>
 #include <map>
 #include <stdexcept>
 #include <vector>
@@ -100,20 +102,12 @@ std::vector<Token> lex(std::string_view s) {
 }
 
 const std::map<std::string, pb::TemporalRelation::Kind>& relations() {
-  static const std::map<std::string, pb::TemporalRelation::Kind> names = {
-      {"before", pb::TemporalRelation::BEFORE},
-      {"after", pb::TemporalRelation::AFTER},
-      {"startsBefore", pb::TemporalRelation::STARTS_BEFORE},
-      {"startsAfter", pb::TemporalRelation::STARTS_AFTER},
-      {"endsBefore", pb::TemporalRelation::ENDS_BEFORE},
-      {"endsAfter", pb::TemporalRelation::ENDS_AFTER},
-      {"startsBeforeEnd", pb::TemporalRelation::STARTS_BEFORE_END},
-      {"endsAfterStart", pb::TemporalRelation::ENDS_AFTER_START},
-      {"contains", pb::TemporalRelation::CONTAINS},
-      {"containedBy", pb::TemporalRelation::CONTAINED_BY},
-      {"parallels", pb::TemporalRelation::PARALLELS},
-      {"paralleledBy", pb::TemporalRelation::PARALLELED_BY},
-  };
+  static const std::map<std::string, pb::TemporalRelation::Kind> names = [] {
+    std::map<std::string, pb::TemporalRelation::Kind> m;
+    for (int k = pb::TemporalRelation::Kind_MIN; k <= pb::TemporalRelation::Kind_MAX; ++k)
+      m[relation_name(pb::TemporalRelation::Kind(k))] = pb::TemporalRelation::Kind(k);
+    return m;
+  }();
   return names;
 }
 
@@ -527,6 +521,17 @@ std::optional<pb::Model> parse_model(std::string_view text, const std::string& f
 std::optional<pb::Problem> parse_problem(std::string_view text, const std::string& file,
                                          Diagnostics* errors) {
   return run<pb::Problem>(text, file, errors, [](Parser& p) { return p.problem(); });
+}
+
+std::optional<std::string> read_text_file(const std::string& path, Diagnostics* errors) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    errors->push_back({path, 0, 0, "cannot open the file"});
+    return std::nullopt;
+  }
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 }  // namespace autonomy::planner

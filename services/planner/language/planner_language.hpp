@@ -17,4 +17,7 @@ std::optional<pb::Model> parse_model(std::string_view text, const std::string& f
 std::optional<pb::Problem> parse_problem(std::string_view text, const std::string& file,
                                          Diagnostics* errors);
 
+// The whole file, or an error naming it.
+std::optional<std::string> read_text_file(const std::string& path, Diagnostics* errors);
+
 }  // namespace autonomy::planner

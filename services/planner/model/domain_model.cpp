@@ -497,6 +497,15 @@ std::optional<PlanningProblem> build_problem(const DomainModel& model, const pb:
   return problem;
 }
 
+const char* relation_name(pb::TemporalRelation::Kind kind) {
+  static const char* names[] = {"before",          "after",          "startsBefore",
+                                "startsAfter",     "endsBefore",     "endsAfter",
+                                "startsBeforeEnd", "endsAfterStart", "contains",
+                                "containedBy",     "parallels",      "paralleledBy"};
+  int k = int(kind);
+  return k >= 0 && k < 12 ? names[k] : "unknown relation";
+}
+
 std::string value_text(const DomainModel& model, const PlanningProblem& problem,
                        const ParameterType& type, double value) {
   switch (type.kind) {

@@ -151,6 +151,9 @@ std::optional<DomainModel> build_domain_model(const pb::Model& model, Diagnostic
 std::optional<PlanningProblem> build_problem(const DomainModel& model, const pb::Problem& problem,
                                              Diagnostics* errors);
 
+// The language's name of a temporal relation ("containedBy").
+const char* relation_name(pb::TemporalRelation::Kind kind);
+
 // Text of a parameter value for plans and messages (enumeration name, object name, number).
 std::string value_text(const DomainModel& model, const PlanningProblem& problem,
                        const ParameterType& type, double value);

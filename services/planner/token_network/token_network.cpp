@@ -14,13 +14,6 @@ Time to_time(ModelTime t) {
   return t >= kNoBound ? kInfinity : (t <= -kNoBound ? -kInfinity : t);
 }
 
-const char* relation_name(pb::TemporalRelation::Kind k) {
-  static const char* names[] = {"before",     "after",       "startsBefore",    "startsAfter",
-                                "endsBefore", "endsAfter",   "startsBeforeEnd", "endsAfterStart",
-                                "contains",   "containedBy", "parallels",       "paralleledBy"};
-  return names[int(k)];
-}
-
 Domain type_domain(const ParameterType& t, const PlanningProblem& problem) {
   switch (t.kind) {
     case ParameterType::Kind::kInteger:
@@ -449,7 +442,7 @@ TokenNetwork::Applies TokenNetwork::applies(TokenId t, const ValuePatternDef& ma
 
 bool TokenNetwork::settle() {
   for (TokenId id = 0; id < tokens_.size(); ++id) {
-    if (tokens_[id].state != Token::State::kPlaced) continue;
+    if (tokens_[id].state != Token::State::kPlaced || is_initial(id)) continue;
     const Timeline& tl = timelines_[tokens_[id].timeline];
     const ClassDef& cls = model_.classes[problem_.objects[tl.object].class_index];
     for (int s : model_.schemata_for(cls.attributes[tl.attribute].name, tokens_[id].predicate)) {
@@ -543,6 +536,10 @@ bool TokenNetwork::load_check() const {
   return true;
 }
 
+bool TokenNetwork::is_initial(TokenId id) const {
+  return tokens_[id].fact >= 0 && problem_.facts[tokens_[id].fact].initial;
+}
+
 bool TokenNetwork::bound_makespan(Time ub) {
   return add_temporal(TemporalNetwork::origin(), makespan_, 0, ub, "the makespan bound");
 }
@@ -579,7 +576,9 @@ std::vector<Flaw> TokenNetwork::flaws() const {
     if (t.state != Token::State::kPlaced) continue;
     const Timeline& tl = timelines_[t.timeline];
     const ClassDef& cls = model_.classes[problem_.objects[tl.object].class_index];
-    for (int s : model_.schemata_for(cls.attributes[tl.attribute].name, t.predicate)) {
+    std::vector<int> schemata;
+    if (!is_initial(id)) schemata = model_.schemata_for(cls.attributes[tl.attribute].name, t.predicate);
+    for (int s : schemata) {
       const auto& done = instantiated_[id];
       if (std::find(done.begin(), done.end(), s) != done.end()) continue;
       VariableId undecided = 0;

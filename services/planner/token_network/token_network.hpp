@@ -8,7 +8,9 @@
 // Configuration constraints are instantiated automatically: once a token is placed and the
 // constants of a schema's master pattern are decided, the schema's requirements with a single
 // allowed value create their slave tokens at once (the paper's "third requirement needs no
-// selection"); requirements with several values become flaws.
+// selection"); requirements with several values become flaws. Timelines may have gaps
+// between tokens (the attribute's value is then unconstrained); a model that needs
+// transitions says so with schemata (pointAt is reached by a turn, see examples/camera.model).
 //
 // Every operation is undone exactly by undo_to(mark()): the token network, the temporal
 // network and the constraint network all return to the marked state (chronological undo).
@@ -115,6 +117,9 @@ class TokenNetwork {
   std::string parameter_text(TokenId t, std::size_t i) const;
   // Token could take the pattern's values (predicate and constants), as far as domains tell.
   bool may_merge(TokenId a, TokenId b) const;
+  // Initial values are the given state: configuration constraints are not applied to them
+  // (what led to them lies before the horizon).
+  bool is_initial(TokenId t) const;
 
   std::size_t decisions_applied() const { return decisions_; }
 

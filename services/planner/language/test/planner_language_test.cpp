@@ -1,6 +1,5 @@
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <sstream>
 
 #include "domain_model.hpp"
@@ -11,10 +10,8 @@ namespace autonomy::planner {
 namespace {
 
 std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
+  Diagnostics errors;
+  return read_text_file(path, &errors).value_or("");
 }
 
 TEST(PlannerLanguage, TheCameraExampleReadsAsInThePaper) {

@@ -2,7 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
 #include <random>
 #include <sstream>
 
@@ -12,10 +11,8 @@ namespace autonomy::planner {
 namespace {
 
 std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
+  Diagnostics errors;
+  return read_text_file(path, &errors).value_or("");
 }
 
 struct Camera {

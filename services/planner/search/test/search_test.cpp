@@ -1,0 +1,158 @@
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "jobshop_instance.hpp"
+#include "plan_validator.hpp"
+#include "planner.hpp"
+#include "planner_language.hpp"
+
+namespace autonomy::planner {
+namespace {
+
+struct Loaded {
+  DomainModel model;
+  PlanningProblem problem;
+};
+
+Loaded load(const std::string& model_file, const std::string& problem_text) {
+  Diagnostics errors;
+  auto text = read_text_file(model_file, &errors);
+  auto m = parse_model(*text, model_file, &errors);
+  auto model = build_domain_model(*m, &errors);
+  EXPECT_TRUE(model) << to_string(errors);
+  auto p = parse_problem(problem_text, "test.problem", &errors);
+  EXPECT_TRUE(p) << to_string(errors);
+  auto problem = build_problem(*model, *p, &errors);
+  EXPECT_TRUE(problem) << to_string(errors);
+  return {*model, *problem};
+}
+
+const char* kCameraModel = PLANNER_EXAMPLES_DIR "/camera.model";
+
+const PlanToken* find(const FlexiblePlan& plan, const std::string& timeline, const std::string& predicate,
+                      const std::string& parameter = "") {
+  for (const PlanToken& t : plan.tokens)
+    if (t.timeline() == timeline && t.predicate == predicate &&
+        (parameter.empty() || (!t.parameters.empty() && t.parameters[0] == parameter)))
+      return &t;
+  return nullptr;
+}
+
+TEST(Search, TheCameraExamplePlansATurnThenThePicture) {
+  Diagnostics errors;
+  Loaded c = load(kCameraModel, *read_text_file(PLANNER_EXAMPLES_DIR "/camera.problem", &errors));
+  for (const std::string& engine : search_engine_names()) {
+    PlanningOptions options;
+    options.engine = engine;
+    options.termination.max_decisions = 10000;
+    PlanResult r = make_plan(c.model, c.problem, options);
+    ASSERT_EQ(r.status, PlanStatus::kPlanFound) << engine << ": " << r.explanation;
+    const FlexiblePlan& plan = *r.plan;
+    EXPECT_EQ(validate_plan(c.model, c.problem, plan), std::vector<std::string>{}) << engine;
+    const PlanToken* picture = find(plan, "dsone.camera", "picture", "asteroid");
+    const PlanToken* turn = find(plan, "dsone.attitude", "turning");
+    const PlanToken* point = find(plan, "dsone.attitude", "pointAt", "asteroid");
+    ASSERT_TRUE(picture && turn && point) << engine;
+    EXPECT_EQ(turn->parameters, (std::vector<std::string>{"star", "asteroid"}));
+    // The turn takes at least 20, so the picture starts no earlier than 20; it must end by 150.
+    EXPECT_GE(picture->start_lb, 20);
+    EXPECT_LE(picture->end_ub, 150);
+    // Flexible: the picture can still slide (its start has a window, not a time).
+    EXPECT_LT(picture->start_lb, picture->start_ub);
+    EXPECT_LE(point->start_ub, picture->start_ub);
+    // The camera is ready right before and after: three tokens on its timeline.
+    EXPECT_EQ(plan.timelines[1].name, "dsone.camera");
+    EXPECT_EQ(plan.timelines[1].tokens.size(), 3u) << engine;
+    EXPECT_EQ(to_message(plan).tokens_size(), int(plan.tokens.size()));
+  }
+}
+
+TEST(Search, ATooShortWindowIsInfeasibleFromTheStartWithItsStatements) {
+  Loaded c = load(kCameraModel,
+                  "problem p\nhorizon 100\nobject s : Spacecraft\n"
+                  "goal g: s.camera == picture(comet) start [10, 20] end [0, 12]\n");
+  PlanResult r = make_plan(c.model, c.problem, {});
+  EXPECT_EQ(r.status, PlanStatus::kInfeasible);
+  EXPECT_NE(r.explanation.find("test.problem:4"), std::string::npos) << r.explanation;
+  EXPECT_NE(r.explanation.find("duration of picture"), std::string::npos) << r.explanation;
+}
+
+TEST(Search, TwoPicturesAtOnceExhaustTheSearch) {
+  // Each is fine alone; the camera cannot take both (they would overlap on one timeline).
+  Loaded c = load(kCameraModel,
+                  "problem p\nhorizon 100\nobject s : Spacecraft\n"
+                  "initial s.attitude == pointAt(comet)\n"
+                  "goal a: s.camera == picture(comet) start [30, 30]\n"
+                  "goal b: s.camera == picture(comet) start [32, 32] duration [9, 9]\n");
+  PlanningOptions options;
+  options.termination.max_decisions = 100000;
+  PlanResult r = make_plan(c.model, c.problem, options);
+  EXPECT_EQ(r.status, PlanStatus::kInfeasible) << to_string(r.status);
+  EXPECT_GT(r.statistics.backtracks, 0u);
+}
+
+TEST(Search, AnUnknownEngineIsAnInvalidRequest) {
+  Loaded c = load(kCameraModel, "problem p\nhorizon 100\nobject s : Spacecraft\n");
+  PlanningOptions options;
+  options.engine = "annealing";
+  EXPECT_EQ(make_plan(c.model, c.problem, options).status, PlanStatus::kInvalidRequest);
+  EXPECT_EQ(make_search_engine("annealing"), nullptr);
+}
+
+TEST(Search, TheDecisionBudgetStopsTheRun) {
+  Diagnostics errors;
+  Loaded c = load(kCameraModel, *read_text_file(PLANNER_EXAMPLES_DIR "/camera.problem", &errors));
+  PlanningOptions options;
+  options.termination.max_decisions = 2;
+  EXPECT_EQ(make_plan(c.model, c.problem, options).status, PlanStatus::kOutOfBudget);
+  bool stopped = false;
+  options.termination.max_decisions = static_cast<std::size_t>(-1);
+  options.termination.stop = [&] { return stopped = true; };
+  EXPECT_EQ(make_plan(c.model, c.problem, options).status, PlanStatus::kOutOfBudget);
+  EXPECT_TRUE(stopped);
+}
+
+// Job-shop instances as timelines: valid schedules, makespans against the known optimum.
+struct JobShopCase {
+  const char* name;
+  long optimum;
+  std::size_t budget;
+};
+
+class JobShop : public ::testing::TestWithParam<JobShopCase> {};
+
+TEST_P(JobShop, SchedulesAreValidAndNoBetterThanTheOptimum) {
+  const JobShopCase& jc = GetParam();
+  Diagnostics errors;
+  const std::string file = std::string(PLANNER_EXAMPLES_DIR "/jobshop/") + jc.name;
+  auto inst = parse_jobshop(*read_text_file(file, &errors), file, &errors);
+  ASSERT_TRUE(inst) << to_string(errors);
+  auto model = build_domain_model(jobshop_model(*inst), &errors);
+  auto problem = build_problem(*model, jobshop_problem(*inst), &errors);
+  ASSERT_TRUE(model && problem) << to_string(errors);
+  PlanningOptions options;
+  options.termination.max_decisions = jc.budget;
+  std::vector<std::int64_t> improvements;
+  options.on_improvement = [&](const FlexiblePlan& p) { improvements.push_back(p.makespan); };
+  PlanResult r = make_plan(*model, *problem, options);
+  ASSERT_TRUE(r.plan) << to_string(r.status);
+  EXPECT_EQ(validate_plan(*model, *problem, *r.plan), std::vector<std::string>{});
+  const std::int64_t makespan = r.plan->makespan;
+  // No valid schedule beats the optimum; a proof must land on it exactly.
+  EXPECT_GE(makespan, jc.optimum);
+  if (r.status == PlanStatus::kOptimal) EXPECT_EQ(makespan, jc.optimum);
+  for (std::size_t i = 1; i < improvements.size(); ++i) EXPECT_LT(improvements[i], improvements[i - 1]);
+  std::printf("%s: makespan %lld (optimum %ld, gap %.1f%%), %s, %zu decisions, %zu backtracks, %zu plans\n",
+              jc.name, static_cast<long long>(makespan), jc.optimum,
+              100.0 * double(makespan - jc.optimum) / double(jc.optimum), to_string(r.status),
+              r.statistics.decisions, r.statistics.backtracks, improvements.size());
+}
+
+INSTANTIATE_TEST_SUITE_P(Instances, JobShop,
+                         ::testing::Values(JobShopCase{"ft06", 55, 200000}, JobShopCase{"la01", 666, 50000},
+                                           JobShopCase{"la05", 593, 50000}),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+}  // namespace
+}  // namespace autonomy::planner
