@@ -3,8 +3,8 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
-#include <sstream>
 #include <map>
+#include <sstream>
 #include <stdexcept>
 #include <vector>
 

@@ -498,10 +498,9 @@ std::optional<PlanningProblem> build_problem(const DomainModel& model, const pb:
 }
 
 const char* relation_name(pb::TemporalRelation::Kind kind) {
-  static const char* names[] = {"before",          "after",          "startsBefore",
-                                "startsAfter",     "endsBefore",     "endsAfter",
-                                "startsBeforeEnd", "endsAfterStart", "contains",
-                                "containedBy",     "parallels",      "paralleledBy"};
+  static const char* names[] = {"before",     "after",       "startsBefore",    "startsAfter",
+                                "endsBefore", "endsAfter",   "startsBeforeEnd", "endsAfterStart",
+                                "contains",   "containedBy", "parallels",       "paralleledBy"};
   int k = int(kind);
   return k >= 0 && k < 12 ? names[k] : "unknown relation";
 }

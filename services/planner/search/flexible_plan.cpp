@@ -25,7 +25,8 @@ FlexiblePlan extract_plan(const TokenNetwork& net) {
       PlanToken pt;
       pt.id = std::uint32_t(plan.tokens.size());
       pt.object = problem.objects[tl.object].name;
-      pt.attribute = model.classes[problem.objects[tl.object].class_index].attributes[tl.attribute].name;
+      pt.attribute =
+          model.classes[problem.objects[tl.object].class_index].attributes[tl.attribute].name;
       pt.predicate = model.predicates[t.predicate].name;
       for (std::size_t i = 0; i < t.parameters.size(); ++i) {
         pt.parameters.push_back(net.parameter_text(id, i));

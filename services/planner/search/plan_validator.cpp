@@ -19,26 +19,41 @@ bool relation_holds(pb::TemporalRelation::Kind kind, Interval i, Interval j, std
   auto in = [&](std::int64_t from, std::int64_t to) { return to - from >= lb && to - from <= ub; };
   using R = pb::TemporalRelation;
   switch (kind) {
-    case R::BEFORE: return in(i.end, j.start);
-    case R::AFTER: return in(j.end, i.start);
-    case R::STARTS_BEFORE: return in(i.start, j.start);
-    case R::STARTS_AFTER: return in(j.start, i.start);
-    case R::ENDS_BEFORE: return in(i.end, j.end);
-    case R::ENDS_AFTER: return in(j.end, i.end);
-    case R::STARTS_BEFORE_END: return in(i.start, j.end);
-    case R::ENDS_AFTER_START: return in(j.start, i.end);
-    case R::CONTAINS: return in(i.start, j.start) && in(j.end, i.end);
-    case R::CONTAINED_BY: return in(j.start, i.start) && in(i.end, j.end);
-    case R::PARALLELS: return in(i.start, j.start) && in(i.end, j.end);
-    case R::PARALLELED_BY: return in(j.start, i.start) && in(j.end, i.end);
-    default: return false;
+    case R::BEFORE:
+      return in(i.end, j.start);
+    case R::AFTER:
+      return in(j.end, i.start);
+    case R::STARTS_BEFORE:
+      return in(i.start, j.start);
+    case R::STARTS_AFTER:
+      return in(j.start, i.start);
+    case R::ENDS_BEFORE:
+      return in(i.end, j.end);
+    case R::ENDS_AFTER:
+      return in(j.end, i.end);
+    case R::STARTS_BEFORE_END:
+      return in(i.start, j.end);
+    case R::ENDS_AFTER_START:
+      return in(j.start, i.end);
+    case R::CONTAINS:
+      return in(i.start, j.start) && in(j.end, i.end);
+    case R::CONTAINED_BY:
+      return in(j.start, i.start) && in(i.end, j.end);
+    case R::PARALLELS:
+      return in(i.start, j.start) && in(i.end, j.end);
+    case R::PARALLELED_BY:
+      return in(j.start, i.start) && in(j.end, i.end);
+    default:
+      return false;
   }
 }
 
 bool ground(const PlanToken& t, std::size_t i) {
   return std::abs(t.parameter_bounds[i].first - t.parameter_bounds[i].second) < 1e-9;
 }
-double value(const PlanToken& t, std::size_t i) { return t.parameter_bounds[i].first; }
+double value(const PlanToken& t, std::size_t i) {
+  return t.parameter_bounds[i].first;
+}
 
 std::string describe(const PlanToken& t) {
   std::string s = "token " + std::to_string(t.id) + " (" + t.timeline() + " == " + t.predicate;
@@ -103,13 +118,26 @@ std::vector<std::string> validate_plan(const DomainModel& model, const PlanningP
       using K = pb::ParameterConstraint;
       bool ok = true;
       switch (c.kind) {
-        case K::EQUAL: ok = std::abs(x[0] - x[1]) < 1e-6; break;
-        case K::NOT_EQUAL: ok = std::abs(x[0] - x[1]) >= 1e-6; break;
-        case K::LESS_EQUAL: ok = x[0] <= x[1] + 1e-6; break;
-        case K::LESS: ok = x[0] < x[1]; break;
-        case K::SUM_PRODUCT: ok = std::abs(x[0] + x[1] * x[2] - x[3]) < 1e-6; break;
-        case K::MEMBER: ok = std::find(x.begin() + 1, x.end(), x[0]) != x.end(); break;
-        default: break;
+        case K::EQUAL:
+          ok = std::abs(x[0] - x[1]) < 1e-6;
+          break;
+        case K::NOT_EQUAL:
+          ok = std::abs(x[0] - x[1]) >= 1e-6;
+          break;
+        case K::LESS_EQUAL:
+          ok = x[0] <= x[1] + 1e-6;
+          break;
+        case K::LESS:
+          ok = x[0] < x[1];
+          break;
+        case K::SUM_PRODUCT:
+          ok = std::abs(x[0] + x[1] * x[2] - x[3]) < 1e-6;
+          break;
+        case K::MEMBER:
+          ok = std::find(x.begin() + 1, x.end(), x[0]) != x.end();
+          break;
+        default:
+          break;
       }
       if (!ok) fail(describe(t) + ": a parameter constraint does not hold");
     }
@@ -121,7 +149,8 @@ std::vector<std::string> validate_plan(const DomainModel& model, const PlanningP
   for (const PlanTimeline& tl : plan.timelines) {
     for (std::size_t k = 1; k < tl.tokens.size(); ++k) {
       const PlanToken &a = plan.tokens[tl.tokens[k - 1]], &b = plan.tokens[tl.tokens[k]];
-      if (a.timeline() != tl.name || b.timeline() != tl.name) fail(tl.name + ": a token of another timeline");
+      if (a.timeline() != tl.name || b.timeline() != tl.name)
+        fail(tl.name + ": a token of another timeline");
       if (a.end_lb > b.start_lb) fail(describe(a) + " overlaps " + describe(b) + " on " + tl.name);
     }
   }
@@ -129,7 +158,8 @@ std::vector<std::string> validate_plan(const DomainModel& model, const PlanningP
   for (const PlanToken& t : plan.tokens) {
     if (predicate_of[t.id] < 0) continue;
     // Initial values are the given state (checked against their facts below).
-    if (t.fact >= 0 && std::size_t(t.fact) < problem.facts.size() && problem.facts[t.fact].initial) continue;
+    if (t.fact >= 0 && std::size_t(t.fact) < problem.facts.size() && problem.facts[t.fact].initial)
+      continue;
     for (int s : model.schemata_for(t.attribute, predicate_of[t.id])) {
       const ConfigurationSchema& schema = model.schemata[s];
       std::vector<std::optional<double>> bound(schema.variables.size());
@@ -138,7 +168,8 @@ std::vector<std::string> validate_plan(const DomainModel& model, const PlanningP
         const PatternArgument& a = schema.master.arguments[i];
         if (a.kind == PatternArgument::Kind::kConstant && !(ground(t, i) && value(t, i) == a.value))
           applies = false;
-        if (a.kind == PatternArgument::Kind::kVariable && ground(t, i)) bound[a.variable] = value(t, i);
+        if (a.kind == PatternArgument::Kind::kVariable && ground(t, i))
+          bound[a.variable] = value(t, i);
       }
       if (!applies) continue;
       for (const RequirementDef& rq : schema.requirements) {
@@ -146,23 +177,26 @@ std::vector<std::string> validate_plan(const DomainModel& model, const PlanningP
         for (const ValuePatternDef& alt : rq.alternatives) {
           for (const PlanToken& u : plan.tokens) {
             if (met) break;
-            if (u.object != t.object || u.attribute != alt.attribute || predicate_of[u.id] != alt.predicate)
+            if (u.object != t.object || u.attribute != alt.attribute ||
+                predicate_of[u.id] != alt.predicate)
               continue;
             bool match = true;
             for (std::size_t i = 0; i < alt.arguments.size() && match; ++i) {
               const PatternArgument& a = alt.arguments[i];
-              if (a.kind == PatternArgument::Kind::kConstant) match = ground(u, i) && value(u, i) == a.value;
+              if (a.kind == PatternArgument::Kind::kConstant)
+                match = ground(u, i) && value(u, i) == a.value;
               if (a.kind == PatternArgument::Kind::kVariable && bound[a.variable])
                 match = ground(u, i) && value(u, i) == *bound[a.variable];
             }
-            met = match && relation_holds(rq.relation, {t.start_lb, t.end_lb}, {u.start_lb, u.end_lb},
-                                          rq.lb, rq.ub);
+            met = match && relation_holds(rq.relation, {t.start_lb, t.end_lb},
+                                          {u.start_lb, u.end_lb}, rq.lb, rq.ub);
           }
         }
         if (!met)
-          fail(describe(t) + " lacks " + relation_name(rq.relation) + "(" + rq.alternatives[0].attribute +
-               " == " + model.predicates[rq.alternatives[0].predicate].name + "...) required by the schema at " +
-               schema.where);
+          fail(describe(t) + " lacks " + relation_name(rq.relation) + "(" +
+               rq.alternatives[0].attribute +
+               " == " + model.predicates[rq.alternatives[0].predicate].name +
+               "...) required by the schema at " + schema.where);
       }
     }
   }
@@ -172,7 +206,8 @@ std::vector<std::string> validate_plan(const DomainModel& model, const PlanningP
     if (t.fact >= 0) achiever[t.fact] = &t;
   for (std::size_t f = 0; f < problem.facts.size(); ++f) {
     const FactDef& fact = problem.facts[f];
-    const std::string name = (fact.initial ? "initial value " : "goal ") + fact.label + " (" + fact.where + ")";
+    const std::string name =
+        (fact.initial ? "initial value " : "goal ") + fact.label + " (" + fact.where + ")";
     auto it = achiever.find(int(f));
     if (it == achiever.end()) {
       bool omitted = std::find(plan.omitted_goals.begin(), plan.omitted_goals.end(), fact.label) !=
@@ -182,15 +217,18 @@ std::vector<std::string> validate_plan(const DomainModel& model, const PlanningP
     }
     const PlanToken& t = *it->second;
     const ClassDef& cls = model.classes[problem.objects[fact.object].class_index];
-    if (t.object != problem.objects[fact.object].name || t.attribute != cls.attributes[fact.attribute].name ||
-        predicate_of[t.id] != fact.predicate)
+    if (t.object != problem.objects[fact.object].name ||
+        t.attribute != cls.attributes[fact.attribute].name || predicate_of[t.id] != fact.predicate)
       fail(name + ": achieved by " + describe(t) + ", a different value");
     for (std::size_t i = 0; i < fact.arguments.size() && i < t.parameter_bounds.size(); ++i)
       if (fact.arguments[i].kind == PatternArgument::Kind::kConstant &&
           !(ground(t, i) && value(t, i) == fact.arguments[i].value))
         fail(name + ": parameter " + std::to_string(i) + " differs in " + describe(t));
-    auto within = [](std::int64_t v, std::int64_t lb, std::int64_t ub) { return v >= lb && v <= ub; };
-    if (!within(t.start_lb, fact.start_lb, fact.start_ub) || !within(t.end_lb, fact.end_lb, fact.end_ub) ||
+    auto within = [](std::int64_t v, std::int64_t lb, std::int64_t ub) {
+      return v >= lb && v <= ub;
+    };
+    if (!within(t.start_lb, fact.start_lb, fact.start_ub) ||
+        !within(t.end_lb, fact.end_lb, fact.end_ub) ||
         !within(t.end_lb - t.start_lb, fact.duration_lb, fact.duration_ub))
       fail(name + ": " + describe(t) + " misses the goal's time bounds");
   }
@@ -199,8 +237,8 @@ std::vector<std::string> validate_plan(const DomainModel& model, const PlanningP
     if (a == achiever.end() || b == achiever.end()) continue;  // omitted: nothing to relate
     if (!relation_holds(r.relation, {a->second->start_lb, a->second->end_lb},
                         {b->second->start_lb, b->second->end_lb}, r.lb, r.ub))
-      fail(std::string("relation ") + relation_name(r.relation) + " (" + r.where + ") does not hold between " +
-           describe(*a->second) + " and " + describe(*b->second));
+      fail(std::string("relation ") + relation_name(r.relation) + " (" + r.where +
+           ") does not hold between " + describe(*a->second) + " and " + describe(*b->second));
   }
   // Resources, per object: concurrent uses within capacity, reservoir levels within bounds.
   for (const ObjectDef& object : problem.objects) {
@@ -230,7 +268,8 @@ std::vector<std::string> validate_plan(const DomainModel& model, const PlanningP
           }
         }
       } else {
-        std::sort(uses.begin(), uses.end(), [](const Use& a, const Use& b) { return a.end < b.end; });
+        std::sort(uses.begin(), uses.end(),
+                  [](const Use& a, const Use& b) { return a.end < b.end; });
         double level = res.initial_level;
         for (const Use& u : uses) {
           level += u.amount;

@@ -4,11 +4,16 @@ namespace autonomy::planner {
 
 const char* to_string(PlanStatus status) {
   switch (status) {
-    case PlanStatus::kOptimal: return "optimal";
-    case PlanStatus::kPlanFound: return "plan found";
-    case PlanStatus::kInfeasible: return "infeasible";
-    case PlanStatus::kOutOfBudget: return "out of budget";
-    case PlanStatus::kInvalidRequest: return "invalid request";
+    case PlanStatus::kOptimal:
+      return "optimal";
+    case PlanStatus::kPlanFound:
+      return "plan found";
+    case PlanStatus::kInfeasible:
+      return "infeasible";
+    case PlanStatus::kOutOfBudget:
+      return "out of budget";
+    case PlanStatus::kInvalidRequest:
+      return "invalid request";
   }
   return "?";
 }
@@ -50,13 +55,13 @@ PlanResult make_plan(const DomainModel& model, const PlanningProblem& problem,
       left.max_decisions -= std::min(left.max_decisions, out.statistics.decisions);
     if (out.status != SearchStatus::kPlanFound) {
       if (!result.plan) {
-        result.status =
-            out.status == SearchStatus::kExhausted ? PlanStatus::kInfeasible : PlanStatus::kOutOfBudget;
+        result.status = out.status == SearchStatus::kExhausted ? PlanStatus::kInfeasible
+                                                               : PlanStatus::kOutOfBudget;
         if (result.status == PlanStatus::kInfeasible)
           result.explanation = "every choice of slots, merges and values fails (search exhausted)";
       } else {
-        result.status = out.status == SearchStatus::kExhausted ? PlanStatus::kOptimal
-                                                               : PlanStatus::kPlanFound;
+        result.status =
+            out.status == SearchStatus::kExhausted ? PlanStatus::kOptimal : PlanStatus::kPlanFound;
       }
       return result;
     }

@@ -51,8 +51,8 @@ using FlawSelector = std::function<std::size_t(const TokenNetwork&, const std::v
 FlawSelector earliest_first_selector();
 
 struct EngineOptions {
-  FlawSelector selector;      // empty: earliest_first_selector()
-  unsigned seed = 1;          // for engines that sample
+  FlawSelector selector;          // empty: earliest_first_selector()
+  unsigned seed = 1;              // for engines that sample
   std::size_t discrepancies = 2;  // limited discrepancy search: the most allowed per probe
 };
 

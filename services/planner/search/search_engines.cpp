@@ -165,6 +165,8 @@ std::unique_ptr<SearchEngine> make_search_engine(const std::string& name,
   return nullptr;
 }
 
-std::vector<std::string> search_engine_names() { return {"chronological", "discrepancy"}; }
+std::vector<std::string> search_engine_names() {
+  return {"chronological", "discrepancy"};
+}
 
 }  // namespace autonomy::planner

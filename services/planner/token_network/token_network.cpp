@@ -266,7 +266,7 @@ bool TokenNetwork::initialize() {
     if (!relate(of_fact[r.from], of_fact[r.to], r.relation, to_time(r.lb), to_time(r.ub), why))
       return false;
   }
-  return propagate_constraints("the problem's parameters") && settle();
+  return propagate_constraints("the problem's parameters") && exclusion_propagation() && settle();
 }
 
 // Constraint propagation, with the duration variables tied to the temporal network both ways
@@ -340,7 +340,7 @@ bool TokenNetwork::apply(const Decision& d) {
       ok = choose(d.instance, d.requirement, d.index);
       break;
   }
-  return ok && load_check() && settle();
+  return ok && exclusion_propagation() && settle();
 }
 
 bool TokenNetwork::insert(TokenId id, std::size_t position) {
@@ -493,45 +493,80 @@ bool TokenNetwork::settle() {
   return true;
 }
 
-// Overload check on each timeline: tokens that can never share a slot (all parameters decided
-// and different) each need their own time, so every window [a, b] must hold the durations of
-// the tokens that lie entirely within it.
-bool TokenNetwork::load_check() const {
-  std::vector<std::vector<TokenId>> by_timeline(timelines_.size());
-  for (TokenId id = 0; id < tokens_.size(); ++id) {
-    const Token& t = tokens_[id];
-    if (t.state != Token::State::kFree && t.state != Token::State::kPlaced) continue;
-    if (t.min_duration <= 0) continue;
-    bool decided = true;
-    for (VariableId v : t.parameters) decided &= cn_.domain(v).is_singleton();
-    if (decided) by_timeline[t.timeline].push_back(id);
-  }
-  for (auto& ids : by_timeline) {
-    if (ids.size() < 2) continue;
-    // Identical values could still be merged: keep one token per value.
-    std::map<std::vector<double>, TokenId> unique;
-    for (TokenId id : ids) {
-      std::vector<double> key{double(tokens_[id].predicate)};
-      for (VariableId v : tokens_[id].parameters) key.push_back(cn_.domain(v).lo());
-      unique.emplace(key, id);
+// Tokens on one timeline that can never share a slot (all parameters decided, values
+// different, positive duration) exclude each other in time. Two checks on them, repeated to a
+// fixed point:
+//  - overload: every window [a, b] must hold the durations of the tokens entirely within it;
+//  - detectable precedence: when B cannot end before A's latest start, A precedes B, which is
+//    added to the temporal network (as the search would find out only by trying every slot).
+bool TokenNetwork::exclusion_propagation() {
+  for (int round = 0; round < 8; ++round) {
+    std::vector<std::vector<TokenId>> by_timeline(timelines_.size());
+    for (TokenId id = 0; id < tokens_.size(); ++id) {
+      const Token& t = tokens_[id];
+      if (t.state != Token::State::kFree && t.state != Token::State::kPlaced) continue;
+      if (t.min_duration <= 0) continue;
+      bool decided = true;
+      for (VariableId v : t.parameters) decided &= cn_.domain(v).is_singleton();
+      if (decided) by_timeline[t.timeline].push_back(id);
     }
-    if (unique.size() < 2) continue;
-    struct Window {
-      Time est, lct, d;
-    };
-    std::vector<Window> w;
-    for (auto& [key, id] : unique)
-      w.push_back(
-          {tn_.earliest(tokens_[id].start), tn_.latest(tokens_[id].end), tokens_[id].min_duration});
-    std::sort(w.begin(), w.end(), [](const Window& a, const Window& b) { return a.lct < b.lct; });
-    for (const Window& from : w) {
-      Time load = 0;
-      for (const Window& x : w) {
-        if (x.est < from.est) continue;
-        load += x.d;
-        if (from.est + load > x.lct) return false;
+    bool added = false;
+    for (auto& ids : by_timeline) {
+      if (ids.size() < 2) continue;
+      // Identical values could still be merged: keep one token per value.
+      std::map<std::vector<double>, TokenId> unique;
+      for (TokenId id : ids) {
+        std::vector<double> key{double(tokens_[id].predicate)};
+        for (VariableId v : tokens_[id].parameters) key.push_back(cn_.domain(v).lo());
+        unique.emplace(key, id);
+      }
+      if (unique.size() < 2) continue;
+      struct Window {
+        Time est, lct, d;
+      };
+      std::vector<Window> w;
+      std::vector<TokenId> members;
+      for (auto& [key, id] : unique) {
+        w.push_back({tn_.earliest(tokens_[id].start), tn_.latest(tokens_[id].end),
+                     tokens_[id].min_duration});
+        members.push_back(id);
+      }
+      std::vector<Window> by_lct = w;
+      std::sort(by_lct.begin(), by_lct.end(),
+                [](const Window& a, const Window& b) { return a.lct < b.lct; });
+      for (const Window& from : by_lct) {
+        Time load = 0;
+        for (const Window& x : by_lct) {
+          if (x.est < from.est) continue;
+          load += x.d;
+          if (from.est + load > x.lct) {
+            conflict_ = "overload on " + timelines_[&ids - &by_timeline[0]].name;
+            return false;
+          }
+        }
+      }
+      for (std::size_t i = 0; i < members.size(); ++i) {
+        for (std::size_t j = 0; j < members.size(); ++j) {
+          if (i == j) continue;
+          const Token &a = tokens_[members[i]], &b = tokens_[members[j]];
+          if (a.state == Token::State::kPlaced && b.state == Token::State::kPlaced) continue;
+          // B before A would need est(B) + d(B) <= lst(A) = latest(A.start).
+          if (tn_.earliest(b.start) + b.min_duration <= tn_.latest(a.start)) continue;
+          if (tn_.earliest(b.start) >= tn_.earliest(a.end) &&
+              tn_.latest(a.end) <= tn_.earliest(b.start))
+            continue;  // already apart
+          auto key = std::make_pair(members[i], members[j]);
+          if (precedences_.count(key)) continue;
+          precedences_.insert(key);
+          on_undo([this, key] { precedences_.erase(key); });
+          if (!add_temporal(a.end, b.start, 0, kInfinity,
+                            "exclusion on " + timelines_[a.timeline].name))
+            return false;
+          added = true;
+        }
       }
     }
+    if (!added) return true;
   }
   return true;
 }
@@ -577,7 +612,8 @@ std::vector<Flaw> TokenNetwork::flaws() const {
     const Timeline& tl = timelines_[t.timeline];
     const ClassDef& cls = model_.classes[problem_.objects[tl.object].class_index];
     std::vector<int> schemata;
-    if (!is_initial(id)) schemata = model_.schemata_for(cls.attributes[tl.attribute].name, t.predicate);
+    if (!is_initial(id))
+      schemata = model_.schemata_for(cls.attributes[tl.attribute].name, t.predicate);
     for (int s : schemata) {
       const auto& done = instantiated_[id];
       if (std::find(done.begin(), done.end(), s) != done.end()) continue;

@@ -17,6 +17,7 @@
 #include <cstddef>
 #include <functional>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -137,7 +138,7 @@ class TokenNetwork {
   bool settle();
   enum class Applies { kYes, kNo, kUndecided };
   Applies applies(TokenId t, const ValuePatternDef& master, VariableId* undecided) const;
-  bool load_check() const;  // timeline energy: unordered exclusive tokens fit their windows
+  bool exclusion_propagation();  // overload and detectable precedences on each timeline
   void on_undo(std::function<void()> f) { trail_.push_back(std::move(f)); }
 
   const DomainModel& model_;
@@ -149,7 +150,8 @@ class TokenNetwork {
   std::vector<SchemaInstance> instances_;
   std::vector<std::vector<int>> instantiated_;  // per token: schemata already applied (or not)
   std::vector<std::function<void()>> trail_;
-  std::vector<std::string> temporal_reasons_;  // per temporal constraint id: the statement
+  std::set<std::pair<TokenId, TokenId>> precedences_;  // inferred by exclusion_propagation
+  std::vector<std::string> temporal_reasons_;          // per temporal constraint id: the statement
   TimepointId makespan_ = 0;
   std::string conflict_;
   std::size_t decisions_ = 0;

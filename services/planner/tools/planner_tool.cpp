@@ -25,7 +25,8 @@ int main(int argc, char** argv) {
   bool quiet = false;
   app.add_option("--model", model_file, "model file (planner language)");
   app.add_option("--problem", problem_file, "problem file (planner language)");
-  app.add_option("--jobshop", jobshop_file, "an OR-Library job-shop instance instead of model + problem");
+  app.add_option("--jobshop", jobshop_file,
+                 "an OR-Library job-shop instance instead of model + problem");
   app.add_option("--engine", engine, "search engine: chronological or discrepancy");
   app.add_option("--seconds", seconds, "time budget (0: none)");
   app.add_option("--max-decisions", max_decisions, "decision budget (0: none)");
@@ -66,16 +67,20 @@ int main(int argc, char** argv) {
   options.engine = engine;
   if (max_decisions) options.termination.max_decisions = max_decisions;
   const auto started = std::chrono::steady_clock::now();
-  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };
+  auto elapsed = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  };
   if (seconds > 0) options.termination.stop = [&] { return elapsed() > seconds; };
   options.on_improvement = [&](const FlexiblePlan& p) {
-    std::fprintf(stderr, "plan: makespan %lld at %.3f s\n", static_cast<long long>(p.makespan), elapsed());
+    std::fprintf(stderr, "plan: makespan %lld at %.3f s\n", static_cast<long long>(p.makespan),
+                 elapsed());
   };
   PlanResult r = make_plan(*model, *problem, options);
   const double took = elapsed();
   std::fprintf(stderr, "status: %s\n", to_string(r.status));
   if (!r.explanation.empty()) std::fprintf(stderr, "why: %s\n", r.explanation.c_str());
-  std::fprintf(stderr, "decisions %zu, backtracks %zu, dead ends %zu, temporal propagations %zu, "
+  std::fprintf(stderr,
+               "decisions %zu, backtracks %zu, dead ends %zu, temporal propagations %zu, "
                "procedure calls %zu, %.3f s\n",
                r.statistics.decisions, r.statistics.backtracks, r.statistics.dead_ends,
                r.statistics.temporal_propagations, r.statistics.procedure_calls, took);
