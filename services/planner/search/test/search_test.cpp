@@ -92,6 +92,80 @@ TEST(Search, TwoPicturesAtOnceExhaustTheSearch) {
   EXPECT_GT(r.statistics.backtracks, 0u);
 }
 
+Loaded load_text(const std::string& model_text, const std::string& problem_text) {
+  Diagnostics errors;
+  auto m = parse_model(model_text, "test.model", &errors);
+  EXPECT_TRUE(m) << to_string(errors);
+  auto model = build_domain_model(*m, &errors);
+  EXPECT_TRUE(model) << to_string(errors);
+  auto p = parse_problem(problem_text, "test.problem", &errors);
+  EXPECT_TRUE(p) << to_string(errors);
+  auto problem = build_problem(*model, *p, &errors);
+  EXPECT_TRUE(problem) << to_string(errors);
+  return {*model, *problem};
+}
+
+// Each of the twelve relations, with bounds, yields a slave the independent validator accepts
+// (the token network's and the validator's readings of the relation agree) and whose distance
+// sits inside the bounds at the earliest times.
+TEST(Search, EveryTemporalRelationIsPlannedAsTheValidatorReadsIt) {
+  const char* relations[] = {"before",     "after",       "startsBefore",    "startsAfter",
+                             "endsBefore", "endsAfter",   "startsBeforeEnd", "endsAfterStart",
+                             "contains",   "containedBy", "parallels",       "paralleledBy"};
+  for (const char* rel : relations) {
+    Loaded c = load_text(
+        std::string("model r\npredicate a() duration [10, 10]\npredicate b() duration [4, 30]\n"
+                    "class C { attribute x = a  attribute y = b }\n(x == a) ") +
+            rel + "[2, 5](y == b)\n",
+        "problem p\nhorizon 200\nobject o : C\ngoal g: o.x == a start [50, 50]\n");
+    PlanResult r = make_plan(c.model, c.problem, {});
+    ASSERT_EQ(r.status, PlanStatus::kPlanFound) << rel << ": " << r.explanation;
+    EXPECT_EQ(validate_plan(c.model, c.problem, *r.plan), std::vector<std::string>{}) << rel;
+    const PlanToken* b = find(*r.plan, "o.y", "b");
+    ASSERT_TRUE(b) << rel;
+    EXPECT_EQ(b->origin, std::string(rel) + " of token 0") << rel;
+  }
+  // And a relation that cannot hold: b must end 2..5 before a starts yet start after a ends.
+  Loaded bad = load_text(
+      "model r\npredicate a() duration [10, 10]\npredicate b() duration [4, 30]\n"
+      "class C { attribute x = a  attribute y = b }\n(x == a) after[2, 5](y == b) startsAfter(y == "
+      "b)\n"
+      "(y == b) startsAfter[20, 30](x == a)\n",
+      "problem p\nhorizon 200\nobject o : C\ngoal g: o.x == a start [50, 50]\n");
+  EXPECT_EQ(make_plan(bad.model, bad.problem, {}).status, PlanStatus::kInfeasible);
+}
+
+// The paper's record(s, r, d, e): s + r * d == e with d the token's duration, in both
+// directions between the constraint network and the temporal network.
+TEST(Search, ADurationInAParameterConstraintFixesTheTokensLength) {
+  Loaded c = load_text(
+      "model rec\npredicate record(s: real[0, 100], r: real[1, 2], e: real[0, 100]) duration [1, "
+      "80]\n"
+      "  where s + r * duration == e\nclass Recorder { attribute data = record }\n",
+      "problem p\nhorizon 200\nobject rec : Recorder\ngoal g: rec.data == record(10, 2, 50)\n");
+  PlanResult r = make_plan(c.model, c.problem, {});
+  ASSERT_EQ(r.status, PlanStatus::kPlanFound) << r.explanation;
+  const PlanToken* t = find(*r.plan, "rec.data", "record");
+  ASSERT_TRUE(t);
+  EXPECT_EQ(t->duration_lb, 20);
+  EXPECT_EQ(t->duration_ub, 20);
+  EXPECT_EQ(validate_plan(c.model, c.problem, *r.plan), std::vector<std::string>{});
+}
+
+TEST(Search, AnOptionalGoalThatCannotFitIsLeftOutWithItsPenalty) {
+  Loaded c = load(
+      kCameraModel,
+      "problem p\nhorizon 100\nobject s : Spacecraft\n"
+      "initial s.attitude == pointAt(comet)\n"
+      "goal a: s.camera == picture(comet) start [30, 30]\n"
+      "optional goal b: s.camera == picture(comet) start [32, 32] duration [9, 9] penalty 4\n");
+  PlanResult r = make_plan(c.model, c.problem, {});
+  ASSERT_EQ(r.status, PlanStatus::kPlanFound) << r.explanation;
+  EXPECT_EQ(r.plan->omitted_goals, std::vector<std::string>{"b"});
+  EXPECT_EQ(r.plan->penalty, 4);
+  EXPECT_EQ(validate_plan(c.model, c.problem, *r.plan), std::vector<std::string>{});
+}
+
 TEST(Search, AnUnknownEngineIsAnInvalidRequest) {
   Loaded c = load(kCameraModel, "problem p\nhorizon 100\nobject s : Spacecraft\n");
   PlanningOptions options;
