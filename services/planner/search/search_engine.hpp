@@ -47,7 +47,8 @@ class SearchEngine {
 // Picks the flaw to work on next among the network's flaws (never empty).
 using FlawSelector = std::function<std::size_t(const TokenNetwork&, const std::vector<Flaw>&)>;
 // The default: flaws that decide whether a schema applies, then open disjunctions, then free
-// tokens by earliest possible start (ties: least slack), then other unbound parameters.
+// tokens by earliest possible start (ties: least slack), then resource conflicts, then other
+// unbound parameters.
 FlawSelector earliest_first_selector();
 
 struct EngineOptions {

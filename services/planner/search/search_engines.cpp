@@ -11,6 +11,8 @@ FlawSelector earliest_first_selector() {
       switch (f.kind) {
         case Flaw::Kind::kUnboundParameter:
           if (f.blocks_schema) return {0, 0, 0, f.token};
+          return {4, 0, 0, f.token};
+        case Flaw::Kind::kResourceConflict:
           return {3, 0, 0, f.token};
         case Flaw::Kind::kOpenRequirement:
           return {1, 0, 0, f.token};
@@ -19,7 +21,7 @@ FlawSelector earliest_first_selector() {
           return {2, tn.earliest(t.start), tn.latest(t.start), f.token};
         }
       }
-      return {4, 0, 0, 0};
+      return {5, 0, 0, 0};
     };
     std::size_t best = 0;
     auto best_rank = rank(flaws[0]);

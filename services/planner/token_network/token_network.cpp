@@ -51,6 +51,10 @@ std::string Decision::describe() const {
     case Kind::kRestrict:
       out << "restrict variable " << variable << " to " << domain.to_string();
       break;
+    case Kind::kOrder:
+      out << "token " << token << " ends before token " << index
+          << (requirement ? " ends" : " starts");
+      break;
     case Kind::kChoose:
       out << "instance " << instance << " requirement " << requirement << ": alternative " << index;
       break;
@@ -338,6 +342,11 @@ bool TokenNetwork::apply(const Decision& d) {
       break;
     case Decision::Kind::kChoose:
       ok = choose(d.instance, d.requirement, d.index);
+      break;
+    case Decision::Kind::kOrder:
+      ok = add_temporal(tokens_[d.token].end,
+                        d.requirement == 1 ? tokens_[d.index].end : tokens_[d.index].start, 0,
+                        kInfinity, "resource order");
       break;
   }
   return ok && exclusion_propagation() && settle();
@@ -642,6 +651,84 @@ std::vector<Flaw> TokenNetwork::flaws() const {
         f.requirement = r;
         out.push_back(f);
       }
+  for (Flaw& f : resource_flaws()) out.push_back(std::move(f));
+  return out;
+}
+
+std::vector<Flaw> TokenNetwork::resource_flaws() const {
+  std::vector<Flaw> out;
+  for (std::size_t o = 0; o < problem_.objects.size(); ++o) {
+    const ClassDef& cls = model_.classes[problem_.objects[o].class_index];
+    for (const ResourceDef& res : cls.resources) {
+      struct Use {
+        TokenId id;
+        double amount;
+      };
+      std::vector<Use> uses;
+      for (TokenId id = 0; id < tokens_.size(); ++id) {
+        const Token& t = tokens_[id];
+        if (t.state != Token::State::kPlaced || timelines_[t.timeline].object != int(o)) continue;
+        for (const EffectDef& e : model_.predicates[t.predicate].effects)
+          if (e.resource_name == res.name) uses.push_back({id, e.amount});
+      }
+      if (uses.empty()) continue;
+      auto start = [&](TokenId id) { return tn_.earliest(tokens_[id].start); };
+      auto end = [&](TokenId id) { return tn_.earliest(tokens_[id].end); };
+      if (res.kind == pb::Resource::REUSABLE) {
+        // Pairs first: exact under every dispatch of the flexible plan.
+        for (std::size_t i = 0; i < uses.size(); ++i)
+          for (std::size_t j = i + 1; j < uses.size(); ++j) {
+            if (uses[i].amount + uses[j].amount <= res.capacity + 1e-9) continue;
+            const Token &a = tokens_[uses[i].id], &b = tokens_[uses[j].id];
+            const bool apart = tn_.shortest_distance(b.start, a.end) <= 0 ||
+                               tn_.shortest_distance(a.start, b.end) <= 0;
+            if (apart) continue;
+            Flaw f{Flaw::Kind::kResourceConflict, uses[i].id};
+            f.involved = {uses[i].id, uses[j].id};
+            out.push_back(f);
+            return out;
+          }
+        // Larger sets: peaks at the earliest times.
+        for (const Use& at : uses) {
+          double load = 0;
+          std::vector<TokenId> active;
+          for (const Use& u : uses)
+            if (start(u.id) <= start(at.id) && start(at.id) < end(u.id)) {
+              load += u.amount;
+              active.push_back(u.id);
+            }
+          if (load > res.capacity + 1e-9) {
+            Flaw f{Flaw::Kind::kResourceConflict, at.id};
+            f.involved = active;
+            out.push_back(f);
+            return out;
+          }
+        }
+      } else {
+        std::sort(uses.begin(), uses.end(),
+                  [&](const Use& a, const Use& b) { return end(a.id) < end(b.id); });
+        double level = res.initial_level;
+        for (std::size_t i = 0; i < uses.size();) {
+          std::size_t j = i;
+          for (; j < uses.size() && end(uses[j].id) == end(uses[i].id); ++j)
+            level += uses[j].amount;
+          const bool low = level<res.min_level - 1e-9, high = level> res.max_level + 1e-9;
+          if (low || high) {
+            Flaw f{Flaw::Kind::kResourceConflict, uses[i].id};
+            f.reservoir = true;
+            f.reservoir_low = low;
+            // Candidates to move before it: later producers (low) or later consumers (high).
+            for (std::size_t k = j; k < uses.size(); ++k)
+              if ((low && uses[k].amount > 0) || (high && uses[k].amount < 0))
+                f.involved.push_back(uses[k].id);
+            out.push_back(f);
+            return out;
+          }
+          i = j;
+        }
+      }
+    }
+  }
   return out;
 }
 
@@ -677,6 +764,28 @@ std::vector<Decision> TokenNetwork::options(const Flaw& f) const {
       for (std::size_t a = 0; a < rq.alternatives.size(); ++a) {
         Decision d{Decision::Kind::kChoose, f.token, a, f.instance, f.requirement};
         out.push_back(d);
+      }
+      break;
+    }
+    case Flaw::Kind::kResourceConflict: {
+      auto order = [&](TokenId a, TokenId b, std::size_t to_end) {
+        Decision d{Decision::Kind::kOrder, a, b};
+        d.requirement = to_end;
+        out.push_back(d);
+      };
+      if (f.reservoir) {
+        // Level out of bounds where f.token ends: one of the candidates ends no later.
+        for (TokenId k : f.involved) order(k, f.token, 1);
+      } else {
+        // Most slack first: a before b where b's latest start leaves the most room.
+        std::vector<std::pair<Time, std::pair<TokenId, TokenId>>> pairs;
+        for (TokenId a : f.involved)
+          for (TokenId b : f.involved)
+            if (a != b && tn_.earliest(tokens_[a].end) <= tn_.latest(tokens_[b].start))
+              pairs.push_back(
+                  {tn_.latest(tokens_[b].start) - tn_.earliest(tokens_[a].end), {a, b}});
+        std::sort(pairs.begin(), pairs.end(), [](auto& x, auto& y) { return x.first > y.first; });
+        for (auto& [slack, ab] : pairs) order(ab.first, ab.second, 0);
       }
       break;
     }

@@ -63,15 +63,21 @@ struct SchemaInstance {
 };
 
 struct Flaw {
-  enum class Kind { kFreeToken, kOpenRequirement, kUnboundParameter } kind;
+  enum class Kind { kFreeToken, kOpenRequirement, kUnboundParameter, kResourceConflict } kind;
   TokenId token = kNoToken;
   std::size_t instance = 0, requirement = 0;
   VariableId variable = 0;
   bool blocks_schema = false;  // an unbound parameter a schema's applicability waits for
+  // kResourceConflict: the tokens involved; for a reservoir, `token` is where the level leaves
+  // its bounds and `reservoir_low` says which way.
+  std::vector<TokenId> involved;
+  bool reservoir = false, reservoir_low = false;
 };
 
 struct Decision {
-  enum class Kind { kInsert, kMerge, kOmit, kRestrict, kChoose } kind;
+  // kOrder: token's end no later than the start (or, with requirement == 1, the end) of
+  // token `index`: how resource conflicts are resolved.
+  enum class Kind { kInsert, kMerge, kOmit, kRestrict, kChoose, kOrder } kind;
   TokenId token = kNoToken;
   std::size_t index = 0;  // insert: position; merge: target token; choose: alternative
   std::size_t instance = 0, requirement = 0;
@@ -92,6 +98,11 @@ class TokenNetwork {
 
   [[nodiscard]] bool apply(const Decision& d);
   std::vector<Flaw> flaws() const;
+  // Resource conflicts: pairs of tokens that may overlap and together exceed a reusable
+  // resource's capacity, peaks at the earliest times, reservoir levels out of bounds at the
+  // earliest times (resolved by ordering tokens; see the report of issue 11 for what the
+  // flexible plan then guarantees).
+  std::vector<Flaw> resource_flaws() const;
   std::vector<Decision> options(const Flaw& f) const;
 
   // Upper bound on every token's end (the objective's bound), part of the temporal network.

@@ -166,6 +166,47 @@ TEST(Search, AnOptionalGoalThatCannotFitIsLeftOutWithItsPenalty) {
   EXPECT_EQ(validate_plan(c.model, c.problem, *r.plan), std::vector<std::string>{});
 }
 
+TEST(Search, AReusableResourceSequencesTokensThatWouldExceedItsCapacity) {
+  const char* model =
+      "model power\npredicate idle()\npredicate heat() duration [10, 10] uses power 60\n"
+      "predicate shoot() duration [10, 10] uses power 50\n"
+      "class Craft { attribute heater = idle | heat  attribute camera = shoot  reusable power "
+      "capacity 100 }\n";
+  Loaded c =
+      load_text(model,
+                "problem p\nhorizon 100\nobject c : Craft\ngoal h: c.heater == heat start [0, 20]\n"
+                "goal s: c.camera == shoot start [0, 20]\n");
+  PlanResult r = make_plan(c.model, c.problem, {});
+  ASSERT_EQ(r.status, PlanStatus::kPlanFound) << r.explanation;
+  EXPECT_EQ(validate_plan(c.model, c.problem, *r.plan), std::vector<std::string>{});
+  const PlanToken *h = find(*r.plan, "c.heater", "heat"), *s = find(*r.plan, "c.camera", "shoot");
+  ASSERT_TRUE(h && s);
+  // Ordered in the flexible plan, not only at the earliest times.
+  EXPECT_TRUE(h->end_ub <= s->start_lb || s->end_ub <= h->start_lb || h->end_lb <= s->start_lb ||
+              s->end_lb <= h->start_lb);
+  Loaded tight =
+      load_text(model,
+                "problem p\nhorizon 100\nobject c : Craft\ngoal h: c.heater == heat start [0, 5]\n"
+                "goal s: c.camera == shoot start [0, 5]\n");
+  EXPECT_EQ(make_plan(tight.model, tight.problem, {}).status, PlanStatus::kInfeasible);
+}
+
+TEST(Search, AReservoirIsFilledBeforeItIsDrained) {
+  Loaded c = load_text(
+      "model store\npredicate take() duration [5, 5] produces storage 40\n"
+      "predicate send() duration [5, 5] consumes storage 50\n"
+      "class Craft { attribute camera = take  attribute radio = send  reservoir storage [0, 60] "
+      "initial 20 }\n",
+      "problem p\nhorizon 100\nobject c : Craft\ngoal s: c.radio == send\ngoal t: c.camera == take "
+      "start [30, 60]\n");
+  PlanResult r = make_plan(c.model, c.problem, {});
+  ASSERT_EQ(r.status, PlanStatus::kPlanFound) << r.explanation;
+  EXPECT_EQ(validate_plan(c.model, c.problem, *r.plan), std::vector<std::string>{});
+  const PlanToken *s = find(*r.plan, "c.radio", "send"), *t = find(*r.plan, "c.camera", "take");
+  ASSERT_TRUE(s && t);
+  EXPECT_LE(t->end_lb, s->end_lb);
+}
+
 TEST(Search, AnUnknownEngineIsAnInvalidRequest) {
   Loaded c = load(kCameraModel, "problem p\nhorizon 100\nobject s : Spacecraft\n");
   PlanningOptions options;
