@@ -55,10 +55,12 @@ struct EngineOptions {
   FlawSelector selector;          // empty: earliest_first_selector()
   unsigned seed = 1;              // for engines that sample
   std::size_t discrepancies = 2;  // limited discrepancy search: the most allowed per probe
+  std::size_t restarts = 1000;    // iterative sampling: probes per solve()
 };
 
-// "chronological" (depth-first with chronological backtracking, the Remote Agent's) or
-// "discrepancy" (limited discrepancy search, Harvey 1995). Null for an unknown name.
+// "chronological" (depth-first with chronological backtracking, the Remote Agent's),
+// "discrepancy" (limited discrepancy search, Harvey 1995) or "sampling" (heuristic-biased
+// iterative sampling with seeded restarts; incomplete). Null for an unknown name.
 std::unique_ptr<SearchEngine> make_search_engine(const std::string& name,
                                                  const EngineOptions& options = {});
 std::vector<std::string> search_engine_names();

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <random>
 
 #include "search_engine.hpp"
 
@@ -158,17 +159,81 @@ class LimitedDiscrepancy final : public EngineBase {
   }
 };
 
+// Heuristic-biased iterative sampling (Langley 1992, Bresina 1996): probes from the root that
+// pick the option of rank r with weight 1 / (r + 1)^2, trying the remaining options in order
+// when the pick fails, and restart (with the next seed) at a dead end. Incomplete: it never
+// proves anything, it only finds plans.
+class IterativeSampling final : public EngineBase {
+ public:
+  using EngineBase::EngineBase;
+  std::string name() const override { return "sampling"; }
+  SearchOutcome solve(TokenNetwork& net, const Termination& term) override {
+    const std::size_t tn0 = net.temporal().propagations();
+    const std::size_t cn0 = net.constraints().statistics().procedure_calls;
+    SearchOutcome out;
+    SearchStatistics& stats = out.statistics;
+    const TokenNetwork::Mark root = net.mark();
+    std::mt19937 rng(options_.seed + probes_);
+    for (std::size_t probe = 0; probe < options_.restarts; ++probe, ++probes_) {
+      bool dead = false;
+      while (!dead) {
+        if (term.should_stop(stats.decisions)) {
+          net.undo_to(root);
+          out.status = SearchStatus::kOutOfBudget;
+          return finish(net, out, tn0, cn0);
+        }
+        std::vector<Flaw> flaws = net.flaws();
+        if (flaws.empty()) {
+          ++stats.plans;
+          out.status = SearchStatus::kPlanFound;
+          return finish(net, out, tn0, cn0);
+        }
+        std::vector<Decision> options = net.options(flaws[options_.selector(net, flaws)]);
+        std::vector<double> weights;
+        for (std::size_t r = 0; r < options.size(); ++r)
+          weights.push_back(1.0 / double((r + 1) * (r + 1)));
+        std::vector<std::size_t> order;
+        if (!options.empty()) {
+          std::discrete_distribution<std::size_t> pick(weights.begin(), weights.end());
+          order.push_back(pick(rng));
+        }
+        for (std::size_t r = 0; r < options.size(); ++r)
+          if (r != order.front()) order.push_back(r);
+        const TokenNetwork::Mark here = net.mark();
+        dead = true;
+        for (std::size_t r : order) {
+          ++stats.decisions;
+          if (net.apply(options[r])) {
+            dead = false;
+            break;
+          }
+          ++stats.dead_ends;
+          net.undo_to(here);
+        }
+      }
+      ++stats.backtracks;  // a restart
+      net.undo_to(root);
+    }
+    out.status = SearchStatus::kOutOfBudget;
+    return finish(net, out, tn0, cn0);
+  }
+
+ private:
+  std::size_t probes_ = 0;  // successive solve() calls continue the seed sequence
+};
+
 }  // namespace
 
 std::unique_ptr<SearchEngine> make_search_engine(const std::string& name,
                                                  const EngineOptions& options) {
   if (name == "chronological") return std::make_unique<ChronologicalBacktracking>(options);
   if (name == "discrepancy") return std::make_unique<LimitedDiscrepancy>(options);
+  if (name == "sampling") return std::make_unique<IterativeSampling>(options);
   return nullptr;
 }
 
 std::vector<std::string> search_engine_names() {
-  return {"chronological", "discrepancy"};
+  return {"chronological", "discrepancy", "sampling"};
 }
 
 }  // namespace autonomy::planner
