@@ -22,7 +22,7 @@ TEST(PlannerLanguage, TheCameraExampleReadsAsInThePaper) {
   ASSERT_TRUE(model) << to_string(errors);
   EXPECT_EQ(model->classes.size(), 1u);
   EXPECT_EQ(model->classes[0].attributes.size(), 3u);
-  ASSERT_EQ(model->schemata.size(), 2u);
+  ASSERT_EQ(model->schemata.size(), 3u);  // picture, pointAt (reached by a turn), turning
   const ConfigurationSchema& picture = model->schemata[0];
   EXPECT_EQ(model->predicates[picture.master.predicate].name, "picture");
   ASSERT_EQ(picture.requirements.size(), 4u);
