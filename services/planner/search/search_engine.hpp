@@ -1,0 +1,68 @@
+#pragma once
+// Search engines behind one small interface (paper, section 4: the token network's three
+// decision operations are all a search engine needs, so engines are interchangeable).
+//
+// An engine searches from the network's current state for a state without flaws; on success
+// it leaves the network in that state (the plan), otherwise it restores the starting state.
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "token_network.hpp"
+
+namespace autonomy::planner {
+
+// When to give up: a decision budget and/or a predicate the caller evaluates (a deadline on
+// the caller's clock, a cancellation flag). One value, passed to every solve().
+struct Termination {
+  std::size_t max_decisions = static_cast<std::size_t>(-1);
+  std::function<bool()> stop;  // true: stop now
+  bool should_stop(std::size_t decisions) const {
+    return decisions >= max_decisions || (stop && stop());
+  }
+};
+
+struct SearchStatistics {
+  std::size_t decisions = 0, backtracks = 0, dead_ends = 0, plans = 0;
+  std::size_t temporal_propagations = 0, procedure_calls = 0;
+};
+
+enum class SearchStatus { kPlanFound, kExhausted, kOutOfBudget };
+
+struct SearchOutcome {
+  SearchStatus status = SearchStatus::kExhausted;
+  SearchStatistics statistics;
+};
+
+class SearchEngine {
+ public:
+  virtual ~SearchEngine() = default;
+  virtual std::string name() const = 0;
+  [[nodiscard]] virtual SearchOutcome solve(TokenNetwork& network,
+                                            const Termination& termination) = 0;
+};
+
+// Picks the flaw to work on next among the network's flaws (never empty).
+using FlawSelector = std::function<std::size_t(const TokenNetwork&, const std::vector<Flaw>&)>;
+// The default: flaws that decide whether a schema applies, then open disjunctions, then free
+// tokens by earliest possible start (ties: least slack), then resource conflicts, then other
+// unbound parameters.
+FlawSelector earliest_first_selector();
+
+struct EngineOptions {
+  FlawSelector selector;          // empty: earliest_first_selector()
+  unsigned seed = 1;              // for engines that sample
+  std::size_t discrepancies = 2;  // limited discrepancy search: the most allowed per probe
+  std::size_t restarts = 1000;    // iterative sampling: probes per solve()
+};
+
+// "chronological" (depth-first with chronological backtracking, the Remote Agent's),
+// "discrepancy" (limited discrepancy search, Harvey 1995) or "sampling" (heuristic-biased
+// iterative sampling with seeded restarts; incomplete). Null for an unknown name.
+std::unique_ptr<SearchEngine> make_search_engine(const std::string& name,
+                                                 const EngineOptions& options = {});
+std::vector<std::string> search_engine_names();
+
+}  // namespace autonomy::planner
