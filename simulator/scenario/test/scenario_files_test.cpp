@@ -104,9 +104,11 @@ TEST(ShippedScenarios, OfficeFloorHasTheCourierPapersRoomsDoorsAndPlaces) {
     const double into = d.swing == DoorSwing::Clockwise ? -1.5 : 1.5;
     EXPECT_TRUE(world.line_of_sight({d.position.x(), 8.0}, {d.position.x() + 0.2, d.position.y() + into})) << d.id;
   }
-  // A-120 closes at t = 60 s as in the paper.
-  for (int i = 0; i < 601; ++i) world.step(0.1);
+  // A-120 closes at t = 15 s and opens again at t = 40 s (the paper's Fig. 5).
+  for (int i = 0; i < 151; ++i) world.step(0.1);
   EXPECT_TRUE(world.door("A-120")->closed());
+  for (int i = 0; i < 250; ++i) world.step(0.1);
+  EXPECT_FALSE(world.door("A-120")->closed());
 }
 
 TEST(ShippedScenarios, ReconAreaHasBuildingsCarsAreasAndWaypoints) {

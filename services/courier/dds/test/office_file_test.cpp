@@ -14,7 +14,7 @@ TEST(OfficeFile, ReadsTheCouriersKnowledgeFloorAndRobotsFromTheOfficeScenario) {
   const CourierOfficeResult r = load_courier_office(kOffice);
   ASSERT_TRUE(r.ok()) << r.error;
   const CourierOffice& o = *r.office;
-  EXPECT_DOUBLE_EQ(o.knowledge.clock.day_start_s, 8.5 * 3600);
+  EXPECT_DOUBLE_EQ(o.knowledge.clock.day_start_s, 9 * 3600);
   ASSERT_NE(o.knowledge.find_person("Michael"), nullptr);
   EXPECT_EQ(o.knowledge.find_person("Michael")->desk, "michael-desk");
   ASSERT_NE(o.knowledge.find_object("letter-red"), nullptr);
