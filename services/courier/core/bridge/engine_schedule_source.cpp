@@ -154,6 +154,22 @@ Plan EngineScheduleSource::plan(const PlanRequest& request) {
     }
   }
 
+  // The routes being driven are where an improving engine starts (rescheduling after a door
+  // event is a repair, not a new search); stops of jobs no longer open are dropped by the engine.
+  problem.previous_order.resize(problem.couriers.size());
+  for (size_t c = 0; c < problem.couriers.size(); ++c) {
+    const auto last = last_routes_.find(problem.couriers[c].id);
+    if (last == last_routes_.end()) continue;
+    for (const auto& [job_id, pickup] : last->second) {
+      for (size_t j = 0; j < problem.jobs.size(); ++j) {
+        const sched::Job& job = problem.jobs[j];
+        if (job.id != job_id || (pickup && job.status == sched::JobStatus::kAboard)) continue;
+        problem.previous_order[c].push_back(
+            {static_cast<int>(j), pickup ? sched::StopKind::kPickup : sched::StopKind::kDelivery});
+      }
+    }
+  }
+
   const int open_jobs = static_cast<int>(problem.jobs.size());
   const std::string engine_name =
       settings_.engine == "exact" && open_jobs > settings_.exact_max_jobs ? "large" : settings_.engine;
@@ -175,8 +191,12 @@ Plan EngineScheduleSource::plan(const PlanRequest& request) {
   }
   plan.late_jobs = schedule.objective.late_jobs;
   plan.total_lateness_s = schedule.objective.lateness_s;
+  last_routes_.clear();
   for (const auto& route : schedule.routes) {
-    auto& stops = plan.routes[problem.couriers[static_cast<size_t>(route.courier)].id];
+    const std::string& robot = problem.couriers[static_cast<size_t>(route.courier)].id;
+    auto& stops = plan.routes[robot];
+    for (const auto& s : route.stops)
+      last_routes_[robot].emplace_back(problem.jobs[static_cast<size_t>(s.job)].id, s.kind == sched::StopKind::kPickup);
     for (const auto& s : route.stops) {
       const std::string& place = problem.locations[static_cast<size_t>(s.location)].name;
       stops.push_back({problem.jobs[static_cast<size_t>(s.job)].id, s.kind == sched::StopKind::kPickup, place,

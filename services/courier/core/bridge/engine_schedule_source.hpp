@@ -17,6 +17,7 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace autonomy::courier {
@@ -52,6 +53,8 @@ class EngineScheduleSource : public ScheduleSource {
   EngineSourceSettings settings_;
   std::vector<std::string> place_names_;  // location order of every problem
   std::map<std::set<std::string>, std::unique_ptr<Fields>> cache_;
+  // The last plan's routes (robot -> (job, pickup?) in order): the warm start of the next one.
+  std::map<std::string, std::vector<std::pair<std::string, bool>>> last_routes_;
 };
 
 }  // namespace autonomy::courier
