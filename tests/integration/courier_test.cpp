@@ -18,6 +18,7 @@
 //    163    CourierTest.TwoRedLettersAreNeverAboardTogether
 //    164    CourierTest.KilledMidDeliveryTheRestartedCourierFinishesFromItsJournal
 //    165    CourierTest.BadCommandsAreRejectedWithReasonsAndTheServiceGoesOn
+//    166    CourierTest.TheCliSendsListsAndCancels
 #include "tests/support/process_test.hpp"
 
 #include <gtest/gtest.h>
@@ -331,6 +332,36 @@ TEST_F(CourierTest, BadCommandsAreRejectedWithReasonsAndTheServiceGoesOn) {
   EXPECT_EQ(by_id[std::string(128, 'q')].reason, "too_long");
   EXPECT_TRUE(by_id["x3"].accepted) << by_id["x3"].reason;
   EXPECT_TRUE(courier_->running());
+}
+
+TEST_F(CourierTest, TheCliSendsListsAndCancels) {
+  setup_observers(166);
+  start_world(office_scenario(""));
+  ASSERT_TRUE(await_ready(*beats_, *courier_));
+  const auto cli = [&](const std::string& name, std::vector<std::string> args) {
+    args.insert(args.end(), {"--domain", std::to_string(domain_)});
+    ChildProcess& p = start(name, AUTONOMY_AUTONOMY_BIN, args, false);
+    const auto status = p.wait_for_exit(30s);
+    EXPECT_TRUE(status) << name << " did not end";
+    return std::make_pair(status ? (status->exited ? status->code : 128 + status->signal) : -1, read_file(p.log_file()));
+  };
+  const auto [sent, sent_out] = cli("send", {"courier", "send", kGreenBook});
+  EXPECT_EQ(sent, 0) << sent_out;
+  EXPECT_NE(sent_out.find("accepted as job-1: deliver the green book (book-green) from librarian-desk to a114-desk"),
+            std::string::npos)
+      << sent_out;
+  const auto [bad, bad_out] = cli("send-bad", {"courier", "send", "deliver the green book to room A-122"});
+  EXPECT_EQ(bad, 1) << bad_out;
+  EXPECT_NE(bad_out.find("rejected (unknown_room)"), std::string::npos) << bad_out;
+  EXPECT_NE(bad_out.find("^"), std::string::npos) << bad_out;  // under the word at fault
+  const auto [cancelled, cancel_out] = cli("cancel", {"courier", "cancel", "job-1"});
+  EXPECT_EQ(cancelled, 0) << cancel_out;
+  EXPECT_NE(cancel_out.find("accepted: cancel job-1"), std::string::npos) << cancel_out;
+  release_world();
+  const auto [listed, jobs_out] = cli("jobs", {"courier", "jobs"});
+  EXPECT_EQ(listed, 0) << jobs_out;
+  EXPECT_NE(jobs_out.find("job-1"), std::string::npos) << jobs_out;
+  EXPECT_NE(jobs_out.find("cancelled"), std::string::npos) << jobs_out;
 }
 
 }  // namespace
