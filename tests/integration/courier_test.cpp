@@ -23,7 +23,11 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <csignal>
+#include <set>
+#include <sstream>
 
 namespace autonomy::test {
 namespace {
@@ -123,6 +127,17 @@ class CourierTest : public ProcessTest {
                (s.reason.empty() ? "" : " (" + s.reason + ")") + "@" + std::to_string(s.tick);
     return out;
   }
+  // The courier's events file (--events): kind and text of each line, in order.
+  std::vector<std::pair<std::string, nlohmann::json>> events() {
+    std::vector<std::pair<std::string, nlohmann::json>> out;
+    std::istringstream in(read_file(dir().file("events.jsonl")));
+    for (std::string line; std::getline(in, line);) {
+      if (line.empty()) continue;
+      const auto j = nlohmann::json::parse(line);
+      if (j.at("kind") != "heading" && j.at("kind") != "accepted") out.emplace_back(j.at("kind"), j);
+    }
+    return out;
+  }
   void setup_observers(int domain) {
     join(domain);
     beats_.emplace(participant(), dds::topics::heartbeat);
@@ -215,6 +230,29 @@ TEST_F(CourierTest, Fig5DoorClosesThenReopensTheRedLetterIsDeliveredOpportunisti
   EXPECT_LT(*red_delivered, *green_delivered);  // the green book's delivery was interrupted for it
   EXPECT_TRUE(job_in("job-1", msg::JobState::Completed)) << job_story("job-1");
   EXPECT_TRUE(job_in("job-2", msg::JobState::Completed)) << job_story("job-2");
+
+  // The courier's own account, step by step as in the paper: A-120 is seen open on the way from
+  // the librarian (x = 3.5) to A-114 (x = 19), and the green book's delivery gives way.
+  const std::vector<std::pair<std::string, std::string>> expected = {
+      {"loaded", "letter-red"},         {"door_closed", "A-120"}, {"failed_over", "job-1"},
+      {"loaded", "book-green"},         {"door_opened", "A-120"}, {"opportunity_taken", "job-1"},
+      {"unloaded", "letter-red"},       {"unloaded", "book-green"}};
+  const auto story = events();
+  size_t next = 0;
+  std::string told;
+  for (const auto& [kind, line] : story) {
+    const std::string text = line.at("text");
+    told += kind + ": " + text + "\n";
+    if (next < expected.size() && kind == expected[next].first && text.find(expected[next].second) != std::string::npos) {
+      if (kind == "door_opened") {
+        const double x = line.at("robots").at("rhino").at(0);
+        EXPECT_GT(x, 3.5);
+        EXPECT_LT(x, 19.0);
+      }
+      ++next;
+    }
+  }
+  EXPECT_EQ(next, expected.size()) << "the paper's steps, in order, not all found in:\n" << told;
 }
 
 TEST_F(CourierTest, Fig7DoorStaysClosedTheRedLetterFailsAndIsReturned) {
@@ -238,6 +276,10 @@ TEST_F(CourierTest, Fig7DoorStaysClosedTheRedLetterFailsAndIsReturned) {
   ASSERT_TRUE(returned && green_delivered);
   EXPECT_LT(*green_delivered, *returned);
   EXPECT_FALSE(object_tick("letter-red", "", "michael-desk"));
+  bool failure_reported = false;
+  for (const auto& r : reports_->all())
+    if (r.job_id == "job-1") failure_reported = !r.success && r.text.find("A-120 closed") != std::string::npos;
+  EXPECT_TRUE(failure_reported);
 }
 
 TEST_F(CourierTest, TwoRedLettersAreNeverAboardTogether) {
@@ -281,6 +323,7 @@ TEST_F(CourierTest, TwoRedLettersAreNeverAboardTogether) {
 
 TEST_F(CourierTest, KilledMidDeliveryTheRestartedCourierFinishesFromItsJournal) {
   setup_observers(164);
+  Recorder<msg::HandoverRequest> requests(participant(), dds::topics::handover_request);
   start_world(office_scenario(""));
   send_paper_commands(true);
   ASSERT_TRUE(step_until("the red letter aboard", [&] { return object_tick("letter-red", "rhino", "").has_value(); }));
@@ -301,10 +344,16 @@ TEST_F(CourierTest, KilledMidDeliveryTheRestartedCourierFinishesFromItsJournal) 
   EXPECT_TRUE(job_in("job-2", msg::JobState::Completed)) << job_story("job-2");
   EXPECT_TRUE(object_tick("letter-red", "", "michael-desk"));
   EXPECT_TRUE(object_tick("book-green", "", "a114-desk"));
-  // Loaded once: the restarted courier knew the letter was aboard (no second load of it).
+  // Loaded once: the restarted courier knew the letter was aboard and asked for no second load of
+  // it (a repeat of the first request's id would be answered, not served again).
   int loads = 0;
   for (const auto& o : objects_->all()) loads += o.object_id == "letter-red" && o.carrier == "rhino";
   EXPECT_EQ(loads, 1);
+  requests.poll();
+  std::set<std::string> load_ids;
+  for (const auto& r : requests.all())
+    if (r.object_id == "letter-red" && r.kind == msg::HandoverKind::Load) load_ids.insert(r.request_id);
+  EXPECT_EQ(load_ids.size(), 1u);
 }
 
 TEST_F(CourierTest, BadCommandsAreRejectedWithReasonsAndTheServiceGoesOn) {

@@ -118,8 +118,11 @@ Command add_courier_send(CLI::App& courier) {
       "send", "Send a delivery command in restricted English and print the courier's interpretation or rejection");
   add_domain_option(cmd, o->domain);
   cmd->add_option("text", o->text, "e.g. \"deliver the green book from the librarian to Anna by 10:30\"")->required();
-  cmd->add_option("--id", o->id, "Command id (default: a fresh one); resending an id gets the same reply");
-  cmd->add_option("-t,--timeout", o->timeout_s, "Seconds to wait for the reply")->capture_default_str();
+  cmd->add_option("--id", o->id, "Command id (default: a fresh one); resending an id gets the same reply")
+      ->check(CLI::Validator([](std::string& v) { return v.size() <= 128 ? "" : "at most 128 bytes"; }, "ID"));
+  cmd->add_option("-t,--timeout", o->timeout_s, "Seconds to wait for the reply")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   cmd->footer("Grammar: docs/courier-language.md. Exit codes: 0 accepted; 1 rejected or no reply; 130 Ctrl-C.");
   return {cmd, [o](Context& ctx) {
             msg::CourierCommand c;
@@ -134,8 +137,11 @@ Command add_courier_cancel(CLI::App& courier) {
   auto* cmd = courier.add_subcommand("cancel", "Cancel a job (an object aboard is returned first)");
   add_domain_option(cmd, o->domain);
   cmd->add_option("job", o->job, "Job id, e.g. job-3")->required();
-  cmd->add_option("--id", o->id, "Command id (default: a fresh one)");
-  cmd->add_option("-t,--timeout", o->timeout_s, "Seconds to wait for the reply")->capture_default_str();
+  cmd->add_option("--id", o->id, "Command id (default: a fresh one)")
+      ->check(CLI::Validator([](std::string& v) { return v.size() <= 128 ? "" : "at most 128 bytes"; }, "ID"));
+  cmd->add_option("-t,--timeout", o->timeout_s, "Seconds to wait for the reply")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   return {cmd, [o](Context& ctx) {
             msg::CourierCommand c;
             c.kind = msg::CourierCommandKind::Cancel;
@@ -149,7 +155,9 @@ Command add_courier_jobs(CLI::App& courier) {
   o->timeout_s = 1.0;
   auto* cmd = courier.add_subcommand("jobs", "Every job's latest state: queued, underway, opportunistic, ...");
   add_domain_option(cmd, o->domain);
-  cmd->add_option("-t,--timeout", o->timeout_s, "Seconds to collect job states")->capture_default_str();
+  cmd->add_option("-t,--timeout", o->timeout_s, "Seconds to collect job states")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   return {cmd, [o](Context& ctx) { return list_jobs(*o, ctx); }};
 }
 

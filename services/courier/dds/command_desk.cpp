@@ -77,7 +77,7 @@ msg::CourierReply CommandDesk::handle(const msg::CourierCommand& c, double now_s
   reply.tick = tick;
   // A new job was journalled with its reply in accept_delivery(); everything else is journalled
   // here, before the reply is published, so a repeat after a crash gets the same answer.
-  if (!(reply.accepted && reply.action == "deliver")) journal_.record_command(c.command_id, reply_to_json(reply), nullptr);
+  if (!reply.accepted) journal_.record_command(c.command_id, reply_to_json(reply), nullptr);
   return reply;
 }
 
@@ -216,6 +216,8 @@ msg::CourierReply CommandDesk::apply_revision(const msg::CourierCommand& c, cons
     reply.deadline = clock_or_empty(job->deadline_s);
   }
   reply.assumptions = r.assumptions;
+  // The changed job with the reply, before the reply is published: a restart keeps the change.
+  journal_.record_command(c.command_id, reply_to_json(reply), executive_.job(r.job), false);
   return reply;
 }
 

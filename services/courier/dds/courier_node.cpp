@@ -92,14 +92,15 @@ CourierNode::CourierNode(service::Service& service, CourierNodeOptions options)
   settings.budget_ms = options_.budget_ms;
   scheduler_ = std::make_unique<EngineScheduleSource>(options_.office.knowledge, options_.office.floor,
                                                       options_.office.map, settings);
-  executive_ = std::make_unique<CourierExecutive>(options_.office.floor, *scheduler_);
-  for (const auto& r : options_.robots) executive_->add_robot(r.id, r.capacity);
-
   if (!options_.events_path.empty()) {
     events_file_.open(options_.events_path, std::ios::app);
     if (!events_file_) throw std::runtime_error("cannot write the events file " + options_.events_path);
   }
   journal_ = std::make_unique<Journal>(options_.journal_path);
+  ExecutiveSettings executive_settings;
+  executive_settings.id_tag = "r" + std::to_string(journal_->run());
+  executive_ = std::make_unique<CourierExecutive>(options_.office.floor, *scheduler_, executive_settings);
+  for (const auto& r : options_.robots) executive_->add_robot(r.id, r.capacity);
   const Journal::Contents journalled = journal_->load();
   int unfinished = 0;
   for (const Job& job : journalled.jobs) {
@@ -154,7 +155,8 @@ CourierNode::CourierNode(service::Service& service, CourierNodeOptions options)
     for (const auto& s : samples) {
       if (!s.valid || !executive_->has_robot(s.value.robot_id)) continue;
       const auto& h = s.value;
-      if (h.state != msg::HandoverState::Accepted) journal_->handover_answered(h.request_id, msg::to_string(h.state));
+      // Journalled with the job states it leads to, at this tick's end (carry_out).
+      if (h.state != msg::HandoverState::Accepted) answers_.emplace_back(h.request_id, msg::to_string(h.state));
       executive_->on_handover(h.request_id, outcome_of(h.state), h.reason, h.detail, now_day_s());
     }
   });
@@ -209,7 +211,8 @@ void CourierNode::carry_out(Orders orders, int64_t tick) {
   std::vector<const Job*> changed;
   for (const auto& id : orders.changed_jobs)
     if (const Job* job = executive_->job(id)) changed.push_back(job);
-  journal_->save_jobs(changed);
+  journal_->save_progress(changed, answers_);
+  answers_.clear();
   for (const Job* job : changed) job_writer_.write(status_of(*job, tick));
   for (const auto& h : orders.handovers) {
     journal_->record_handover(h);

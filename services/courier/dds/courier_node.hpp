@@ -50,6 +50,7 @@ class CourierNode {
   std::unique_ptr<Journal> journal_;
   std::unique_ptr<CommandDesk> desk_;
   std::ofstream events_file_;
+  std::vector<std::pair<std::string, std::string>> answers_;  // handover answers since the last tick
   std::map<std::string, std::pair<double, double>> poses_;  // latest of each courier robot
   int64_t tick_ = 0;
   bool have_clock_ = false;

@@ -76,6 +76,7 @@ CourierOfficeResult load_courier_office(const std::string& scenario_path) {
   for (const auto& layer : world.rasters) office.map.rasters.push_back(layer.raster);
   for (const auto& d : world.doors) {
     office.map.doors.push_back({d.id, d.position, d.width, d.heading});
+    office.floor.doors.insert(d.id);
     // A door leads into each of its rooms that is not a hallway; the first door of a room wins.
     for (const auto& room : d.rooms) {
       bool hallway = room.empty();

@@ -93,7 +93,10 @@ Journal::Journal(const std::string& path) : path_(path) {
         throw std::runtime_error("schema " + std::to_string(version.column_integer(0)) + " is newer than " +
                                  std::to_string(kSchemaVersion));
     }
-    exec("INSERT OR IGNORE INTO meta VALUES ('schema', 1), ('jobs_created', 0)");
+    exec("INSERT OR IGNORE INTO meta VALUES ('schema', 1), ('jobs_created', 0), ('runs', 0)");
+    exec("UPDATE meta SET value = value + 1 WHERE key = 'runs'");
+    Statement runs(db_, "SELECT value FROM meta WHERE key = 'runs'");
+    if (runs.step()) run_ = static_cast<int>(runs.column_integer(0));
     exec("CREATE TABLE IF NOT EXISTS commands (command_id TEXT PRIMARY KEY, reply TEXT NOT NULL)");
     exec("CREATE TABLE IF NOT EXISTS jobs (job_id TEXT PRIMARY KEY, command_id TEXT, object_id TEXT, "
          "object_kind TEXT, object_colour TEXT, pickup TEXT, destination TEXT, deadline_s REAL, accepted_at_s REAL, "
@@ -119,7 +122,8 @@ void Journal::exec(const char* sql) const {
   }
 }
 
-void Journal::record_command(const std::string& command_id, const std::string& reply_json, const Job* job) {
+void Journal::record_command(const std::string& command_id, const std::string& reply_json, const Job* job,
+                             bool new_job) {
   exec("BEGIN IMMEDIATE");
   try {
     Statement(db_, "INSERT OR REPLACE INTO commands VALUES (?, ?)").text(1, command_id).text(2, reply_json).step();
@@ -129,7 +133,7 @@ void Journal::record_command(const std::string& command_id, const std::string& r
                            .c_str());
       bind_job(s, *job);
       s.step();
-      exec("UPDATE meta SET value = value + 1 WHERE key = 'jobs_created'");
+      if (new_job) exec("UPDATE meta SET value = value + 1 WHERE key = 'jobs_created'");
     }
     exec("COMMIT");
   } catch (...) {
@@ -145,8 +149,9 @@ std::optional<std::string> Journal::reply_for(const std::string& command_id) con
   return s.column_text(0);
 }
 
-void Journal::save_jobs(const std::vector<const Job*>& jobs) {
-  if (jobs.empty()) return;
+void Journal::save_progress(const std::vector<const Job*>& jobs,
+                            const std::vector<std::pair<std::string, std::string>>& answers) {
+  if (jobs.empty() && answers.empty()) return;
   exec("BEGIN IMMEDIATE");
   try {
     Statement s(db_, (std::string("INSERT OR REPLACE INTO jobs (") + kJobColumns +
@@ -156,6 +161,12 @@ void Journal::save_jobs(const std::vector<const Job*>& jobs) {
       bind_job(s, *j);
       s.step();
       s.reset();
+    }
+    Statement answer(db_, "UPDATE handovers SET outcome = ? WHERE request_id = ?");
+    for (const auto& [request_id, outcome] : answers) {
+      answer.text(1, outcome).text(2, request_id);
+      answer.step();
+      answer.reset();
     }
     exec("COMMIT");
   } catch (...) {
@@ -175,10 +186,6 @@ void Journal::record_handover(const HandoverOrder& o) {
       .step();
 }
 
-void Journal::handover_answered(const std::string& request_id, const std::string& outcome) {
-  Statement(db_, "UPDATE handovers SET outcome = ? WHERE request_id = ?").text(1, outcome).text(2, request_id).step();
-}
-
 Journal::Contents Journal::load() const {
   Contents c;
   {
@@ -192,8 +199,13 @@ Journal::Contents Journal::load() const {
       j.destination = s.column_text(6);
       j.deadline_s = s.column_real(7);
       j.accepted_at_s = s.column_real(8).value_or(0.0);
-      j.state = job_state_from(s.column_text(9)).value_or(JobState::queued);
-      j.phase = static_cast<JobPhase>(s.column_integer(10));
+      const auto state = job_state_from(s.column_text(9));
+      const long long phase = s.column_integer(10);
+      if (!state || phase < 0 || phase > static_cast<long long>(JobPhase::returning))
+        throw std::runtime_error("journal " + path_ + ": job " + j.id + " has an unknown state '" + s.column_text(9) +
+                                 "' or phase " + std::to_string(phase) + "; the file is damaged or from another version");
+      j.state = *state;
+      j.phase = static_cast<JobPhase>(phase);
       j.robot = s.column_text(11);
       j.reason = s.column_text(12);
       j.estimated_completion_s = s.column_real(13);

@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 struct sqlite3;
@@ -25,14 +26,22 @@ class Journal {
   Journal(const Journal&) = delete;
   Journal& operator=(const Journal&) = delete;
 
-  // A command's reply (JSON text), and the job it created if any, in one transaction.
-  void record_command(const std::string& command_id, const std::string& reply_json, const Job* job);
+  // A command's reply (JSON text) and the job it created or changed, in one transaction;
+  // new_job counts it for the next job id.
+  void record_command(const std::string& command_id, const std::string& reply_json, const Job* job,
+                      bool new_job = true);
   // The reply once given to `command_id`, for a repeated command.
   std::optional<std::string> reply_for(const std::string& command_id) const;
 
-  void save_jobs(const std::vector<const Job*>& jobs);
+  // Job states and the final answers of handover requests (request id -> completed / failed /
+  // rejected) that led to them, in one transaction: a restart never sees an answer without its
+  // consequence, or the other way round.
+  void save_progress(const std::vector<const Job*>& jobs, const std::vector<std::pair<std::string, std::string>>& answers);
   void record_handover(const HandoverOrder& order);
-  void handover_answered(const std::string& request_id, const std::string& outcome);
+
+  // This opening's number (1 for a new journal): goal and request ids carry it, so that ids
+  // never repeat across restarts.
+  int run() const { return run_; }
 
   struct Contents {
     std::vector<Job> jobs;                // every job, finished ones too
@@ -47,6 +56,7 @@ class Journal {
   void exec(const char* sql) const;
   std::string path_;
   sqlite3* db_ = nullptr;
+  int run_ = 0;
 };
 
 }  // namespace autonomy::courier

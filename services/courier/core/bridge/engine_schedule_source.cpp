@@ -146,7 +146,12 @@ Plan EngineScheduleSource::plan(const PlanRequest& request) {
     for (size_t i = 0; i < problem.jobs.size(); ++i) {
       const sched::Job& job = problem.jobs[i];
       if (job.id != id) continue;
-      const int courier = job.status == sched::JobStatus::kAboard ? job.aboard_courier : 0;
+      int courier = 0;
+      if (job.status == sched::JobStatus::kAboard) {
+        courier = job.aboard_courier;
+      } else if (const auto assigned = courier_index.find(request.jobs[i].robot); assigned != courier_index.end()) {
+        courier = assigned->second;
+      }
       const sched::StopKind kind =
           job.status == sched::JobStatus::kAboard ? sched::StopKind::kDelivery : sched::StopKind::kPickup;
       if (courier >= 0 && courier < static_cast<int>(problem.couriers.size()))
@@ -183,10 +188,10 @@ Plan EngineScheduleSource::plan(const PlanRequest& request) {
   plan.proved_optimal = schedule.proved_optimal;
   for (const auto& u : schedule.unschedulable) plan.unschedulable[problem.jobs[static_cast<size_t>(u.job)].id] = u.detail;
   if (!schedule.ok()) {
-    // No schedule at all (infeasible, or out of time before the first one): nothing is planned,
-    // every job waits and says why; the next event tries again.
-    for (const auto& j : problem.jobs)
-      if (!plan.unschedulable.count(j.id)) plan.unschedulable[j.id] = "no schedule: " + schedule.reason;
+    // No schedule at all (infeasible, invalid, or out of time before the first one): the executive
+    // keeps its routes and asks again; the jobs themselves are not to blame.
+    plan.failed = true;
+    plan.failure = std::string(sched::to_string(schedule.status)) + (schedule.reason.empty() ? "" : ": " + schedule.reason);
     return plan;
   }
   plan.late_jobs = schedule.objective.late_jobs;

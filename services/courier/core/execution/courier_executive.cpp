@@ -16,7 +16,20 @@ std::string clock_text(double seconds_of_day) {
 }
 
 CourierExecutive::CourierExecutive(Floor floor, ScheduleSource& scheduler, ExecutiveSettings settings)
-    : floor_(std::move(floor)), scheduler_(scheduler), settings_(settings) {}
+    : floor_(std::move(floor)), scheduler_(scheduler), settings_(std::move(settings)) {
+  if (floor_.doors.empty())
+    for (const auto& [room, door] : floor_.door_of_room) floor_.doors.insert(door);
+}
+
+const HandoverOrder* CourierExecutive::handover_in_flight(const std::string& job_id) const {
+  for (const auto& [id, r] : robots_)
+    if (r.handover && r.handover->order.job_id == job_id) return &r.handover->order;
+  return nullptr;
+}
+
+bool CourierExecutive::exhausted(std::map<std::string, int>& counts, const std::string& key) {
+  return ++counts[key] >= settings_.max_attempts;
+}
 
 void CourierExecutive::add_robot(const std::string& id, int capacity) {
   Robot& r = robots_[id];
@@ -57,6 +70,7 @@ const char* to_string(ExecutionEvent::Kind k) {
     case ExecutionEvent::Kind::opportunity_declined: return "opportunity_declined";
     case ExecutionEvent::Kind::returning: return "returning";
     case ExecutionEvent::Kind::finished: return "finished";
+    case ExecutionEvent::Kind::schedule_failed: return "schedule_failed";
   }
   return "?";
 }
@@ -100,8 +114,12 @@ std::optional<std::string> CourierExecutive::cancel(const std::string& job_id, c
   if (job.finished()) return "job " + job_id + " is already " + to_string(job.state);
   if (!job.return_to.empty()) return "job " + job_id + " is already returning its object to " + job.return_to;
   const std::string why = reason.empty() ? std::string("cancelled") : "cancelled: " + reason;
-  // A load under way completes or fails first; the object belief then says what to do.
-  if (job.aboard() || job.phase == JobPhase::loading) {
+  const HandoverOrder* in_flight = handover_in_flight(job_id);
+  if (in_flight && !in_flight->load && in_flight->place == job.destination)
+    return "job " + job_id + " is being handed over at " + job.destination + " now: too late to cancel";
+  // A load under way completes or fails first; the object belief then says what to do, and
+  // settle() ends the job if the object never left its pickup.
+  if (job.aboard() || (in_flight && in_flight->load)) {
     start_return(job, JobState::cancelled, why, now_s);
   } else {
     finish(job, JobState::cancelled, why, now_s);
@@ -121,6 +139,8 @@ std::optional<std::string> CourierExecutive::revise(const std::string& job_id,
   if (!job.return_to.empty()) return "job " + job_id + " is returning its object to " + job.return_to;
   if (destination) {
     if (!floor_.place(*destination)) return "no place '" + *destination + "'";
+    if (!job.aboard() && *destination == job.object_place)
+      return "job " + job_id + "'s object already lies at " + *destination;
     job.destination = *destination;
     event(ExecutionEvent::Kind::revised, "job " + job_id + " now goes to " + *destination);
   }
@@ -142,6 +162,7 @@ std::optional<std::string> CourierExecutive::revise(const std::string& job_id,
 void CourierExecutive::on_pose(const std::string& robot, double x, double y) {
   const auto it = robots_.find(robot);
   if (it == robots_.end() || !std::isfinite(x) || !std::isfinite(y)) return;
+  if (!it->second.pose_known) reschedule_needed_ = true;  // it can be planned for from now on
   it->second.x = x;
   it->second.y = y;
   it->second.pose_known = true;
@@ -160,7 +181,8 @@ std::string CourierExecutive::closed_reason(const std::string& door) const {
 
 void CourierExecutive::on_door(const std::string& robot, const std::string& door_id, double angle_rad,
                                double now_s) {
-  if (!robots_.count(robot)) return;  // only our own robots' eyes
+  if (!robots_.count(robot)) return;             // only our own robots' eyes
+  if (!floor_.doors.count(door_id)) return;       // not a door of our floor
   const DoorChange change = doors_.observe(door_id, angle_rad, now_s, robot);
   if (change == DoorChange::none) return;
   if (change == DoorChange::closed) {
@@ -195,6 +217,8 @@ void CourierExecutive::on_goal(const std::string& robot, const std::string& goal
     case GoalOutcome::accepted:
     case GoalOutcome::active: return;
     case GoalOutcome::reached:
+      r.blocked.erase(r.goal_place);
+      r.refused.erase(r.goal_place);
       r.at_place = r.goal_place;
       r.goal_id.clear();
       r.goal_place.clear();
@@ -204,36 +228,48 @@ void CourierExecutive::on_goal(const std::string& robot, const std::string& goal
       r.goal_id.clear();
       r.goal_place.clear();
       event(ExecutionEvent::Kind::goal_blocked, "goal to " + place + " blocked for " + robot + ": " + reason);
-      // The behavior names the door it saw closed ("... door A-120 closed"): its robot's eyes.
-      const std::string marker = "door ";
-      for (size_t at = reason.find(marker); at != std::string::npos; at = reason.find(marker, at + 1)) {
-        size_t end = at + marker.size();
-        while (end < reason.size() && reason[end] != ' ' && reason[end] != ',') ++end;
-        const std::string door = reason.substr(at + marker.size(), end - at - marker.size());
-        if (!door.empty() && reason.compare(end, 7, " closed") == 0) on_door(robot, door, 0.0, now_s);
+      // The behavior names the doors it saw closed ("... door A-120 closed", "... doors A-111,
+      // A-120 closed"): its robot's eyes.
+      for (const char* marker : {"door ", "doors "}) {
+        const auto at = reason.find(marker);
+        const auto end = reason.find(" closed", at);
+        if (at == std::string::npos || end == std::string::npos) continue;
+        std::string list = reason.substr(at + std::string(marker).size(), end - at - std::string(marker).size());
+        for (size_t from = 0; from <= list.size();) {
+          size_t comma = list.find(',', from);
+          if (comma == std::string::npos) comma = list.size();
+          std::string door = list.substr(from, comma - from);
+          while (!door.empty() && door.front() == ' ') door.erase(door.begin());
+          if (!door.empty()) on_door(robot, door, 0.0, now_s);
+          from = comma + 1;
+        }
       }
       if (!closed_door_for(place) && ++r.blocked[place] >= settings_.max_blocked_goals) {
-        for (auto& [id, job] : jobs_) {
-          const NextStep step = next_step(job);
-          const std::string& p = step == NextStep::load ? job.object_place : job.target_place();
-          if (step == NextStep::none || p != place) continue;
-          if (job.aboard() && job.return_to.empty())
-            start_return(job, JobState::failed, "cannot reach " + place + ": " + reason, now_s);
-          else if (!job.aboard())
-            finish(job, JobState::failed, "cannot reach " + place + ": " + reason, now_s);
-        }
+        r.blocked.erase(place);
+        give_up_on(place, "cannot reach " + place + ": " + reason, now_s);
       }
       reschedule_needed_ = true;
       return;
     }
     case GoalOutcome::preempted:
     case GoalOutcome::rejected:
-    case GoalOutcome::cancelled:
-      // Somebody else took the robot, or the goal was refused: ask again at the next dispatch.
-      event(ExecutionEvent::Kind::goal_ended, "goal " + goal_id + " " + (outcome == GoalOutcome::rejected ? "rejected" : "ended") + ": " + reason);
+    case GoalOutcome::cancelled: {
+      // Somebody else took the robot, or the goal was refused: ask again a moment later, and give
+      // the place up after a few refusals in a row.
+      const std::string place = r.goal_place;
+      event(ExecutionEvent::Kind::goal_ended,
+            "goal " + goal_id + " " + (outcome == GoalOutcome::rejected ? "rejected" : "ended") + ": " + reason);
       r.goal_id.clear();
       r.goal_place.clear();
+      r.hold_until_s = now_s + settings_.goal_retry_s;
+      if (exhausted(r.refused, place)) {
+        r.refused.erase(place);
+        give_up_on(place, "goal to " + place + " refused " + std::to_string(settings_.max_attempts) + " times: " + reason,
+                   now_s);
+        reschedule_needed_ = true;
+      }
       return;
+    }
   }
 }
 
@@ -252,56 +288,111 @@ void CourierExecutive::on_handover(const std::string& request_id, HandoverOutcom
     Job& job = jt->second;
     const std::string what = std::string(order.load ? "load" : "unload") + " of " + order.object_id + " at " +
                              order.place;
+    const std::string step_key = job.id + (order.load ? "/load" : "/unload");
     if (outcome == HandoverOutcome::completed) {
+      handover_attempts_.erase(step_key);
+      reschedule_needed_ = true;  // the object moved: the plan's next steps follow from where it is
       if (order.load) {
         job.object_place.clear();
         job.object_carrier = r.id;
-        event(ExecutionEvent::Kind::loaded, job.object.id + " loaded at " + order.place + " by " + r.id + " at " + clock_text(now_s));
+        event(ExecutionEvent::Kind::loaded,
+              job.object.id + " loaded at " + order.place + " by " + r.id + " at " + clock_text(now_s));
       } else {
         job.object_carrier.clear();
         job.object_place = order.place;
-        event(ExecutionEvent::Kind::unloaded, job.object.id + " unloaded at " + order.place + " by " + r.id + " at " + clock_text(now_s));
+        event(ExecutionEvent::Kind::unloaded,
+              job.object.id + " unloaded at " + order.place + " by " + r.id + " at " + clock_text(now_s));
       }
-      job.reason.clear();
+      if (job.finished()) {
+        // The job ended while its load was under way (failed over, blocked elsewhere): the object
+        // is aboard now and must not ride along unseen. It goes back, and that is reported.
+        if (job.aboard()) start_return(job, job.state, job.reason + "; loaded after the job ended", now_s);
+        changed(job);
+        return;
+      }
+      if (job.return_to.empty() && job.state != JobState::opportunistic) job.reason.clear();
       if (!job.return_to.empty() && job.object_place == job.return_to) {
         finish(job, job.end_state_after_return, job.reason_after_return(), now_s);
       } else if (job.return_to.empty() && job.object_place == job.destination) {
         finish(job, JobState::completed, "", now_s);
       } else {
-        job.phase = job.aboard() ? (job.return_to.empty() ? JobPhase::to_destination : JobPhase::returning)
-                                 : JobPhase::to_pickup;
+        if (job.state != JobState::opportunistic)
+          job.phase = job.aboard() ? (job.return_to.empty() ? JobPhase::to_destination : JobPhase::returning)
+                                   : JobPhase::to_pickup;
         changed(job);
       }
       return;
     }
+    const std::string said = reason + (detail.empty() ? "" : " (" + detail + ")");
     if (outcome == HandoverOutcome::failed) {
-      event(ExecutionEvent::Kind::handover_failed, what + " failed: " + reason + (detail.empty() ? "" : " (" + detail + ")"));
-      job.phase = JobPhase::none;
-      changed(job);
+      event(ExecutionEvent::Kind::handover_failed, what + " failed: " + said);
+      if (exhausted(handover_attempts_, step_key)) {
+        handover_attempts_.erase(step_key);
+        give_up_on(order.place, what + " failed " + std::to_string(settings_.max_attempts) + " times: " + said, now_s);
+      } else if (!job.finished()) {
+        job.phase = JobPhase::none;
+        changed(job);
+      }
       return;  // tried again at the next dispatch
     }
     // Rejected.
-    event(ExecutionEvent::Kind::handover_refused, what + " refused: " + reason + (detail.empty() ? "" : " (" + detail + ")"));
-    if (reason == "nobody_present" || reason == "helper_busy" || reason == "robot_busy" ||
-        reason == "object_in_handover") {
+    event(ExecutionEvent::Kind::handover_refused, what + " refused: " + said);
+    if (reason == "robot_not_at_place" || reason == "robot_moved_away") {
+      r.at_place.clear();  // drive there again
+      return;
+    }
+    const bool waits = reason == "nobody_present" || reason == "helper_busy" || reason == "robot_busy" ||
+                       reason == "object_in_handover";
+    if (waits && !exhausted(handover_attempts_, step_key)) {
       r.hold_until_s = now_s + settings_.retry_after_s;
-      job.reason = "waiting: " + (detail.empty() ? reason : detail);
+      if (!job.finished()) job.reason = "waiting: " + (detail.empty() ? reason : detail);
       changed(job);
       reschedule_needed_ = true;
-    } else if (reason == "robot_not_at_place" || reason == "robot_moved_away") {
-      r.at_place.clear();  // drive there again
-    } else if (order.load) {
-      // The object is not where we believed (object_not_at_place, unknown_object, robot_full, ...).
-      finish(job, JobState::failed, "cannot load " + order.object_id + " at " + order.place + ": " + reason +
-                                        (detail.empty() ? "" : " (" + detail + ")"),
-             now_s);
-      reschedule_needed_ = true;
-    } else {
-      if (job.return_to.empty())
-        start_return(job, JobState::failed, "cannot unload at " + order.place + ": " + reason, now_s);
-      reschedule_needed_ = true;
+      return;
     }
+    handover_attempts_.erase(step_key);
+    if (job.finished()) return;
+    if (order.load) {
+      // The object is not where we believed (object_not_at_place, unknown_object, robot_full, ...),
+      // or nobody came in time.
+      finish(job, JobState::failed, "cannot load " + order.object_id + " at " + order.place + ": " + said, now_s);
+    } else if (job.return_to.empty()) {
+      start_return(job, JobState::failed, "cannot unload at " + order.place + ": " + said, now_s);
+    } else {
+      // Not even the way back works: the object stays aboard, and the job says so.
+      finish(job, job.end_state_after_return,
+             job.return_reason + "; " + job.object.id + " stays aboard " + r.id + ": cannot unload at " + order.place +
+                 ": " + said,
+             now_s);
+    }
+    reschedule_needed_ = true;
     return;
+  }
+}
+
+void CourierExecutive::give_up_on(const std::string& place, const std::string& reason, double now_s) {
+  for (auto& [id, job] : jobs_) {
+    const NextStep step = next_step(job);
+    const std::string& p = step == NextStep::load ? job.object_place : job.target_place();
+    if (step == NextStep::none || p != place || handover_in_flight(id)) continue;
+    if (job.aboard() && job.return_to.empty())
+      start_return(job, JobState::failed, reason, now_s);
+    else if (job.aboard())
+      finish(job, job.end_state_after_return,
+             job.return_reason + "; " + job.object.id + " stays aboard " + job.object_carrier + ": " + reason, now_s);
+    else
+      finish(job, JobState::failed, reason, now_s);
+  }
+  reschedule_needed_ = true;
+}
+
+void CourierExecutive::settle(double now_s) {
+  for (auto& [id, job] : jobs_) {
+    if (job.finished() || next_step(job) != NextStep::none || handover_in_flight(id)) continue;
+    if (!job.return_to.empty())
+      finish(job, job.end_state_after_return, job.reason_after_return(), now_s);
+    else if (job.object_place == job.destination)
+      finish(job, JobState::completed, "", now_s);
   }
 }
 
@@ -354,8 +445,13 @@ PlanRequest CourierExecutive::request_for(double now_s, const std::vector<std::s
     const bool extra = std::find(extra_jobs.begin(), extra_jobs.end(), id) != extra_jobs.end();
     if (job.finished() || (job.state == JobState::opportunistic && !extra)) continue;
     if (next_step(job) == NextStep::none) continue;
+    // A job aboard a robot that cannot be planned for yet waits for that robot's pose.
+    if (job.aboard()) {
+      const auto carrier = robots_.find(job.object_carrier);
+      if (carrier == robots_.end() || !carrier->second.pose_known) continue;
+    }
     req.jobs.push_back({id, job.object.lookalike_class(), job.object_place, job.target_place(), job.deadline_s,
-                        job.object_carrier});
+                        job.object_carrier, job.robot});
   }
   return req;
 }
@@ -405,7 +501,16 @@ void CourierExecutive::adopt(const Plan& plan, double now_s) {
 
 void CourierExecutive::reschedule(double now_s) {
   reschedule_needed_ = false;
-  adopt(scheduler_.plan(request_for(now_s, {})), now_s);
+  schedule_retry_at_.reset();
+  const Plan plan = scheduler_.plan(request_for(now_s, {}));
+  if (plan.failed) {
+    // Keep driving the routes there are; a failure of the whole plan says nothing about the jobs.
+    event(ExecutionEvent::Kind::schedule_failed, "no schedule (" + plan.failure + "): the current routes go on, " +
+                                                 "trying again at " + clock_text(now_s + settings_.schedule_retry_s));
+    schedule_retry_at_ = now_s + settings_.schedule_retry_s;
+    return;
+  }
+  adopt(plan, now_s);
 }
 
 void CourierExecutive::opportunity_check(double now_s) {
@@ -419,7 +524,7 @@ void CourierExecutive::opportunity_check(double now_s) {
     PlanRequest with_request = request_for(now_s, {id});
     with_request.first = {id};
     const Plan with = scheduler_.plan(with_request);
-    if (with.unschedulable.count(id)) continue;
+    if (without.failed || with.failed || with.unschedulable.count(id)) continue;
     // Keeps every other deadline: no other job later than it would be without the opportunity.
     int late_without = 0, late_with = 0;
     double lateness_without = 0.0, lateness_with = 0.0;
@@ -434,6 +539,8 @@ void CourierExecutive::opportunity_check(double now_s) {
       if (b != with.completion_s.end()) {
         late_with += b->second > *other.deadline_s;
         lateness_with += std::max(0.0, b->second - *other.deadline_s);
+      } else if (a != without.completion_s.end()) {
+        ++late_with;  // the detour would leave it out altogether
       }
     }
     if (late_with > late_without || lateness_with > lateness_without + 1e-6) {
@@ -468,7 +575,7 @@ bool CourierExecutive::still_needed(const Robot& robot, const PlanStop& stop) co
 void CourierExecutive::send_goal(Robot& robot, const std::string& place, double now_s) {
   const FloorPlace* p = floor_.place(place);
   if (!p) return;
-  robot.goal_id = robot.id + "/" + place + "/" + std::to_string(++robot.goal_seq);
+  robot.goal_id = robot.id + "/" + place + "/" + settings_.id_tag + "." + std::to_string(++robot.goal_seq);
   robot.goal_place = place;
   robot.at_place.clear();
   const double tolerance = std::min(settings_.goal_tolerance_m, 0.5 * p->radius);
@@ -479,7 +586,7 @@ void CourierExecutive::send_goal(Robot& robot, const std::string& place, double 
 void CourierExecutive::send_handover(Robot& robot, const PlanStop& stop, double now_s) {
   Job& job = jobs_.at(stop.job_id);
   HandoverOrder order{robot.id, robot.id + "/" + job.id + "/" + (stop.load ? "load" : "unload") + "/" +
-                                    std::to_string(++robot.request_seq),
+                                    settings_.id_tag + "." + std::to_string(++robot.request_seq),
                       stop.load, stop.place, job.object.id, job.id};
   robot.handover = PendingHandover{order, now_s, false};
   orders_.handovers.push_back(order);
@@ -492,7 +599,9 @@ void CourierExecutive::send_handover(Robot& robot, const PlanStop& stop, double 
 void CourierExecutive::dispatch(Robot& robot, double now_s) {
   if (robot.handover) {
     // Unanswered: the same request again (the simulator answers a repeat, never hands over twice).
-    if (!robot.handover->accepted && now_s - robot.handover->sent_at_s >= settings_.request_timeout_s) {
+    // Accepted and never completed (an answer lost): ask again too, the answer is repeated.
+    const double wait = robot.handover->accepted ? settings_.accepted_timeout_s : settings_.request_timeout_s;
+    if (now_s - robot.handover->sent_at_s >= wait) {
       robot.handover->sent_at_s = now_s;
       orders_.handovers.push_back(robot.handover->order);
     }
@@ -533,7 +642,16 @@ void CourierExecutive::idle_policy(Robot& robot, double now_s) {
   // to where it came from, and the job fails with its reason (the paper's Fig. 7).
   for (auto& [id, job] : jobs_) {
     if (job.state != JobState::opportunistic || job.object_carrier != robot.id) continue;
-    start_return(job, JobState::failed, job.reason, now_s);
+    if (!closed_door_for(job.target_place())) {
+      // Its room is believed open again (an opportunity once declined): deliver it after all.
+      job.state = JobState::queued;
+      job.reason.clear();
+      event(ExecutionEvent::Kind::opportunity_taken,
+            "job " + id + " taken up again: " + job.target_place() + " is open and nothing else waits");
+      changed(job);
+    } else {
+      start_return(job, JobState::failed, job.reason, now_s);
+    }
     reschedule_needed_ = true;
   }
 }
@@ -546,6 +664,8 @@ Orders CourierExecutive::step(double now_s) {
     orders_ = Orders{};
     return out;
   }
+  settle(now_s);
+  if (schedule_retry_at_ && now_s >= *schedule_retry_at_) reschedule_needed_ = true;
   if (opportunity_pending_) opportunity_check(now_s);
   if (reschedule_needed_) reschedule(now_s);
   for (auto& [id, r] : robots_)

@@ -26,10 +26,17 @@
 namespace autonomy::courier {
 
 struct ExecutiveSettings {
-  double request_timeout_s = 5.0;   // an unanswered handover request is sent again (same id)
-  double retry_after_s = 20.0;      // a refused handover (nobody present, helper busy) is retried
-  int max_blocked_goals = 2;        // a place unreachable this often, no door to blame: its job fails
-  double goal_tolerance_m = 0.35;   // for navigation goals to places (within the place's radius)
+  double request_timeout_s = 5.0;    // an unanswered handover request is sent again (same id)
+  double accepted_timeout_s = 60.0;  // an accepted one not completed by then is asked again (same id)
+  double retry_after_s = 20.0;       // a refused handover (nobody present, helper busy) is retried
+  double goal_retry_s = 1.0;         // a refused or preempted goal is sent again after this
+  double schedule_retry_s = 1.0;     // a schedule that failed as a whole is tried again after this
+  int max_blocked_goals = 2;         // a place unreachable this often, no door to blame: its job fails
+  int max_attempts = 3;              // refused goals, failed or refused handovers of one step
+  double goal_tolerance_m = 0.35;    // for navigation goals to places (within the place's radius)
+  // Part of every goal and request id, so that ids never repeat across runs of the service (a
+  // simulator answers a repeated request id with its old answer). The node uses the journal's run.
+  std::string id_tag = "r1";
 };
 
 struct NavGoalOrder {
@@ -69,7 +76,8 @@ struct ReportNote {
 struct ExecutionEvent {
   enum class Kind {
     accepted, revised, heading, loaded, unloaded, door_closed, door_opened, goal_blocked, goal_ended,
-    handover_failed, handover_refused, failed_over, opportunity_taken, opportunity_declined, returning, finished
+    handover_failed, handover_refused, failed_over, opportunity_taken, opportunity_declined, returning, finished,
+    schedule_failed
   };
   Kind kind;
   std::string text;
@@ -146,10 +154,11 @@ class CourierExecutive {
     std::string at_place;    // the place its last goal reached
     std::optional<PendingHandover> handover;
     std::vector<PlanStop> route;
-    double hold_until_s = 0.0;  // after a refused handover
+    double hold_until_s = 0.0;  // after a refused handover or goal
     int goal_seq = 0;
     int request_seq = 0;
     std::map<std::string, int> blocked;  // place -> blocked goals without a door to blame
+    std::map<std::string, int> refused;  // place -> refused or preempted goals in a row
   };
 
   void reschedule(double now_s);
@@ -164,6 +173,16 @@ class CourierExecutive {
   // True when `stop` is still the job's next step on this robot.
   bool still_needed(const Robot& robot, const PlanStop& stop) const;
   void make_opportunistic(Job& job, const std::string& reason, double now_s);
+  // Ends unfinished jobs whose object is where it should be (e.g. a cancel during a load that then
+  // failed leaves the object at its pickup, which is where a return would take it).
+  void settle(double now_s);
+  // The handover order of some robot that is in flight for `job_id`, if any.
+  const HandoverOrder* handover_in_flight(const std::string& job_id) const;
+  // Jobs with a next step at `place` that no robot is handing over now: fail them (returning what
+  // is aboard) with `reason`.
+  void give_up_on(const std::string& place, const std::string& reason, double now_s);
+  // Counts one more failed attempt at `key`; true when that was the last allowed.
+  bool exhausted(std::map<std::string, int>& counts, const std::string& key);
   void start_return(Job& job, JobState end_state, const std::string& reason, double now_s);
   void finish(Job& job, JobState state, const std::string& reason, double now_s);
   void changed(const Job& job);
@@ -179,6 +198,8 @@ class CourierExecutive {
   std::map<std::string, Robot> robots_;
   std::map<std::string, Job> jobs_;
   bool reschedule_needed_ = false;
+  std::optional<double> schedule_retry_at_;  // after a schedule failed as a whole
+  std::map<std::string, int> handover_attempts_;  // "job/load|unload" -> failed or refused tries
   bool opportunity_pending_ = false;
   Orders orders_;
 };

@@ -4,6 +4,7 @@
 // data, no behaviour.
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 
 namespace autonomy::courier {
@@ -18,6 +19,7 @@ struct FloorPlace {
 struct Floor {
   std::map<std::string, FloorPlace> places;
   std::map<std::string, std::string> door_of_room;  // room -> the door a robot enters it by
+  std::set<std::string> doors;  // every door of the map; sightings of other ids are ignored
 
   const FloorPlace* place(const std::string& name) const {
     const auto it = places.find(name);

@@ -24,6 +24,7 @@ struct PlanJob {
   std::string destination;  // where it must go (the return place while returning)
   std::optional<double> deadline_s;
   std::string aboard;  // the robot carrying the object, or ""
+  std::string robot;   // the robot it is assigned to, or "": where a forced first pickup goes
 };
 
 struct PlanRequest {
@@ -52,6 +53,10 @@ struct Plan {
   double total_lateness_s = 0.0;
   std::string engine;
   bool proved_optimal = false;
+  // No schedule at all (out of budget before the first one, an invalid problem): routes are empty
+  // and the executive keeps the ones it drives, trying again a moment later.
+  bool failed = false;
+  std::string failure;
 };
 
 class ScheduleSource {

@@ -132,6 +132,12 @@ TEST_F(CommandDeskTest, StructuredDeliverCancelAndRevise) {
   cancel.job_id = r.job_id;
   EXPECT_TRUE(desk_->handle(cancel, kNine, 4).accepted);
   EXPECT_EQ(executive_.job(r.job_id)->state, JobState::cancelled);
+  // Journalled with the reply: a restart keeps the cancel and the revision before it.
+  const Journal::Contents journalled = journal_->load();
+  ASSERT_EQ(journalled.jobs.size(), 1u);
+  EXPECT_EQ(journalled.jobs[0].state, JobState::cancelled);
+  EXPECT_EQ(journalled.jobs[0].destination, "michael-desk");
+  EXPECT_EQ(journalled.jobs_created, 1);
   cancel.command_id = "s5";
   const msg::CourierReply twice = desk_->handle(cancel, kNine, 5);
   EXPECT_FALSE(twice.accepted);

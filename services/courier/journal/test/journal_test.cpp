@@ -39,13 +39,13 @@ TEST(Journal, CommandsJobsAndHandoversSurviveReopening) {
     j.phase = JobPhase::to_destination;
     j.object_place.clear();
     j.object_carrier = "rhino";
-    journal.save_jobs({&j});
     journal.record_handover({"rhino", "rhino/job-1/load/1", true, "meeting-table", "letter-red", "job-1"});
-    journal.handover_answered("rhino/job-1/load/1", "completed");
+    journal.save_progress({&j}, {{"rhino/job-1/load/1", "completed"}});
     journal.record_handover({"rhino", "rhino/job-1/unload/2", false, "michael-desk", "letter-red", "job-1"});
-    journal.handover_answered("rhino/job-1/unload/2", "accepted");
+    EXPECT_EQ(journal.run(), 1);
   }
   Journal journal(path);
+  EXPECT_EQ(journal.run(), 2);
   EXPECT_EQ(*journal.reply_for("c1"), R"({"accepted":true})");
   EXPECT_EQ(*journal.reply_for("c2"), R"({"accepted":false})");
   EXPECT_FALSE(journal.reply_for("c3"));
@@ -61,7 +61,7 @@ TEST(Journal, CommandsJobsAndHandoversSurviveReopening) {
   EXPECT_TRUE(j.object_place.empty());
   EXPECT_DOUBLE_EQ(*j.deadline_s, 37800.0);
   EXPECT_FALSE(j.estimated_completion_s);
-  // The load was answered for good; the unload was only accepted: it is asked again.
+  // The load was answered for good (with its consequence); the unload never was: asked again.
   ASSERT_EQ(c.unanswered.size(), 1u);
   EXPECT_EQ(c.unanswered[0].request_id, "rhino/job-1/unload/2");
   EXPECT_FALSE(c.unanswered[0].load);

@@ -345,5 +345,178 @@ TEST_F(ExecutiveTest, RestoredPendingHandoverIsSentAgainWithItsId) {
   EXPECT_EQ(goal_place(), "michael-desk");
 }
 
+
+
+TEST_F(ExecutiveTest, CancelWhileLoadingThenTheLoadFailsEndsTheJobOnce) {
+  exec_.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
+  step();
+  arrive();  // load request sent
+  ASSERT_EQ(exec_.job("j1")->phase, JobPhase::loading);
+  EXPECT_EQ(exec_.cancel("j1", "", now_), std::nullopt);
+  step();
+  exec_.on_handover(last_handover_.request_id, HandoverOutcome::failed, "robot_moved_away", "", now_);
+  int reports = 0;
+  for (int i = 0; i < 50; ++i) { now_ += 10; reports += step().reports.size(); }
+  EXPECT_TRUE(exec_.job("j1")->finished()) << to_string(exec_.job("j1")->state) << " / " << exec_.job("j1")->reason;
+  EXPECT_EQ(reports, 1);
+}
+
+TEST_F(ExecutiveTest, RevisingTheDestinationToWhereTheObjectLiesIsRefused) {
+  exec_.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
+  step();
+  EXPECT_EQ(exec_.revise("j1", std::string("meeting-table"), std::nullopt, now_),
+            std::optional<std::string>("job j1's object already lies at meeting-table"));
+  EXPECT_EQ(exec_.job("j1")->destination, "michael-desk");
+}
+
+TEST_F(ExecutiveTest, ADeclinedOpportunityIsTakenUpWhenNothingElseWaits) {
+  exec_.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
+  Job g = delivery("j2", "book-green", "green", "book", "librarian-desk", "a114-desk");
+  g.deadline_s = now_ + 200;  // tight: the detour would make it late
+  exec_.add_job(g, now_);
+  step();
+  arrive();
+  complete_handover();  // red aboard
+  now_ += 5;
+  exec_.on_door("rhino", "A-120", 0.05, now_);
+  step();
+  arrive();
+  complete_handover();  // green aboard
+  now_ += 5;
+  exec_.on_door("rhino", "A-120", 1.4, now_);
+  step();
+  EXPECT_EQ(exec_.job("j1")->state, JobState::opportunistic);  // declined
+  arrive();
+  complete_handover();  // green delivered
+  EXPECT_EQ(exec_.job("j2")->state, JobState::completed);
+  // A-120 is believed open now: the letter should be delivered, not returned.
+  EXPECT_NE(exec_.job("j1")->phase, JobPhase::returning) << exec_.job("j1")->reason;
+  EXPECT_EQ(goal_place(), "michael-desk");
+}
+
+TEST_F(ExecutiveTest, ARefusedReturnIsTriedAFewTimesThenReported) {
+  exec_.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
+  step();
+  arrive();
+  complete_handover();
+  exec_.cancel("j1", "", now_);
+  step();
+  arrive();  // return unload sent
+  int requests = 0;
+  for (int i = 0; i < 20; ++i) {
+    exec_.on_handover(last_handover_.request_id, HandoverOutcome::rejected, "object_not_carried_by_robot", "", now_);
+    now_ += 0.1;
+    requests += step().handovers.size();
+  }
+  EXPECT_LT(requests, 3) << "unload requests in 2 s";
+  EXPECT_TRUE(exec_.job("j1")->finished()) << exec_.job("j1")->reason;
+}
+
+class FailingOnce : public ScheduleSource {
+ public:
+  explicit FailingOnce(ScheduleSource& inner) : inner_(inner) {}
+  Plan plan(const PlanRequest& r) override {
+    if (calls_++ == 0) {
+      Plan p;
+      p.failed = true;
+      p.failure = "the budget ran out";
+      return p;
+    }
+    return inner_.plan(r);
+  }
+  ScheduleSource& inner_;
+  int calls_ = 0;
+};
+
+TEST(Executive, AFailedScheduleIsTriedAgainWithoutBlamingTheJobs) {
+  const Floor floor = paper_floor();
+  InOrderScheduler inner(floor);
+  FailingOnce scheduler(inner);
+  CourierExecutive exec(floor, scheduler);
+  exec.add_robot("rhino", 3);
+  exec.on_pose("rhino", 1.5, 8.0);
+  exec.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), 0.0);
+  int goals = 0;
+  for (int i = 1; i < 50; ++i) goals += exec.step(i * 10.0).goals.size();
+  EXPECT_GT(goals, 0) << to_string(exec.job("j1")->state) << ": " << exec.job("j1")->reason;
+}
+
+TEST_F(ExecutiveTest, ABlockedGoalNamingTwoDoorsIsTakenAsTwoSightings) {
+  exec_.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
+  step();
+  arrive();
+  complete_handover();
+  exec_.on_goal("rhino", last_goal_.goal_id, GoalOutcome::blocked,
+                "no route to goal (37.50, 2.60): doors A-111, A-120 closed", now_);
+  step();
+  EXPECT_FALSE(exec_.doors().believed_open("A-120"));
+}
+
+TEST_F(ExecutiveTest, AnAcceptedHandoverThatNeverCompletesIsAskedAgain) {
+  exec_.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
+  step();
+  arrive();
+  exec_.on_handover(last_handover_.request_id, HandoverOutcome::accepted, "", "", now_);
+  int resent = 0;
+  for (int i = 0; i < 100; ++i) { now_ += 10; resent += step().handovers.size(); }
+  EXPECT_GT(resent, 0) << "1000 s after an accepted load, nothing asked";
+}
+
+TEST_F(ExecutiveTest, ARefusedGoalIsRetriedAFewTimesThenTheJobFails) {
+  exec_.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
+  step();
+  int goals = 0;
+  for (int i = 0; i < 40; ++i) {
+    exec_.on_goal("rhino", last_goal_.goal_id, GoalOutcome::rejected, "goal outside the map", now_);
+    now_ += 0.25;
+    goals += step().goals.size();
+  }
+  EXPECT_EQ(goals, 2);  // the first goal came before the loop: three in all, one second apart
+  EXPECT_EQ(exec_.job("j1")->state, JobState::failed);
+  EXPECT_EQ(exec_.job("j1")->reason, "goal to meeting-table refused 3 times: goal outside the map");
+}
+
+
+TEST_F(ExecutiveTest, ALoadCompletingAfterItsJobFailedOverIsReportedAndReturned) {
+  exec_.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
+  step();
+  arrive();  // load under way
+  exec_.on_door("rhino", "A-120", 0.0, now_);  // the destination closes meanwhile
+  EXPECT_EQ(exec_.cancel("j1", "no longer needed", now_), std::nullopt);
+  step();
+  complete_handover();  // the load completes after all
+  const Job& j1 = *exec_.job("j1");
+  EXPECT_EQ(j1.object_carrier, "rhino");
+  EXPECT_EQ(j1.phase, JobPhase::returning);
+  EXPECT_FALSE(j1.reason.empty());
+  arrive();
+  complete_handover();
+  EXPECT_EQ(exec_.job("j1")->state, JobState::cancelled);
+  EXPECT_EQ(exec_.job("j1")->object_place, "meeting-table");
+}
+
+TEST_F(ExecutiveTest, CancelDuringTheFinalUnloadIsRefused) {
+  exec_.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
+  step();
+  arrive();
+  complete_handover();
+  arrive();  // unload at michael-desk under way
+  EXPECT_EQ(exec_.cancel("j1", "", now_),
+            std::optional<std::string>("job j1 is being handed over at michael-desk now: too late to cancel"));
+}
+
+TEST_F(ExecutiveTest, SightingsOfDoorsNotOnTheFloorAreIgnored) {
+  exec_.on_door("rhino", "no-such-door", 0.0, now_);
+  EXPECT_TRUE(exec_.doors().doors().empty());
+}
+
+TEST_F(ExecutiveTest, IdsCarryTheRunTag) {
+  exec_.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
+  step();
+  EXPECT_EQ(last_goal_.goal_id, "rhino/meeting-table/r1.1");
+  arrive();
+  EXPECT_EQ(last_handover_.request_id, "rhino/j1/load/r1.1");
+}
+
 }  // namespace
 }  // namespace autonomy::courier
