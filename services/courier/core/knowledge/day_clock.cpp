@@ -29,7 +29,7 @@ std::optional<double> parse_clock(std::string_view text) {
       digits = 0;
       continue;
     }
-    if (text[i] < '0' || text[i] > '9') return std::nullopt;
+    if (text[i] < '0' || text[i] > '9' || count == 3) return std::nullopt;  // a fourth field
     fields[count] = fields[count] * 10 + (text[i] - '0');
     ++digits;
   }
