@@ -25,8 +25,10 @@ void set_headings(std::vector<geometry::Pose2>& poses) {
   for (std::size_t i = 0; i + 1 < poses.size(); ++i) {
     const double dx = poses[i + 1].x - poses[i].x;
     const double dy = poses[i + 1].y - poses[i].y;
-    if (dx != 0.0 || dy != 0.0) poses[i].theta = std::atan2(dy, dx);
-    else if (i > 0) poses[i].theta = poses[i - 1].theta;
+    if (dx != 0.0 || dy != 0.0)
+      poses[i].theta = std::atan2(dy, dx);
+    else if (i > 0)
+      poses[i].theta = poses[i - 1].theta;
   }
   if (poses.size() >= 2) poses.back().theta = poses[poses.size() - 2].theta;
 }
@@ -37,17 +39,21 @@ std::optional<std::string> request_problem(const PathRequest& q) {
   if (!std::isfinite(q.start.x) || !std::isfinite(q.start.y) || !std::isfinite(q.start.theta)) {
     return "start pose is not finite";
   }
-  if (!std::isfinite(q.goal.x()) || !std::isfinite(q.goal.y())) return "goal position is not finite";
+  if (!std::isfinite(q.goal.x()) || !std::isfinite(q.goal.y()))
+    return "goal position is not finite";
   if (q.goal_heading && !std::isfinite(*q.goal_heading)) return "goal heading is not finite";
-  if (!(q.budget_s > 0.0) || !std::isfinite(q.budget_s)) return "planning budget must be positive and finite";
+  if (!(q.budget_s > 0.0) || !std::isfinite(q.budget_s))
+    return "planning budget must be positive and finite";
   return std::nullopt;
 }
 
-PathResult follow_field(const CostToGoField& field, const OccupancyGrid& grid, const geometry::Pose2& start) {
+PathResult follow_field(const CostToGoField& field, const OccupancyGrid& grid,
+                        const geometry::Pose2& start) {
   const auto& geo = field.geometry();
   const auto goal_cell = field.goal_cell();
   if (!goal_cell || grid.blocked(*goal_cell)) {
-    return failure(PathStatus::GoalBlocked, "goal " + where(field.goal()) + " is outside the map or in an obstacle");
+    return failure(PathStatus::GoalBlocked,
+                   "goal " + where(field.goal()) + " is outside the map or in an obstacle");
   }
   const auto start_cell = geo.cell_at(start.position());
   if (!start_cell || grid.blocked(*start_cell)) {
@@ -55,8 +61,8 @@ PathResult follow_field(const CostToGoField& field, const OccupancyGrid& grid, c
                    "start " + where(start.position()) + " is outside the map or in an obstacle");
   }
   if (!field.reachable(*start_cell)) {
-    return failure(PathStatus::Unreachable,
-                   "no route from " + where(start.position()) + " to " + where(field.goal()) + " on the map");
+    return failure(PathStatus::Unreachable, "no route from " + where(start.position()) + " to " +
+                                                where(field.goal()) + " on the map");
   }
   PathResult r;
   r.status = PathStatus::Found;
@@ -71,7 +77,8 @@ PathResult follow_field(const CostToGoField& field, const OccupancyGrid& grid, c
     if (dc == 0 && dr == 0) break;
     c = {c.col + dc, c.row + dr};
   }
-  if (c != *goal_cell) return failure(PathStatus::Unreachable, "the field's walk did not reach the goal");
+  if (c != *goal_cell)
+    return failure(PathStatus::Unreachable, "the field's walk did not reach the goal");
   r.poses.push_back({geo.centre(c).x(), geo.centre(c).y(), 0.0});
   r.poses.push_back({field.goal().x(), field.goal().y(), 0.0});
   set_headings(r.poses);
@@ -80,7 +87,8 @@ PathResult follow_field(const CostToGoField& field, const OccupancyGrid& grid, c
   return r;
 }
 
-GridPathPlanner::GridPathPlanner(std::shared_ptr<const OccupancyGrid> grid) : grid_(std::move(grid)) {}
+GridPathPlanner::GridPathPlanner(std::shared_ptr<const OccupancyGrid> grid)
+    : grid_(std::move(grid)) {}
 
 PathResult GridPathPlanner::plan(const PathRequest& request) {
   if (auto problem = request_problem(request)) return failure(PathStatus::InvalidRequest, *problem);

@@ -12,7 +12,8 @@ namespace autonomy::behavior {
 // The downhill walk of `field` from `start` (start pose, the centres of the cells visited, the
 // goal). Status Found, StartBlocked (start outside or in a blocked cell), GoalBlocked or
 // Unreachable, with a reason. The poses' headings point along the next segment.
-PathResult follow_field(const CostToGoField& field, const OccupancyGrid& grid, const geometry::Pose2& start);
+PathResult follow_field(const CostToGoField& field, const OccupancyGrid& grid,
+                        const geometry::Pose2& start);
 
 class GridPathPlanner final : public PathPlanner {
  public:

@@ -80,9 +80,12 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 const char* to_string(CurveModel m) {
   switch (m) {
-    case CurveModel::Dubins: return "dubins";
-    case CurveModel::ReedsShepp: return "reeds_shepp";
-    case CurveModel::Holonomic: return "se2";
+    case CurveModel::Dubins:
+      return "dubins";
+    case CurveModel::ReedsShepp:
+      return "reeds_shepp";
+    case CurveModel::Holonomic:
+      return "se2";
   }
   return "unknown";
 }
@@ -95,8 +98,9 @@ std::optional<CurveModel> parse_curve_model(const std::string& text) {
 }
 
 const std::vector<std::string>& ompl_planner_names() {
-  static const std::vector<std::string> names{"RRTConnect", "RRT",         "RRTstar", "InformedRRTstar",
-                                              "PRMstar",    "LazyPRMstar", "BITstar", "KPIECE1"};
+  static const std::vector<std::string> names{"RRTConnect",      "RRT",     "RRTstar",
+                                              "InformedRRTstar", "PRMstar", "LazyPRMstar",
+                                              "BITstar",         "KPIECE1"};
   return names;
 }
 
@@ -107,24 +111,29 @@ std::optional<std::string> settings_problem(const OmplPlannerSettings& s) {
     for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
     return "unknown planner '" + s.planner + "' (known: " + known + ")";
   }
-  if (s.curve != CurveModel::Holonomic && !(s.turning_radius_m > 0.0 && std::isfinite(s.turning_radius_m))) {
+  if (s.curve != CurveModel::Holonomic &&
+      !(s.turning_radius_m > 0.0 && std::isfinite(s.turning_radius_m))) {
     return "turning radius must be positive and finite";
   }
-  if (!(s.motion_step_m > 0.0 && s.motion_step_m <= 0.05)) return "motion step must be in (0, 0.05] m";
+  if (!(s.motion_step_m > 0.0 && s.motion_step_m <= 0.05))
+    return "motion step must be in (0, 0.05] m";
   if (!(s.good_enough_ratio >= 1.0 && std::isfinite(s.good_enough_ratio))) {
     return "good-enough ratio must be finite and at least 1";
   }
   return std::nullopt;
 }
 
-void seed_ompl(std::uint32_t seed) { ompl::RNG::setSeed(seed); }
+void seed_ompl(std::uint32_t seed) {
+  ompl::RNG::setSeed(seed);
+}
 
 struct OmplPathPlanner::Impl {
   std::shared_ptr<const OccupancyGrid> grid;
   ob::StateSpacePtr space;
 };
 
-OmplPathPlanner::OmplPathPlanner(std::shared_ptr<const OccupancyGrid> grid, OmplPlannerSettings settings)
+OmplPathPlanner::OmplPathPlanner(std::shared_ptr<const OccupancyGrid> grid,
+                                 OmplPlannerSettings settings)
     : settings_(std::move(settings)), impl_(std::make_unique<Impl>()) {
   if (!grid) throw std::invalid_argument("OMPL path planner needs a grid");
   if (auto problem = settings_problem(settings_)) throw std::invalid_argument(*problem);
@@ -137,7 +146,9 @@ OmplPathPlanner::OmplPathPlanner(std::shared_ptr<const OccupancyGrid> grid, Ompl
     case CurveModel::ReedsShepp:
       impl_->space = std::make_shared<ob::ReedsSheppStateSpace>(settings_.turning_radius_m);
       break;
-    case CurveModel::Holonomic: impl_->space = std::make_shared<ob::SE2StateSpace>(); break;
+    case CurveModel::Holonomic:
+      impl_->space = std::make_shared<ob::SE2StateSpace>();
+      break;
   }
   ob::RealVectorBounds bounds(2);
   bounds.setLow(0, 0.0);
@@ -175,13 +186,18 @@ PathResult OmplPathPlanner::plan(const PathRequest& request) {
   });
   // Distances in these spaces are metres along the motion (plus 0.5 per radian of turn in plain
   // SE(2)), so this fraction of the extent is a check at least every motion_step_m.
-  si->setStateValidityCheckingResolution(settings_.motion_step_m / impl_->space->getMaximumExtent());
+  // (0.8: the chord between two checked states then stays under the step on curves too.)
+  si->setStateValidityCheckingResolution(0.8 * settings_.motion_step_m /
+                                         impl_->space->getMaximumExtent());
 
   ob::ScopedState<ob::SE2StateSpace> start(impl_->space), goal(impl_->space);
   start->setXY(request.start.x, request.start.y);
   start->setYaw(request.start.theta);
   goal->setXY(request.goal.x(), request.goal.y());
-  goal->setYaw(request.goal_heading ? *request.goal_heading : arrival_heading(route.poses, request.start.theta));
+  goal->setYaw(request.goal_heading ? *request.goal_heading
+                                    : arrival_heading(route.poses, request.start.theta));
+  impl_->space->enforceBounds(start.get());  // headings into OMPL's [-pi, pi)
+  impl_->space->enforceBounds(goal.get());
   ss.setStartAndGoalStates(start, goal, 1e-3);
 
   auto objective = std::make_shared<ob::PathLengthOptimizationObjective>(si);
@@ -202,11 +218,13 @@ PathResult OmplPathPlanner::plan(const PathRequest& request) {
   try {
     ss.setup();
     // Most of the budget plans; what is left (at least a fifth) simplifies.
-    const ob::PlannerStatus solved = ss.solve(ob::timedPlannerTerminationCondition(0.8 * request.budget_s));
+    const ob::PlannerStatus solved =
+        ss.solve(ob::timedPlannerTerminationCondition(0.8 * request.budget_s));
     if (solved != ob::PlannerStatus::EXACT_SOLUTION) {
-      PathResult r = failure(PathStatus::NotFound, std::string(settings_.planner) + " found no path in " +
-                                                       std::to_string(request.budget_s) + " s (" +
-                                                       solved.asString() + ")");
+      PathResult r =
+          failure(PathStatus::NotFound, std::string(settings_.planner) + " found no path in " +
+                                            std::to_string(request.budget_s) + " s (" +
+                                            solved.asString() + ")");
       r.planning_s = seconds_since(t0);
       return r;
     }
@@ -216,13 +234,25 @@ PathResult OmplPathPlanner::plan(const PathRequest& request) {
       const double left = std::max(0.2 * request.budget_s, request.budget_s - seconds_since(t0));
       simplifier.simplify(path, left);
     }
-    path.interpolate();  // a state every motion_step_m at most
     PathResult r;
     r.status = PathStatus::Found;
-    r.poses.reserve(path.getStateCount());
-    for (std::size_t i = 0; i < path.getStateCount(); ++i) {
-      const auto* s = path.getState(i)->as<ob::SE2StateSpace::StateType>();
-      r.poses.push_back({s->getX(), s->getY(), s->getYaw()});
+    // The poses are exactly the states the motion validator checked along each motion (same
+    // segment count, same interpolation), so the final check tests what the planner accepted.
+    const auto pose_of = [](const ob::State* st) {
+      const auto* se2 = st->as<ob::SE2StateSpace::StateType>();
+      return geometry::Pose2{se2->getX(), se2->getY(), se2->getYaw()};
+    };
+    ob::ScopedState<ob::SE2StateSpace> between(impl_->space);
+    r.poses.push_back(pose_of(path.getState(0)));
+    for (std::size_t i = 1; i < path.getStateCount(); ++i) {
+      const ob::State* a = path.getState(i - 1);
+      const ob::State* b = path.getState(i);
+      const int n = std::max(1, static_cast<int>(impl_->space->validSegmentCount(a, b)));
+      for (int k = 1; k < n; ++k) {
+        impl_->space->interpolate(a, b, static_cast<double>(k) / n, between.get());
+        r.poses.push_back(pose_of(between.get()));
+      }
+      r.poses.push_back(pose_of(b));
     }
     r.length_m = path_length(r.poses);
     r.planning_s = seconds_since(t0);

@@ -26,9 +26,9 @@
 namespace autonomy::behavior {
 
 enum class CurveModel {
-  Dubins,       // forward only, minimum turning radius
-  ReedsShepp,   // forward and reverse, minimum turning radius
-  Holonomic,    // plain SE(2): straight lines, heading free
+  Dubins,      // forward only, minimum turning radius
+  ReedsShepp,  // forward and reverse, minimum turning radius
+  Holonomic,   // plain SE(2): straight lines, heading free
 };
 const char* to_string(CurveModel m);
 std::optional<CurveModel> parse_curve_model(const std::string& text);

@@ -7,19 +7,26 @@ namespace autonomy::behavior {
 
 const char* to_string(PathStatus s) {
   switch (s) {
-    case PathStatus::Found: return "found";
-    case PathStatus::InvalidRequest: return "invalid request";
-    case PathStatus::StartBlocked: return "start blocked";
-    case PathStatus::GoalBlocked: return "goal blocked";
-    case PathStatus::Unreachable: return "unreachable";
-    case PathStatus::NotFound: return "not found within budget";
+    case PathStatus::Found:
+      return "found";
+    case PathStatus::InvalidRequest:
+      return "invalid request";
+    case PathStatus::StartBlocked:
+      return "start blocked";
+    case PathStatus::GoalBlocked:
+      return "goal blocked";
+    case PathStatus::Unreachable:
+      return "unreachable";
+    case PathStatus::NotFound:
+      return "not found within budget";
   }
   return "unknown";
 }
 
 double path_length(const std::vector<geometry::Pose2>& poses) {
   double sum = 0.0;
-  for (std::size_t i = 1; i < poses.size(); ++i) sum += (poses[i].position() - poses[i - 1].position()).norm();
+  for (std::size_t i = 1; i < poses.size(); ++i)
+    sum += (poses[i].position() - poses[i - 1].position()).norm();
   return sum;
 }
 
@@ -28,7 +35,8 @@ double path_smoothness(const std::vector<geometry::Pose2>& poses) {
   // Drop near-duplicate vertices first: their direction is noise.
   std::vector<geometry::Vec2> pts;
   for (const auto& p : poses) {
-    if (pts.empty() || (p.position() - pts.back()).norm() >= kMinSegment) pts.push_back(p.position());
+    if (pts.empty() || (p.position() - pts.back()).norm() >= kMinSegment)
+      pts.push_back(p.position());
   }
   double sum = 0.0;
   for (std::size_t i = 1; i + 1 < pts.size(); ++i) {
@@ -40,7 +48,8 @@ double path_smoothness(const std::vector<geometry::Pose2>& poses) {
   return sum;
 }
 
-std::optional<std::size_t> first_collision(const OccupancyGrid& grid, const std::vector<geometry::Pose2>& poses,
+std::optional<std::size_t> first_collision(const OccupancyGrid& grid,
+                                           const std::vector<geometry::Pose2>& poses,
                                            double step_m) {
   const auto blocked_at = [&](const geometry::Vec2& p) {
     const auto c = grid.geometry().cell_at(p);

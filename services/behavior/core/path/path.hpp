@@ -31,7 +31,7 @@ struct PathRequest {
 
 struct PathResult {
   PathStatus status = PathStatus::NotFound;
-  std::string reason;                 // empty when Found
+  std::string reason;                  // empty when Found
   std::vector<geometry::Pose2> poses;  // start first, goal last; consecutive poses <= 5 cm apart
                                        // for OMPL paths, cell to cell for grid paths
   double length_m = 0.0;               // along the poses
@@ -49,7 +49,8 @@ double path_smoothness(const std::vector<geometry::Pose2>& poses);
 // Index of the first segment of `poses` that leaves the free cells of `grid`, tested at most
 // `step_m` apart along each segment (and at every pose); nullopt when the whole path is clear.
 // This is the map's own collision test: every planner's result passes it before it is returned.
-std::optional<std::size_t> first_collision(const OccupancyGrid& grid, const std::vector<geometry::Pose2>& poses,
+std::optional<std::size_t> first_collision(const OccupancyGrid& grid,
+                                           const std::vector<geometry::Pose2>& poses,
                                            double step_m);
 
 }  // namespace autonomy::behavior

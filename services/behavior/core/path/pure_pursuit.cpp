@@ -6,8 +6,8 @@
 namespace autonomy::behavior {
 
 PursuitStep pure_pursuit(const std::vector<geometry::Pose2>& path, std::size_t progress,
-                         const geometry::Pose2& robot, Kinematics kinematics, const MotionLimits& limits,
-                         const PursuitSettings& settings) {
+                         const geometry::Pose2& robot, Kinematics kinematics,
+                         const MotionLimits& limits, const PursuitSettings& settings) {
   PursuitStep step;
   if (path.empty()) {
     step.arrived = true;
@@ -30,18 +30,21 @@ PursuitStep pure_pursuit(const std::vector<geometry::Pose2>& path, std::size_t p
     return step;
   }
   std::size_t target = closest;
-  while (target + 1 < path.size() && (path[target].position() - here).norm() < settings.lookahead_m) ++target;
+  while (target + 1 < path.size() && (path[target].position() - here).norm() < settings.lookahead_m)
+    ++target;
   const geometry::Vec2 aim = path[target].position();
   const double speed = limits.max_speed_mps * std::clamp(to_goal / settings.slow_down_m, 0.1, 1.0);
 
   if (kinematics == Kinematics::Holonomic) {
     const geometry::Vec2 d = aim - here;
     const double n = d.norm();
-    const geometry::Vec2 v = n > 1e-9 ? geometry::Vec2(d * (std::min(speed, n / 0.5) / n)) : geometry::Vec2(0, 0);
+    const geometry::Vec2 v =
+        n > 1e-9 ? geometry::Vec2(d * (std::min(speed, n / 0.5) / n)) : geometry::Vec2(0, 0);
     step.command.vx = v.x();
     step.command.vy = v.y();
     const double err = geometry::wrap_angle(path[target].theta - robot.theta);
-    step.command.omega = std::clamp(settings.heading_gain * err, -limits.max_omega_rps, limits.max_omega_rps);
+    step.command.omega =
+        std::clamp(settings.heading_gain * err, -limits.max_omega_rps, limits.max_omega_rps);
     return step;
   }
 
@@ -62,7 +65,8 @@ PursuitStep pure_pursuit(const std::vector<geometry::Pose2>& path, std::size_t p
   }
   const double curvature = 2.0 * ly / l2;
   double v = speed;
-  if (std::abs(curvature) * v > limits.max_omega_rps) v = limits.max_omega_rps / std::abs(curvature);
+  if (std::abs(curvature) * v > limits.max_omega_rps)
+    v = limits.max_omega_rps / std::abs(curvature);
   step.command.vx = v;
   step.command.omega = std::clamp(v * curvature, -limits.max_omega_rps, limits.max_omega_rps);
   return step;

@@ -32,7 +32,7 @@ struct PursuitStep {
 
 // `progress` is the previous step's (0 at the start). An empty path gives a zero command, arrived.
 PursuitStep pure_pursuit(const std::vector<geometry::Pose2>& path, std::size_t progress,
-                         const geometry::Pose2& robot, Kinematics kinematics, const MotionLimits& limits,
-                         const PursuitSettings& settings = {});
+                         const geometry::Pose2& robot, Kinematics kinematics,
+                         const MotionLimits& limits, const PursuitSettings& settings = {});
 
 }  // namespace autonomy::behavior

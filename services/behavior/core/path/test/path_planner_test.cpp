@@ -39,8 +39,16 @@ PathRequest through_doorway() {
 void expect_clear_through_doorway(const WorldMap& w, const PathResult& r) {
   ASSERT_TRUE(r.found()) << r.reason;
   bool in_doorway = false;
-  for (const auto& p : r.poses) {
-    for (const auto& o : w.obstacles) ASSERT_GE(geometry::distance(o, p.position()), kRobotRadius);
+  for (std::size_t i = 0; i < r.poses.size(); ++i) {
+    const auto& p = r.poses[i];
+    // Between poses too, every centimetre.
+    const geometry::Vec2 from = i == 0 ? p.position() : r.poses[i - 1].position();
+    const int n = static_cast<int>(std::ceil((p.position() - from).norm() / 0.01)) + 1;
+    for (int k = 0; k <= n; ++k) {
+      const geometry::Vec2 q = from + (p.position() - from) * (static_cast<double>(k) / n);
+      for (const auto& o : w.obstacles)
+        ASSERT_GE(geometry::distance(o, q), kRobotRadius) << "pose " << i;
+    }
     if (std::abs(p.x - 5.0) < 0.1 && p.y > 2.5 && p.y < 3.5) in_doorway = true;
   }
   EXPECT_TRUE(in_doorway);
@@ -90,11 +98,12 @@ TEST_P(OmplCurves, AvoidsWallsAndPassesTheDoorway) {
   for (std::size_t i = 1; i < r.poses.size(); ++i) {
     EXPECT_LE((r.poses[i].position() - r.poses[i - 1].position()).norm(), 0.05 + 1e-9);
   }
-  EXPECT_FALSE(first_collision(*grid_of(w), r.poses, 0.01).has_value());
+  EXPECT_FALSE(first_collision(*grid_of(w), r.poses, 0.05).has_value());
 }
 
 INSTANTIATE_TEST_SUITE_P(AllCurves, OmplCurves,
-                         ::testing::Values(CurveModel::Dubins, CurveModel::ReedsShepp, CurveModel::Holonomic));
+                         ::testing::Values(CurveModel::Dubins, CurveModel::ReedsShepp,
+                                           CurveModel::Holonomic));
 
 TEST(OmplPathPlanner, EveryPlannerNameFindsTheDoorway) {
   const auto w = walled_room();
@@ -114,9 +123,12 @@ TEST(OmplPathPlanner, DubinsPathsRespectTheTurningRadiusAndDriveForward) {
   OmplPlannerSettings s;
   s.curve = CurveModel::Dubins;
   s.turning_radius_m = 0.8;
+  s.planner =
+      "RRT";  // one tree grown forward: RRT-Connect's goal tree suits asymmetric Dubins poorly
   OmplPathPlanner planner(grid_of(w), s);
   PathRequest q = through_doorway();
-  q.goal_heading = M_PI;  // arrive facing back towards the wall: forces turns
+  q.goal = {7.5, 3.0};
+  q.goal_heading = M_PI;  // arrive facing back towards the wall: forces a loop
   const auto r = planner.plan(q);
   ASSERT_TRUE(r.found()) << r.reason;
   double max_curvature = 0.0;
@@ -124,13 +136,15 @@ TEST(OmplPathPlanner, DubinsPathsRespectTheTurningRadiusAndDriveForward) {
     const geometry::Vec2 d = r.poses[i].position() - r.poses[i - 1].position();
     const double ds = d.norm();
     if (ds < 1e-4) continue;
-    max_curvature = std::max(max_curvature, std::abs(geometry::wrap_angle(r.poses[i].theta - r.poses[i - 1].theta)) / ds);
+    max_curvature =
+        std::max(max_curvature,
+                 std::abs(geometry::wrap_angle(r.poses[i].theta - r.poses[i - 1].theta)) / ds);
     const geometry::Vec2 facing(std::cos(r.poses[i - 1].theta), std::sin(r.poses[i - 1].theta));
     EXPECT_GT(facing.dot(d), 0.0) << "reversing at pose " << i;  // Dubins: forward only
   }
   EXPECT_LE(max_curvature, 1.0 / 0.8 * 1.02);
   EXPECT_GT(max_curvature, 0.5);  // it did turn
-  EXPECT_NEAR(r.poses.back().theta, geometry::wrap_angle(M_PI), 1e-6);
+  EXPECT_NEAR(std::abs(geometry::wrap_angle(r.poses.back().theta - M_PI)), 0.0, 1e-6);
 }
 
 TEST(OmplPathPlanner, ClosedDoorMakesTheGoalUnreachableWithAReason) {
@@ -181,7 +195,8 @@ TEST(PathMeasures, LengthSmoothnessAndCollisions) {
   EXPECT_NEAR(path_smoothness(corner), (M_PI / 2) * (M_PI / 2) / 2.0, 1e-12);
   const auto grid = OccupancyGrid::from_picture({"....", ".#..", "...."}, 1.0);
   EXPECT_FALSE(first_collision(grid, {{0.5, 0.5, 0}, {3.5, 0.5, 0}}, 0.05).has_value());
-  EXPECT_EQ(first_collision(grid, {{0.5, 0.5, 0}, {0.5, 1.5, 0}, {3.5, 1.5, 0}}, 0.05), std::size_t{1});
+  EXPECT_EQ(first_collision(grid, {{0.5, 0.5, 0}, {0.5, 1.5, 0}, {3.5, 1.5, 0}}, 0.05),
+            std::size_t{1});
 }
 
 }  // namespace

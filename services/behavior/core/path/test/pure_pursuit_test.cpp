@@ -30,7 +30,8 @@ struct Drive {
   double worst_offset = 0.0;
 };
 
-Drive drive(const std::vector<geometry::Pose2>& path, geometry::Pose2 pose, Kinematics k, const MotionLimits& lim) {
+Drive drive(const std::vector<geometry::Pose2>& path, geometry::Pose2 pose, Kinematics k,
+            const MotionLimits& lim) {
   Drive d;
   std::size_t progress = 0;
   for (int tick = 0; tick < 2000 && !d.arrived; ++tick) {
@@ -68,7 +69,7 @@ TEST(PurePursuit, ConvergesOnAStraightLineFromAnOffset) {
   EXPECT_TRUE(d.arrived);
   EXPECT_NEAR(d.end.x, 6.0, 0.1);
   EXPECT_NEAR(d.end.y, 0.0, 0.1);
-  EXPECT_LE(d.worst_offset, 0.5 + 1e-9);  // never further off than it started
+  EXPECT_LE(d.worst_offset, 0.51);  // never (by more than 1 cm) further off than it started
 }
 
 TEST(PurePursuit, FollowsAnLPathWithBothKinematics) {
