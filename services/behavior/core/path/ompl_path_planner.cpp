@@ -72,6 +72,44 @@ double arrival_heading(const std::vector<geometry::Pose2>& route, double fallbac
   return fallback;
 }
 
+// Half the samples near the grid route (Gaussian around a random pose of it, heading along it or,
+// for reversing robots, against it), half uniform: narrow doorways are a thin slice of SE(2) that
+// uniform sampling rarely hits, and the route says where they are.
+class RouteBiasedSampler : public ob::StateSampler {
+ public:
+  RouteBiasedSampler(const ob::StateSpace* space,
+                     std::shared_ptr<const std::vector<geometry::Pose2>> route, bool reverse_too)
+      : StateSampler(space),
+        uniform_(space->allocDefaultStateSampler()),
+        route_(std::move(route)),
+        reverse_too_(reverse_too) {}
+
+  void sampleUniform(ob::State* state) override {
+    if (route_->empty() || rng_.uniform01() < 0.5) {
+      uniform_->sampleUniform(state);
+      return;
+    }
+    const auto& p = (*route_)[static_cast<std::size_t>(
+        rng_.uniformInt(0, static_cast<int>(route_->size()) - 1))];
+    auto* se2 = state->as<ob::SE2StateSpace::StateType>();
+    const double flip = reverse_too_ && rng_.uniform01() < 0.5 ? M_PI : 0.0;
+    se2->setXY(rng_.gaussian(p.x, 0.15), rng_.gaussian(p.y, 0.15));
+    se2->setYaw(rng_.gaussian(p.theta + flip, 0.3));
+    space_->enforceBounds(state);
+  }
+  void sampleUniformNear(ob::State* state, const ob::State* near, double distance) override {
+    uniform_->sampleUniformNear(state, near, distance);
+  }
+  void sampleGaussian(ob::State* state, const ob::State* mean, double std_dev) override {
+    uniform_->sampleGaussian(state, mean, std_dev);
+  }
+
+ private:
+  ob::StateSamplerPtr uniform_;
+  std::shared_ptr<const std::vector<geometry::Pose2>> route_;
+  bool reverse_too_;
+};
+
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -174,6 +212,11 @@ PathResult OmplPathPlanner::plan(const PathRequest& request) {
     return r;
   }
 
+  auto route_poses = std::make_shared<const std::vector<geometry::Pose2>>(route.poses);
+  const bool reverse_too = settings_.curve == CurveModel::ReedsShepp;
+  impl_->space->setStateSamplerAllocator([route_poses, reverse_too](const ob::StateSpace* space) {
+    return std::make_shared<RouteBiasedSampler>(space, route_poses, reverse_too);
+  });
   og::SimpleSetup ss(impl_->space);
   const auto si = ss.getSpaceInformation();
   const auto free_at = [&grid](double x, double y) {

@@ -8,9 +8,11 @@
 //
 // The exact cost-to-go field towards the goal is computed first: it proves unreachability at once
 // (status Unreachable instead of a timeout), gives the goal heading when the caller gives none,
-// and serves the optimising planners as their cost-to-go heuristic and stop threshold, so their
-// paths stay close to the grid optimum. Results are simplified with OMPL's path simplifier and
-// checked against the grid again (first_collision) before they are returned.
+// biases half of the planners' samples towards its route (narrow doorways are a thin slice of
+// SE(2) that uniform samples rarely hit), and serves the optimising planners as their cost-to-go
+// heuristic and stop threshold, so their paths stay close to the grid optimum. Results are
+// simplified with OMPL's path simplifier and checked against the grid again (first_collision)
+// before they are returned.
 //
 // OMPL's headers stay in ompl_path_planner.cpp (pimpl): they are heavy to compile.
 #include "services/behavior/core/path/path_planner.hpp"
