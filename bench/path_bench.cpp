@@ -51,6 +51,7 @@ int main(int argc, char** argv) {
   double budget = 0.05;
   unsigned seed = 1;
   std::string out = "docs";
+  double office_resolution = 0.1;
   app.add_option("--pairs", pairs, "Start/goal pairs per map")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
@@ -58,6 +59,9 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.001, 60.0))
       ->capture_default_str();
   app.add_option("--seed", seed, "Seed for pairs and OMPL")->capture_default_str();
+  app.add_option("--office-resolution", office_resolution, "Office grid resolution in m")
+      ->check(CLI::Range(0.02, 0.5))
+      ->capture_default_str();
   app.add_option("--out", out, "Directory for the logs and the summary")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   seed_ompl(seed);
@@ -94,7 +98,7 @@ int main(int argc, char** argv) {
     std::string name, file;
     double resolution;
   };
-  for (const MapCase& mc : {MapCase{"office", "deploy/scenarios/office.pbtxt", 0.1},
+  for (const MapCase& mc : {MapCase{"office", "deploy/scenarios/office.pbtxt", office_resolution},
                             MapCase{"recon", "deploy/scenarios/recon.pbtxt", 0.25}}) {
     const auto loaded = sim::load_scenario_file(std::string(AUTONOMY_SOURCE_DIR) + "/" + mc.file);
     if (!loaded.ok()) {
