@@ -1,0 +1,347 @@
+// The only file that compiles OMPL's headers (see ompl_path_planner.hpp).
+#include "services/behavior/core/path/ompl_path_planner.hpp"
+
+#include "services/behavior/core/cost_to_go_field.hpp"
+#include "services/behavior/core/path/grid_path_planner.hpp"
+
+#include <ompl/base/objectives/PathLengthOptimizationObjective.h>
+#include <ompl/base/spaces/DubinsStateSpace.h>
+#include <ompl/base/spaces/ReedsSheppStateSpace.h>
+#include <ompl/base/spaces/SE2StateSpace.h>
+#include <ompl/geometric/PathSimplifier.h>
+#include <ompl/geometric/SimpleSetup.h>
+#include <ompl/geometric/planners/informedtrees/BITstar.h>
+#include <ompl/geometric/planners/kpiece/KPIECE1.h>
+#include <ompl/geometric/planners/prm/LazyPRMstar.h>
+#include <ompl/geometric/planners/prm/PRMstar.h>
+#include <ompl/geometric/planners/rrt/InformedRRTstar.h>
+#include <ompl/geometric/planners/rrt/RRT.h>
+#include <ompl/geometric/planners/rrt/RRTConnect.h>
+#include <ompl/geometric/planners/rrt/RRTstar.h>
+#include <ompl/tools/benchmark/Benchmark.h>
+#include <ompl/tools/benchmark/MachineSpecs.h>
+#include <ompl/util/Console.h>
+#include <ompl/util/RandomNumbers.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace autonomy::behavior {
+
+namespace ob = ompl::base;
+namespace og = ompl::geometric;
+
+namespace {
+
+// Octile over Euclidean length is at most this (22.5 degree lines), so the grid optimum divided by
+// it, less a couple of cells for the endpoints, is a lower bound of the continuous path's length.
+constexpr double kOctileOverEuclid = 1.0824;
+
+ob::PlannerPtr make_planner(const std::string& name, const ob::SpaceInformationPtr& si) {
+  if (name == "RRTConnect") return std::make_shared<og::RRTConnect>(si);
+  if (name == "RRT") return std::make_shared<og::RRT>(si);
+  if (name == "RRTstar") return std::make_shared<og::RRTstar>(si);
+  if (name == "InformedRRTstar") return std::make_shared<og::InformedRRTstar>(si);
+  if (name == "PRMstar") return std::make_shared<og::PRMstar>(si);
+  if (name == "LazyPRMstar") return std::make_shared<og::LazyPRMstar>(si);
+  if (name == "BITstar") return std::make_shared<og::BITstar>(si);
+  if (name == "KPIECE1") return std::make_shared<og::KPIECE1>(si);
+  return nullptr;
+}
+
+PathResult failure(PathStatus status, std::string reason) {
+  PathResult r;
+  r.status = status;
+  r.reason = std::move(reason);
+  return r;
+}
+
+// The heading the grid route arrives with: from the route's pose about 0.5 m before the goal.
+double arrival_heading(const std::vector<geometry::Pose2>& route, double fallback) {
+  if (route.size() < 2) return fallback;
+  const geometry::Vec2 goal = route.back().position();
+  for (std::size_t i = route.size() - 1; i-- > 0;) {
+    const geometry::Vec2 d = goal - route[i].position();
+    if (d.norm() >= 0.5 || i == 0) {
+      return d.norm() > 1e-9 ? std::atan2(d.y(), d.x()) : fallback;
+    }
+  }
+  return fallback;
+}
+
+// Half the samples near the grid route (Gaussian around a random pose of it, heading along it or,
+// for reversing robots, against it), half uniform: narrow doorways are a thin slice of SE(2) that
+// uniform sampling rarely hits, and the route says where they are.
+class RouteBiasedSampler : public ob::StateSampler {
+ public:
+  RouteBiasedSampler(const ob::StateSpace* space,
+                     std::shared_ptr<const std::vector<geometry::Pose2>> route, bool reverse_too)
+      : StateSampler(space),
+        uniform_(space->allocDefaultStateSampler()),
+        route_(std::move(route)),
+        reverse_too_(reverse_too) {}
+
+  void sampleUniform(ob::State* state) override {
+    if (route_->empty() || rng_.uniform01() < 0.5) {
+      uniform_->sampleUniform(state);
+      return;
+    }
+    const auto& p = (*route_)[static_cast<std::size_t>(
+        rng_.uniformInt(0, static_cast<int>(route_->size()) - 1))];
+    auto* se2 = state->as<ob::SE2StateSpace::StateType>();
+    const double flip = reverse_too_ && rng_.uniform01() < 0.5 ? M_PI : 0.0;
+    se2->setXY(rng_.gaussian(p.x, 0.15), rng_.gaussian(p.y, 0.15));
+    se2->setYaw(rng_.gaussian(p.theta + flip, 0.3));
+    space_->enforceBounds(state);
+  }
+  void sampleUniformNear(ob::State* state, const ob::State* near, double distance) override {
+    uniform_->sampleUniformNear(state, near, distance);
+  }
+  void sampleGaussian(ob::State* state, const ob::State* mean, double std_dev) override {
+    uniform_->sampleGaussian(state, mean, std_dev);
+  }
+
+ private:
+  ob::StateSamplerPtr uniform_;
+  std::shared_ptr<const std::vector<geometry::Pose2>> route_;
+  bool reverse_too_;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+const char* to_string(CurveModel m) {
+  switch (m) {
+    case CurveModel::Dubins:
+      return "dubins";
+    case CurveModel::ReedsShepp:
+      return "reeds_shepp";
+    case CurveModel::Holonomic:
+      return "se2";
+  }
+  return "unknown";
+}
+
+std::optional<CurveModel> parse_curve_model(const std::string& text) {
+  for (CurveModel m : {CurveModel::Dubins, CurveModel::ReedsShepp, CurveModel::Holonomic}) {
+    if (text == to_string(m)) return m;
+  }
+  return std::nullopt;
+}
+
+const std::vector<std::string>& ompl_planner_names() {
+  static const std::vector<std::string> names{"RRTConnect",      "RRT",     "RRTstar",
+                                              "InformedRRTstar", "PRMstar", "LazyPRMstar",
+                                              "BITstar",         "KPIECE1"};
+  return names;
+}
+
+std::optional<std::string> settings_problem(const OmplPlannerSettings& s) {
+  const auto& names = ompl_planner_names();
+  if (std::find(names.begin(), names.end(), s.planner) == names.end()) {
+    std::string known;
+    for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
+    return "unknown planner '" + s.planner + "' (known: " + known + ")";
+  }
+  if (s.curve != CurveModel::Holonomic &&
+      !(s.turning_radius_m > 0.0 && std::isfinite(s.turning_radius_m))) {
+    return "turning radius must be positive and finite";
+  }
+  if (!(s.motion_step_m > 0.0 && s.motion_step_m <= 0.05))
+    return "motion step must be in (0, 0.05] m";
+  if (!(s.good_enough_ratio >= 1.0 && std::isfinite(s.good_enough_ratio))) {
+    return "good-enough ratio must be finite and at least 1";
+  }
+  return std::nullopt;
+}
+
+void seed_ompl(std::uint32_t seed) {
+  ompl::RNG::setSeed(seed);
+}
+
+struct OmplPathPlanner::Impl {
+  std::shared_ptr<const OccupancyGrid> grid;
+  ob::StateSpacePtr space;
+};
+
+OmplPathPlanner::OmplPathPlanner(std::shared_ptr<const OccupancyGrid> grid,
+                                 OmplPlannerSettings settings)
+    : settings_(std::move(settings)), impl_(std::make_unique<Impl>()) {
+  if (!grid) throw std::invalid_argument("OMPL path planner needs a grid");
+  if (auto problem = settings_problem(settings_)) throw std::invalid_argument(*problem);
+  ompl::msg::setLogLevel(ompl::msg::LOG_NONE);  // failures come back as statuses with reasons
+  impl_->grid = std::move(grid);
+  switch (settings_.curve) {
+    case CurveModel::Dubins:
+      impl_->space = std::make_shared<ob::DubinsStateSpace>(settings_.turning_radius_m, false);
+      break;
+    case CurveModel::ReedsShepp:
+      impl_->space = std::make_shared<ob::ReedsSheppStateSpace>(settings_.turning_radius_m);
+      break;
+    case CurveModel::Holonomic:
+      impl_->space = std::make_shared<ob::SE2StateSpace>();
+      break;
+  }
+  ob::RealVectorBounds bounds(2);
+  bounds.setLow(0, 0.0);
+  bounds.setLow(1, 0.0);
+  bounds.setHigh(0, impl_->grid->width_m());
+  bounds.setHigh(1, impl_->grid->height_m());
+  impl_->space->as<ob::SE2StateSpace>()->setBounds(bounds);
+}
+
+OmplPathPlanner::~OmplPathPlanner() = default;
+
+PathResult OmplPathPlanner::plan(const PathRequest& request) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (auto problem = request_problem(request)) return failure(PathStatus::InvalidRequest, *problem);
+  const OccupancyGrid& grid = *impl_->grid;
+
+  // The exact field first: it settles blocked and unreachable goals without sampling.
+  const CostToGoField field(grid, request.goal);
+  const PathResult route = follow_field(field, grid, request.start);
+  if (!route.found()) {
+    PathResult r = route;
+    r.planning_s = seconds_since(t0);
+    return r;
+  }
+
+  auto route_poses = std::make_shared<const std::vector<geometry::Pose2>>(route.poses);
+  const bool reverse_too = settings_.curve == CurveModel::ReedsShepp;
+  impl_->space->setStateSamplerAllocator([route_poses, reverse_too](const ob::StateSpace* space) {
+    return std::make_shared<RouteBiasedSampler>(space, route_poses, reverse_too);
+  });
+  og::SimpleSetup ss(impl_->space);
+  const auto si = ss.getSpaceInformation();
+  const auto free_at = [&grid](double x, double y) {
+    const auto c = grid.geometry().cell_at({x, y});
+    return c && !grid.blocked(*c);
+  };
+  ss.setStateValidityChecker([free_at](const ob::State* s) {
+    const auto* se2 = s->as<ob::SE2StateSpace::StateType>();
+    return free_at(se2->getX(), se2->getY());
+  });
+  // Distances in these spaces are metres along the motion (plus 0.5 per radian of turn in plain
+  // SE(2)), so this fraction of the extent is a check at least every motion_step_m.
+  // (0.8: the chord between two checked states then stays under the step on curves too.)
+  si->setStateValidityCheckingResolution(0.8 * settings_.motion_step_m /
+                                         impl_->space->getMaximumExtent());
+
+  ob::ScopedState<ob::SE2StateSpace> start(impl_->space), goal(impl_->space);
+  start->setXY(request.start.x, request.start.y);
+  start->setYaw(request.start.theta);
+  goal->setXY(request.goal.x(), request.goal.y());
+  goal->setYaw(request.goal_heading ? *request.goal_heading
+                                    : arrival_heading(route.poses, request.start.theta));
+  impl_->space->enforceBounds(start.get());  // headings into OMPL's [-pi, pi)
+  impl_->space->enforceBounds(goal.get());
+  ss.setStartAndGoalStates(start, goal, 1e-3);
+
+  auto objective = std::make_shared<ob::PathLengthOptimizationObjective>(si);
+  const double res = grid.geometry().resolution_m();
+  const geometry::Vec2 goal_xy = request.goal;
+  const CostToGoField* f = &field;
+  objective->setCostToGoHeuristic([f, goal_xy, res](const ob::State* s, const ob::Goal*) {
+    const auto* se2 = s->as<ob::SE2StateSpace::StateType>();
+    const geometry::Vec2 p(se2->getX(), se2->getY());
+    const double euclid = (goal_xy - p).norm();
+    const double grid_bound = f->cost_at(p) / kOctileOverEuclid - 2.0 * res;
+    return ob::Cost(std::isfinite(grid_bound) ? std::max(euclid, grid_bound) : euclid);
+  });
+  objective->setCostThreshold(ob::Cost(settings_.good_enough_ratio * route.length_m));
+  ss.setOptimizationObjective(objective);
+  ss.setPlanner(make_planner(settings_.planner, si));
+
+  try {
+    ss.setup();
+    // Most of the budget plans; what is left (at least a fifth) simplifies.
+    const ob::PlannerStatus solved =
+        ss.solve(ob::timedPlannerTerminationCondition(0.8 * request.budget_s));
+    if (solved != ob::PlannerStatus::EXACT_SOLUTION) {
+      PathResult r =
+          failure(PathStatus::NotFound, std::string(settings_.planner) + " found no path in " +
+                                            std::to_string(request.budget_s) + " s (" +
+                                            solved.asString() + ")");
+      r.planning_s = seconds_since(t0);
+      return r;
+    }
+    og::PathGeometric path = ss.getSolutionPath();
+    if (settings_.simplify) {
+      og::PathSimplifier simplifier(si, ss.getGoal(), objective);
+      const double left = std::max(0.2 * request.budget_s, request.budget_s - seconds_since(t0));
+      simplifier.simplify(path, left);
+    }
+    PathResult r;
+    r.status = PathStatus::Found;
+    // The poses are exactly the states the motion validator checked along each motion (same
+    // segment count, same interpolation), so the final check tests what the planner accepted.
+    const auto pose_of = [](const ob::State* st) {
+      const auto* se2 = st->as<ob::SE2StateSpace::StateType>();
+      return geometry::Pose2{se2->getX(), se2->getY(), se2->getYaw()};
+    };
+    ob::ScopedState<ob::SE2StateSpace> between(impl_->space);
+    r.poses.push_back(pose_of(path.getState(0)));
+    for (std::size_t i = 1; i < path.getStateCount(); ++i) {
+      const ob::State* a = path.getState(i - 1);
+      const ob::State* b = path.getState(i);
+      const int n = std::max(1, static_cast<int>(impl_->space->validSegmentCount(a, b)));
+      for (int k = 1; k < n; ++k) {
+        impl_->space->interpolate(a, b, static_cast<double>(k) / n, between.get());
+        r.poses.push_back(pose_of(between.get()));
+      }
+      r.poses.push_back(pose_of(b));
+    }
+    r.length_m = path_length(r.poses);
+    r.planning_s = seconds_since(t0);
+    if (const auto bad = first_collision(grid, r.poses, settings_.motion_step_m)) {
+      return failure(PathStatus::NotFound, "planned path leaves the free space at segment " +
+                                               std::to_string(*bad) + "; discarded");
+    }
+    return r;
+  } catch (const ompl::Exception& e) {
+    PathResult r = failure(PathStatus::NotFound, std::string("OMPL: ") + e.what());
+    r.planning_s = seconds_since(t0);
+    return r;
+  }
+}
+
+namespace {
+
+// OMPL's Benchmark with its experiment filled from our own runs, so its writer does the format.
+class LogWriter : public ompl::tools::Benchmark {
+ public:
+  LogWriter(og::SimpleSetup& setup, const BenchmarkLog& log) : Benchmark(setup, log.experiment) {
+    exp_.maxTime = log.max_time_s;
+    exp_.maxMem = 0.0;
+    exp_.runCount = log.run_count;
+    exp_.startTime = ompl::time::now();
+    exp_.totalDuration = log.total_duration_s;
+    exp_.setupInfo = log.setup_info;
+    exp_.seed = log.seed;
+    exp_.host = ompl::machine::getHostname();
+    exp_.cpuInfo = ompl::machine::getCPUInfo();
+    exp_.parameters = log.parameters;
+    for (const auto& p : log.planners) {
+      PlannerExperiment e;
+      e.name = p.name;
+      e.runs = p.runs;
+      exp_.planners.push_back(std::move(e));
+    }
+  }
+};
+
+}  // namespace
+
+bool write_benchmark_log(std::ostream& out, const BenchmarkLog& log) {
+  og::SimpleSetup setup(std::make_shared<ob::SE2StateSpace>());
+  const LogWriter writer(setup, log);
+  return writer.saveResultsToStream(out);
+}
+
+}  // namespace autonomy::behavior
