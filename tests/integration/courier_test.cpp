@@ -115,6 +115,14 @@ class CourierTest : public ProcessTest {
       if (s.job_id == job && s.state == state) return s;
     return std::nullopt;
   }
+  ::testing::AssertionResult both_jobs_finished(const std::string& what) {
+    auto result = await(what, [&] {
+      poll();
+      return finished("job-1") && finished("job-2");
+    }, kRun);
+    if (!result) result << "\n" << job_story("job-1") << "\n" << job_story("job-2");
+    return result;
+  }
   bool finished(const std::string& job) {
     return job_in(job, msg::JobState::Completed) || job_in(job, msg::JobState::Failed) ||
            job_in(job, msg::JobState::Cancelled);
@@ -189,10 +197,7 @@ TEST_F(CourierTest, Fig6DoorStaysOpenBothDelivered) {
   setup_observers(160);
   start_world(office_scenario(""));
   send_paper_commands();
-  ASSERT_TRUE(await("both jobs finished", [&] {
-    poll();
-    return finished("job-1") && finished("job-2");
-  }, kRun)) << job_story("job-1") << "\n" << job_story("job-2");
+  ASSERT_TRUE(both_jobs_finished("both jobs finished"));
   EXPECT_TRUE(job_in("job-1", msg::JobState::Completed)) << job_story("job-1");
   EXPECT_TRUE(job_in("job-2", msg::JobState::Completed)) << job_story("job-2");
   EXPECT_FALSE(job_in("job-1", msg::JobState::Opportunistic)) << job_story("job-1");
@@ -210,10 +215,7 @@ TEST_F(CourierTest, Fig5DoorClosesThenReopensTheRedLetterIsDeliveredOpportunisti
   setup_observers(161);
   start_world(office_scenario(kFig5Script));
   send_paper_commands();
-  ASSERT_TRUE(await("both jobs finished", [&] {
-    poll();
-    return finished("job-1") && finished("job-2");
-  }, kRun)) << job_story("job-1") << "\n" << job_story("job-2");
+  ASSERT_TRUE(both_jobs_finished("both jobs finished"));
 
   const auto red_loaded = object_tick("letter-red", "rhino", "");
   const auto opportunistic = job_in("job-1", msg::JobState::Opportunistic);
@@ -259,10 +261,7 @@ TEST_F(CourierTest, Fig7DoorStaysClosedTheRedLetterFailsAndIsReturned) {
   setup_observers(162);
   start_world(office_scenario(kFig7Script));
   send_paper_commands();
-  ASSERT_TRUE(await("both jobs finished", [&] {
-    poll();
-    return finished("job-1") && finished("job-2");
-  }, kRun)) << job_story("job-1") << "\n" << job_story("job-2");
+  ASSERT_TRUE(both_jobs_finished("both jobs finished"));
   const auto failed = job_in("job-1", msg::JobState::Failed);
   ASSERT_TRUE(failed) << job_story("job-1");
   EXPECT_NE(failed->reason.find("A-120 closed at"), std::string::npos) << failed->reason;
@@ -305,10 +304,7 @@ TEST_F(CourierTest, TwoRedLettersAreNeverAboardTogether) {
     return replies_->all().size() >= 2;
   }));
   release_world();
-  ASSERT_TRUE(await("both jobs finished", [&] {
-    poll();
-    return finished("job-1") && finished("job-2");
-  }, kRun)) << job_story("job-1") << "\n" << job_story("job-2");
+  ASSERT_TRUE(both_jobs_finished("both jobs finished"));
   EXPECT_TRUE(job_in("job-1", msg::JobState::Completed)) << job_story("job-1");
   EXPECT_TRUE(job_in("job-2", msg::JobState::Completed)) << job_story("job-2");
   // One letter's delivery ends before the other's load.
@@ -336,10 +332,7 @@ TEST_F(CourierTest, KilledMidDeliveryTheRestartedCourierFinishesFromItsJournal) 
   release_world();
   ChildProcess& again = start_courier("courier-restarted");
   ASSERT_TRUE(await_ready(*beats_, again));
-  ASSERT_TRUE(await("both jobs finished after the restart", [&] {
-    poll();
-    return finished("job-1") && finished("job-2");
-  }, kRun)) << job_story("job-1") << "\n" << job_story("job-2");
+  ASSERT_TRUE(both_jobs_finished("both jobs finished after the restart"));
   EXPECT_TRUE(job_in("job-1", msg::JobState::Completed)) << job_story("job-1");
   EXPECT_TRUE(job_in("job-2", msg::JobState::Completed)) << job_story("job-2");
   EXPECT_TRUE(object_tick("letter-red", "", "michael-desk"));
