@@ -1,6 +1,7 @@
 #include "services/courier/core/execution/courier_executive.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -213,6 +214,7 @@ void CourierExecutive::on_goal(const std::string& robot, const std::string& goal
   if (it == robots_.end()) return;
   Robot& r = it->second;
   if (goal_id != r.goal_id || r.goal_id.empty()) return;  // not ours, or an older one
+  r.goal_answered = true;
   switch (outcome) {
     case GoalOutcome::accepted:
     case GoalOutcome::active: return;
@@ -343,6 +345,21 @@ void CourierExecutive::on_handover(const std::string& request_id, HandoverOutcom
     }
     const bool waits = reason == "nobody_present" || reason == "helper_busy" || reason == "robot_busy" ||
                        reason == "object_in_handover";
+    // "nobody at a118-desk at 12:10 (somebody is back at 14:00)": wait for that, it is no failure.
+    std::optional<double> back_at;
+    if (const auto at = detail.find("back at "); at != std::string::npos && detail.size() >= at + 13) {
+      const std::string hhmm = detail.substr(at + 8, 5);
+      if (hhmm[2] == ':' && std::isdigit(static_cast<unsigned char>(hhmm[0])) &&
+          std::isdigit(static_cast<unsigned char>(hhmm[1])) && std::isdigit(static_cast<unsigned char>(hhmm[3])) &&
+          std::isdigit(static_cast<unsigned char>(hhmm[4])))
+        back_at = (hhmm[0] - '0') * 36000.0 + (hhmm[1] - '0') * 3600.0 + (hhmm[3] - '0') * 600.0 + (hhmm[4] - '0') * 60.0;
+    }
+    if (reason == "nobody_present" && back_at && *back_at > now_s) {
+      r.hold_until_s = *back_at;
+      if (!job.finished()) job.reason = "waiting: " + detail;
+      changed(job);
+      return;
+    }
     if (waits && !exhausted(handover_attempts_, step_key)) {
       r.hold_until_s = now_s + settings_.retry_after_s;
       if (!job.finished()) job.reason = "waiting: " + (detail.empty() ? reason : detail);
@@ -577,6 +594,8 @@ void CourierExecutive::send_goal(Robot& robot, const std::string& place, double 
   if (!p) return;
   robot.goal_id = robot.id + "/" + place + "/" + settings_.id_tag + "." + std::to_string(++robot.goal_seq);
   robot.goal_place = place;
+  robot.goal_sent_s = now_s;
+  robot.goal_answered = false;
   robot.at_place.clear();
   const double tolerance = std::min(settings_.goal_tolerance_m, 0.5 * p->radius);
   orders_.goals.push_back({robot.id, robot.goal_id, p->x, p->y, tolerance});
@@ -606,6 +625,13 @@ void CourierExecutive::dispatch(Robot& robot, double now_s) {
       orders_.handovers.push_back(robot.handover->order);
     }
     return;
+  }
+  if (!robot.goal_id.empty() && !robot.goal_answered && now_s - robot.goal_sent_s >= settings_.goal_answer_s) {
+    // The robot's behavior said nothing about its goal (not running, or the goal was lost): the
+    // same as a refusal, so it is sent again and, if that goes on, the place is given up.
+    on_goal(robot.id, robot.goal_id, GoalOutcome::rejected,
+            "no answer from the behavior of " + robot.id + " within " + std::to_string(static_cast<int>(settings_.goal_answer_s)) + " s",
+            now_s);
   }
   if (now_s < robot.hold_until_s) return;
   const PlanStop* next = nullptr;

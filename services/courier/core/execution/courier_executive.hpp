@@ -30,6 +30,7 @@ struct ExecutiveSettings {
   double accepted_timeout_s = 60.0;  // an accepted one not completed by then is asked again (same id)
   double retry_after_s = 20.0;       // a refused handover (nobody present, helper busy) is retried
   double goal_retry_s = 1.0;         // a refused or preempted goal is sent again after this
+  double goal_answer_s = 10.0;       // a goal its behavior never acknowledges counts as refused
   double schedule_retry_s = 1.0;     // a schedule that failed as a whole is tried again after this
   int max_blocked_goals = 2;         // a place unreachable this often, no door to blame: its job fails
   int max_attempts = 3;              // refused goals, failed or refused handovers of one step
@@ -151,6 +152,8 @@ class CourierExecutive {
     double x = 0.0, y = 0.0;
     std::string goal_id;     // the navigation goal it pursues for us
     std::string goal_place;  // where that goal leads
+    double goal_sent_s = 0.0;
+    bool goal_answered = false;  // the behavior said anything about goal_id
     std::string at_place;    // the place its last goal reached
     std::optional<PendingHandover> handover;
     std::vector<PlanStop> route;

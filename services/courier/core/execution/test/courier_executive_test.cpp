@@ -518,5 +518,35 @@ TEST_F(ExecutiveTest, IdsCarryTheRunTag) {
   EXPECT_EQ(last_handover_.request_id, "rhino/j1/load/r1.1");
 }
 
+TEST_F(ExecutiveTest, NobodyPresentWaitsUntilThePersonIsBack) {
+  exec_.add_job(delivery("j1", "book-green", "green", "book", "librarian-desk", "a114-desk"), now_);
+  step();
+  arrive();
+  exec_.on_handover(last_handover_.request_id, HandoverOutcome::rejected, "nobody_present",
+                    "nobody at librarian-desk at 09:01 (somebody is back at 10:00)", now_);
+  step();
+  EXPECT_EQ(exec_.job("j1")->reason, "waiting: nobody at librarian-desk at 09:01 (somebody is back at 10:00)");
+  int requests = 0;
+  for (now_ = 9 * 3600.0 + 100; now_ < 10 * 3600.0; now_ += 60) requests += step().handovers.size();
+  EXPECT_EQ(requests, 0);  // no failed attempts piling up meanwhile
+  now_ = 10 * 3600.0 + 1;
+  EXPECT_EQ(step().handovers.size(), 1u);
+  EXPECT_FALSE(exec_.job("j1")->finished());
+}
+
+TEST_F(ExecutiveTest, AGoalTheBehaviorNeverAnswersIsSentAgainThenGivenUp) {
+  exec_.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
+  step();
+  int goals = 0;
+  for (int i = 0; i < 60; ++i) {
+    now_ += 1.0;
+    goals += step().goals.size();
+  }
+  EXPECT_EQ(goals, 2);
+  EXPECT_EQ(exec_.job("j1")->state, JobState::failed);
+  EXPECT_NE(exec_.job("j1")->reason.find("no answer from the behavior of rhino within 10 s"), std::string::npos)
+      << exec_.job("j1")->reason;
+}
+
 }  // namespace
 }  // namespace autonomy::courier
