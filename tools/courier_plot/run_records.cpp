@@ -74,7 +74,9 @@ EventsParse parse_events(const std::string& text, const std::string& source) {
 
 TrajectoryParse parse_trajectory_csv(const std::string& text, const std::string& source) {
   TrajectoryParse out;
-  std::istringstream in(text);
+  // A simulator stopped by a signal leaves its last row cut short: only whole lines count.
+  const size_t whole = text.rfind('\n');
+  std::istringstream in(whole == std::string::npos ? text : text.substr(0, whole + 1));
   std::string line;
   size_t number = 0;
   while (std::getline(in, line)) {

@@ -1,7 +1,8 @@
 #pragma once
 // The two records of a courier run that the pictures are drawn from, parsed with checks: the
 // courier's events file (`courier --events`, one JSON object per line) and the simulator's
-// trajectory CSV (`simulator --trajectory`: tick,time_s,robot,x,y,theta). Pure: text in, plain
+// trajectory CSV (`simulator --trajectory`: tick,time_s,robot,x,y,theta; a last line without its
+// newline is a row cut short by a stopped simulator and is ignored). Pure: text in, plain
 // structs out; every problem names source:line.
 #include "common/geometry/geometry.hpp"
 

@@ -147,8 +147,9 @@ TEST(CourierRecords, BadLinesNameFileAndLine) {
       "tick,time_s,robot,x,y,theta\n0,0,rhino,1,2,0\n1,0.1,rhino,x1,2,0\n", "t.csv");
   ASSERT_TRUE(bad_csv.error);
   EXPECT_EQ(*bad_csv.error, "t.csv:3: x is not a number: 'x1'");
+  // The last row cut short (no newline) by a stopped simulator is ignored.
   auto good_csv = parse_trajectory_csv(
-      "tick,time_s,robot,x,y,theta\n0,0,rhino,1,2,0\n1,0.1,rhino,1.5,2,0\n", "t.csv");
+      "tick,time_s,robot,x,y,theta\n0,0,rhino,1,2,0\n1,0.1,rhino,1.5,2,0\n2,0.2,rhi", "t.csv");
   ASSERT_FALSE(good_csv.error);
   ASSERT_EQ(good_csv.paths.at("rhino").size(), 2u);
 }
