@@ -159,6 +159,12 @@ std::string render_run_svg(const RunPicture& pic) {
     legend_x += 70;
   }
 
+  for (const auto& m : pic.markers)
+    svg << "<circle cx=\"" << px(m.position.x()) << "\" cy=\"" << py(m.position.y())
+        << "\" r=\"9\" fill=\"white\" stroke=\"black\" stroke-width=\"1.5\"/><text x=\"" << px(m.position.x())
+        << "\" y=\"" << py(m.position.y()) + 4 << "\" font-size=\"11\" font-weight=\"bold\" text-anchor=\"middle\">"
+        << escape(m.label) << "</text>\n";
+
   // Second legend row: what the line styles, doors and areas mean (only those drawn).
   if (second_legend_row) {
     const double y = margin + 26;  // text baseline

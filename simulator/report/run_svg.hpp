@@ -35,6 +35,12 @@ struct PicturePlace {
   double radius = 0.0;  // drawn as a dotted circle when > 0
 };
 
+// A numbered marker drawn above the paths (a step of a story told beside the picture).
+struct PictureMarker {
+  geometry::Vec2 position{0.0, 0.0};
+  std::string label;  // short: drawn inside the marker's circle
+};
+
 struct RunPicture {
   const WorldSpec* world = nullptr;
   std::map<std::string, std::vector<geometry::Vec2>> paths;  // by robot id
@@ -49,6 +55,7 @@ struct RunPicture {
   // segment ending at point k is drawn as flag k says. A robot without flags, or whose flag count
   // differs from its point count, is drawn solid as before.
   std::map<std::string, std::vector<bool>> path_connected;
+  std::vector<PictureMarker> markers;
 };
 
 std::string render_run_svg(const RunPicture& picture);
