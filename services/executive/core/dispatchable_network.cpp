@@ -15,7 +15,7 @@ bool finite(Time t) {
 }  // namespace
 
 std::optional<DispatchableNetwork> make_dispatchable(const planner::FlexiblePlan& plan,
-                                                     std::string* error) {
+                                                     std::string* error, bool filter) {
   DispatchableNetwork net;
   const std::size_t n = 1 + 2 * plan.tokens.size();
   net.names.push_back("origin");
@@ -72,6 +72,12 @@ std::optional<DispatchableNetwork> make_dispatchable(const planner::FlexiblePlan
         *error = "plan constraints are inconsistent (negative cycle through " + net.names[a] + ")";
       return std::nullopt;
     }
+  net.earliest.assign(n, -kUnbounded);
+  net.latest.assign(n, kUnbounded);
+  for (std::size_t a = 0; a < n; ++a) {
+    if (at(a, 0) != kNone) net.earliest[a] = -at(a, 0);
+    if (at(0, a) != kNone) net.latest[a] = at(0, a);
+  }
   // Triangle rule of Muscettola, Morris and Pollack: with D(A,B) + D(B,C) = D(A,C),
   //  a non-negative edge A->C is dominated by a non-negative B->C, and
   //  a negative edge A->C is dominated by a negative A->B.
@@ -87,7 +93,7 @@ std::optional<DispatchableNetwork> make_dispatchable(const planner::FlexiblePlan
       ++net.closed_edges;
       Time w = at(a, c);
       bool dominated = false;
-      for (std::size_t b = 0; b < n && !dominated; ++b) {
+      for (std::size_t b = 0; filter && b < n && !dominated; ++b) {
         if (b == a || b == c || at(a, b) == kNone || at(b, c) == kNone) continue;
         if (at(a, b) + at(b, c) != w || rigid(a, b) || rigid(b, c)) continue;
         dominated = w >= 0 ? at(b, c) >= 0 : at(a, b) < 0;

@@ -26,6 +26,9 @@ struct DispatchableNetwork {
   std::vector<std::string> names;   // "origin", "<id>.start", "<id>.end"; index 0 is origin
   std::vector<DistanceEdge> edges;  // minimal dispatchable set
   std::size_t closed_edges = 0;     // finite edges of the all-pairs closure, before filtering
+  // Each timepoint's window relative to the origin, from the closure (+-kUnbounded if none):
+  // the filtered edges alone do not link every timepoint to the origin.
+  std::vector<Time> earliest, latest;
   // Per timepoint: the token it belongs to (index into FlexiblePlan::tokens) and which end.
   std::vector<std::size_t> token;  // SIZE_MAX for origin
   std::vector<bool> is_start;
@@ -36,8 +39,9 @@ struct DispatchableNetwork {
 };
 
 // Builds the dispatchable form. Returns nullopt (and a reason) when the plan names an unknown
-// timepoint or its constraints are inconsistent (a negative cycle).
+// timepoint or its constraints are inconsistent (a negative cycle). filter = false keeps every
+// edge of the closure (the baseline the filter is checked and measured against).
 std::optional<DispatchableNetwork> make_dispatchable(const planner::FlexiblePlan& plan,
-                                                     std::string* error);
+                                                     std::string* error, bool filter = true);
 
 }  // namespace autonomy::executive

@@ -15,6 +15,10 @@ Dispatcher::Dispatcher(planner::FlexiblePlan plan, DispatchableNetwork net, Time
   }
   lb_.assign(n, -kUnbounded);
   ub_.assign(n, kUnbounded);
+  for (std::size_t p = 0; p < n; ++p) {
+    if (net_.earliest[p] > -kUnbounded) lb_[p] = origin_time + net_.earliest[p];
+    if (net_.latest[p] < kUnbounded) ub_[p] = origin_time + net_.latest[p];
+  }
   at_.assign(n, 0);
   done_.assign(n, false);
   observed_.assign(n, false);
@@ -24,8 +28,6 @@ Dispatcher::Dispatcher(planner::FlexiblePlan plan, DispatchableNetwork net, Time
     if (!line.tokens.empty() && line.tokens.back() < plan_.tokens.size())
       held_[tp(line.tokens.back(), false)] = true;
   if (plan_.horizon > 0) hold_until_ = origin_time + plan_.horizon;
-  // The closure holds origin->X and X->origin edges for every bounded timepoint, so executing
-  // the origin alone sets every window.
   execute(0, origin_time);
   pending_.clear();
 }

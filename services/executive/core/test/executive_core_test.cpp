@@ -83,6 +83,35 @@ TEST(DispatchableNetwork, RemovesDominatedEdgesAndKeepsTheNeeded) {
   EXPECT_TRUE(kept);
 }
 
+FlexiblePlan ds1_plan();
+
+// The point of the dispatchable form: propagating to neighbours over the filtered edges gives
+// the same windows as propagating over the whole closure.
+TEST(DispatchableNetwork, FilteredWindowsEqualThoseOfTheFullClosure) {
+  std::string error;
+  FlexiblePlan plan = ds1_plan();
+  auto filtered = make_dispatchable(plan, &error);
+  auto full = make_dispatchable(plan, &error, false);
+  ASSERT_TRUE(filtered && full) << error;
+  EXPECT_EQ(full->edges.size(), full->closed_edges);
+  EXPECT_LT(filtered->edges.size(), full->edges.size());
+  Dispatcher a(plan, *filtered, 0), b(plan, *full, 0);
+  for (Dispatcher* d : {&a, &b}) d->set_observed(4, false, true);  // the arc ends when it ends
+  for (Time t = 0; t <= 100; ++t) {
+    if (t == 47)
+      for (Dispatcher* d : {&a, &b}) d->observe(4, false, 47);
+    EXPECT_EQ(kinds(a.step(t)), kinds(b.step(t))) << t;
+    for (std::size_t i = 0; i < plan.tokens.size(); ++i)
+      for (bool start : {true, false})
+        if (!a.executed(i, start)) {
+          EXPECT_EQ(a.lower(i, start), b.lower(i, start)) << t << " token " << i;
+          EXPECT_EQ(a.upper(i, start), b.upper(i, start)) << t << " token " << i;
+        }
+  }
+  EXPECT_TRUE(a.finished());
+  EXPECT_FALSE(a.broken());
+}
+
 TEST(DispatchableNetwork, RejectsInconsistentAndUnknownTimepoints) {
   FlexiblePlan plan = picture_plan();
   plan.constraints.push_back({"1.start", "1.end", 20, 30});  // duration is at most 10
@@ -492,6 +521,56 @@ TEST(Executive, DispatchesThePlannersCameraPlan) {
   EXPECT_EQ(sc.received[1].command, "take_image");
   EXPECT_EQ(sc.received[1].arguments, std::vector<std::string>{"asteroid"});
   EXPECT_GE(sc.received[1].sent, turn_done);  // the picture waits for the observed turn end
+}
+
+}  // namespace
+}  // namespace autonomy::executive
+
+namespace autonomy::executive {
+namespace {
+
+void four_faults(Time t, ToySpacecraft* s) {
+  s->readings["bus_current_a"] = 1.0;
+  s->readings["bus_current_b"] = 1.0;
+  s->readings["bus_switch_status"] = t < 5 ? 1.0 : 0.0;
+  if (t == 12) s->modes["thruster_x"] = "stuck_closed";
+  if (t == 20) s->modes["lpe"] = "failed";
+}
+
+TEST(Executive, FourFaultsTogetherEachGetItsResponseAndThePlanFinishes) {
+  auto exec = ds1_executive();
+  ToySpacecraft sc;
+  sc.never_confirm.insert("ips");
+  Outcome r = run(exec.get(), &sc, 100, four_faults);
+  std::vector<std::string> responses;
+  for (const auto& e : r.events)
+    if (e.kind.rfind("fault ", 0) == 0) responses.push_back(e.kind + "@" + std::to_string(e.time));
+  EXPECT_EQ(responses,
+            (std::vector<std::string>{"fault ignore_sensor@7", "fault switch_control_mode@12",
+                                      "fault reset@20", "fault stop_commanding@36"}));
+  EXPECT_EQ(sent(sc), (std::vector<std::string>{"camera take_image@10", "adcs set_mode@12",
+                                                "lpe reset@20", "ips thrust@30"}));
+  EXPECT_FALSE(r.replan);
+  EXPECT_TRUE(exec->finished());
+}
+
+TEST(Executive, WithAllFiveTheStuckCameraAbortsAfterTheEarlierResponses) {
+  auto exec = ds1_executive();
+  ToySpacecraft sc;
+  sc.never_confirm.insert("ips");
+  sc.stuck.insert("camera");
+  Outcome r = run(exec.get(), &sc, 100, four_faults);
+  std::vector<std::string> responses;
+  for (const auto& e : r.events)
+    if (e.kind.rfind("fault ", 0) == 0) responses.push_back(e.kind + "@" + std::to_string(e.time));
+  EXPECT_EQ(responses,
+            (std::vector<std::string>{"fault ignore_sensor@7", "fault switch_control_mode@12",
+                                      "fault abort_and_replan@16"}));
+  ASSERT_TRUE(r.replan);
+  EXPECT_EQ(r.replan->known_faults, (std::map<std::string, std::string>{
+                                        {"camera", "imaging"}, {"thruster_x", "stuck_closed"}}));
+  EXPECT_TRUE(exec->aborted());
+  EXPECT_FALSE(exec->finished());
 }
 
 }  // namespace
