@@ -284,6 +284,12 @@ struct Outcome {
     for (const auto& e : events) n += e.kind == kind;
     return n;
   }
+  std::vector<std::string> responses() const {  // "fault <kind>@time", in order
+    std::vector<std::string> out;
+    for (const auto& e : events)
+      if (e.kind.rfind("fault ", 0) == 0) out.push_back(e.kind + "@" + std::to_string(e.time));
+    return out;
+  }
   const ExecutiveEvent* first(const std::string& kind) const {
     for (const auto& e : events)
       if (e.kind == kind) return &e;
@@ -542,10 +548,7 @@ TEST(Executive, FourFaultsTogetherEachGetItsResponseAndThePlanFinishes) {
   ToySpacecraft sc;
   sc.never_confirm.insert("ips");
   Outcome r = run(exec.get(), &sc, 100, four_faults);
-  std::vector<std::string> responses;
-  for (const auto& e : r.events)
-    if (e.kind.rfind("fault ", 0) == 0) responses.push_back(e.kind + "@" + std::to_string(e.time));
-  EXPECT_EQ(responses,
+  EXPECT_EQ(r.responses(),
             (std::vector<std::string>{"fault ignore_sensor@7", "fault switch_control_mode@12",
                                       "fault reset@20", "fault stop_commanding@36"}));
   EXPECT_EQ(sent(sc), (std::vector<std::string>{"camera take_image@10", "adcs set_mode@12",
@@ -560,10 +563,7 @@ TEST(Executive, WithAllFiveTheStuckCameraAbortsAfterTheEarlierResponses) {
   sc.never_confirm.insert("ips");
   sc.stuck.insert("camera");
   Outcome r = run(exec.get(), &sc, 100, four_faults);
-  std::vector<std::string> responses;
-  for (const auto& e : r.events)
-    if (e.kind.rfind("fault ", 0) == 0) responses.push_back(e.kind + "@" + std::to_string(e.time));
-  EXPECT_EQ(responses,
+  EXPECT_EQ(r.responses(),
             (std::vector<std::string>{"fault ignore_sensor@7", "fault switch_control_mode@12",
                                       "fault abort_and_replan@16"}));
   ASSERT_TRUE(r.replan);
