@@ -112,6 +112,27 @@ TEST(DispatchableNetwork, FilteredWindowsEqualThoseOfTheFullClosure) {
   EXPECT_FALSE(a.broken());
 }
 
+// A tight triangle is not enough: a non-negative A->C (C <= A + 7) through a negative B->C
+// (C precedes B by 3) must stay, or C's bound would wait for B, which waits for C.
+TEST(DispatchableNetwork, ANonNegativeEdgeIsNotDominatedThroughANegativeOne) {
+  FlexiblePlan plan;
+  plan.horizon = 200;
+  add_token(&plan, "sc.a", "a", "x", {}, 0, 50, 0, 10, "");           // A = 0.start, B = 0.end
+  add_token(&plan, "sc.c", "c", "y", {}, 5, 100, 0, kUnbounded, "");  // C = 1.start
+  plan.constraints.push_back({"1.start", "0.end", 3, 100});
+  plan.constraints.push_back({"0.start", "1.start", 0, 100});
+  std::string error;
+  auto net = make_dispatchable(plan, &error);
+  ASSERT_TRUE(net) << error;
+  Dispatcher d(plan, *net, 0);
+  EXPECT_EQ(kinds(d.step(0)), (std::vector<std::string>{"start 0@0"}));
+  EXPECT_EQ(d.lower(1, true), 5);
+  EXPECT_EQ(d.upper(1, true), 7);  // A at 0, B <= 10, C <= B - 3
+  EXPECT_EQ(kinds(d.step(5)), (std::vector<std::string>{"start 1@5"}));
+  EXPECT_EQ(d.lower(0, false), 8);
+  EXPECT_EQ(d.upper(0, false), 10);
+}
+
 TEST(DispatchableNetwork, RejectsInconsistentAndUnknownTimepoints) {
   FlexiblePlan plan = picture_plan();
   plan.constraints.push_back({"1.start", "1.end", 20, 30});  // duration is at most 10
