@@ -1,0 +1,86 @@
+#pragma once
+// The executive's pure core: one step per tick turns the dispatcher's events into device
+// commands, awaits their confirmations, monitors device modes against the plan and applies the
+// fault table's responses. It never blocks and does bounded work per step; a broken plan or an
+// abort yields a replan request built from the current state, never a wait.
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "dispatcher.hpp"
+#include "fault_responses.hpp"
+
+namespace autonomy::executive {
+
+struct ExecutiveEvent {
+  // "started", "ended", "command", "confirmed", "violation", "fault <action kind>", "aborted"
+  std::string kind;
+  Time time = 0;
+  std::string text;
+};
+
+// What the planner needs to plan again from now: each timeline's current value (the token
+// executing, with the time it started), the goals not achieved yet, and the faults known
+// (device -> reported mode) so the new plan treats them as facts.
+struct ReplanRequest {
+  struct TimelineValue {
+    std::string timeline, predicate;
+    std::vector<std::string> parameters;
+    Time since = 0;
+  };
+  Time time = 0;
+  std::string reason;
+  std::vector<TimelineValue> state;
+  std::vector<planner::PlanToken> remaining_goals;
+  std::map<std::string, std::string> known_faults;
+  std::vector<std::string> disabled_devices;
+};
+
+struct Tick {
+  std::vector<DeviceCommand> commands;  // to send, in order
+  std::vector<ExecutiveEvent> events;
+  std::optional<ReplanRequest> replan;  // set once, on the tick the plan is abandoned
+};
+
+struct ExecutiveOptions {
+  std::vector<DeviceCommand> safing;  // sent on abort (e.g. camera off, engine standby)
+};
+
+class Executive {
+ public:
+  // Checks the plan (its network must be consistent); nullptr with a reason otherwise.
+  static std::unique_ptr<Executive> create(planner::FlexiblePlan plan, CommandMap commands,
+                                           std::vector<std::unique_ptr<FaultResponse>> faults,
+                                           ExecutiveOptions options, Time start,
+                                           std::string* error);
+
+  Tick step(const Observations& seen);  // seen.time is now; ticks must not go back in time
+  // A command confirmed in telemetry; false when none was awaited.
+  bool confirm(const std::string& device, const std::string& command);
+
+  bool aborted() const { return aborted_; }
+  bool finished() const { return dispatcher_.finished(); }
+  bool disabled(const std::string& device) const { return tracker_.disabled(device); }
+  bool ignored(const std::string& sensor) const { return ignored_sensors_.count(sensor) > 0; }
+  const Dispatcher& dispatcher() const { return dispatcher_; }
+
+ private:
+  Executive(Dispatcher dispatcher, CommandMap commands,
+            std::vector<std::unique_ptr<FaultResponse>> faults, ExecutiveOptions options);
+  PlanState plan_state(Time now) const;
+  ReplanRequest replan_request(const Observations& seen, std::string reason) const;
+  void stop_commanding(const std::string& device);
+  void abort(const Observations& seen, std::string reason, Tick* tick);
+
+  Dispatcher dispatcher_;
+  CommandMap commands_;
+  CommandTracker tracker_;
+  std::vector<std::unique_ptr<FaultResponse>> faults_;
+  ExecutiveOptions options_;
+  std::set<std::string> ignored_sensors_;
+  bool aborted_ = false;
+};
+
+}  // namespace autonomy::executive

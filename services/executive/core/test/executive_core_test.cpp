@@ -1,0 +1,598 @@
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "executive.hpp"
+#include "planner.hpp"
+#include "planner_language.hpp"
+
+namespace autonomy::executive {
+namespace {
+
+using planner::FlexiblePlan;
+using planner::PlanToken;
+
+// A token; the caller adds it to a timeline.
+void add_token(FlexiblePlan* plan, const std::string& timeline, const std::string& attr,
+               const std::string& predicate, std::vector<std::string> params, Time s_lb, Time s_ub,
+               Time d_lb, Time d_ub, const std::string& origin) {
+  PlanToken t;
+  t.id = static_cast<std::uint32_t>(plan->tokens.size());
+  t.object = "sc";
+  t.attribute = attr;
+  t.predicate = predicate;
+  t.parameters = std::move(params);
+  t.start_lb = s_lb;
+  t.start_ub = s_ub;
+  t.end_lb = 0;
+  t.end_ub = kUnbounded;
+  t.duration_lb = d_lb;
+  t.duration_ub = d_ub;
+  t.origin = origin;
+  plan->tokens.push_back(t);
+  for (auto& line : plan->timelines)
+    if (line.name == timeline) {
+      // Tokens on a timeline meet: the previous end is this start.
+      if (!line.tokens.empty())
+        plan->constraints.push_back(
+            {std::to_string(line.tokens.back()) + ".end", std::to_string(t.id) + ".start", 0, 0});
+      line.tokens.push_back(t.id);
+      return;
+    }
+  plan->timelines.push_back({timeline, {t.id}});
+}
+
+// camera: ready [initial] -> picture (start >= 20, lasting 5..10) -> ready.
+FlexiblePlan picture_plan() {
+  FlexiblePlan plan;
+  plan.horizon = 200;
+  add_token(&plan, "sc.camera", "camera", "ready", {}, 0, 0, 0, kUnbounded, "initial");
+  add_token(&plan, "sc.camera", "camera", "picture", {"asteroid"}, 20, 100, 5, 10, "goal shot");
+  add_token(&plan, "sc.camera", "camera", "ready", {}, 0, 200, 0, kUnbounded, "after of token 1");
+  return plan;
+}
+
+Dispatcher make_dispatcher(FlexiblePlan plan, Time origin = 0) {
+  std::string error;
+  auto net = make_dispatchable(plan, &error);
+  EXPECT_TRUE(net) << error;
+  return Dispatcher(std::move(plan), std::move(*net), origin);
+}
+
+std::vector<std::string> kinds(const std::vector<DispatchEvent>& events) {
+  std::vector<std::string> out;
+  for (const DispatchEvent& e : events)
+    out.push_back((e.kind == DispatchEvent::Kind::kStarted ? "start "
+                   : e.kind == DispatchEvent::Kind::kEnded ? "end "
+                                                           : "violation ") +
+                  std::to_string(e.token) + "@" + std::to_string(e.time));
+  return out;
+}
+
+TEST(DispatchableNetwork, RemovesDominatedEdgesAndKeepsTheNeeded) {
+  std::string error;
+  auto net = make_dispatchable(picture_plan(), &error);
+  ASSERT_TRUE(net) << error;
+  EXPECT_EQ(net->names.size(), 7u);
+  EXPECT_LT(net->edges.size(), net->closed_edges);
+  // The picture's duration (start -> end <= 10) is not implied by any other single edge
+  // through a third timepoint, so it must stay.
+  std::size_t s = net->index_of(1, true), e = net->index_of(1, false);
+  bool kept = false;
+  for (const DistanceEdge& d : net->edges) kept |= d.from == s && d.to == e && d.weight == 10;
+  EXPECT_TRUE(kept);
+}
+
+FlexiblePlan ds1_plan();
+
+// The point of the dispatchable form: propagating to neighbours over the filtered edges gives
+// the same windows as propagating over the whole closure.
+TEST(DispatchableNetwork, FilteredWindowsEqualThoseOfTheFullClosure) {
+  std::string error;
+  FlexiblePlan plan = ds1_plan();
+  auto filtered = make_dispatchable(plan, &error);
+  auto full = make_dispatchable(plan, &error, false);
+  ASSERT_TRUE(filtered && full) << error;
+  EXPECT_EQ(full->edges.size(), full->closed_edges);
+  EXPECT_LT(filtered->edges.size(), full->edges.size());
+  Dispatcher a(plan, *filtered, 0), b(plan, *full, 0);
+  for (Dispatcher* d : {&a, &b}) d->set_observed(4, false, true);  // the arc ends when it ends
+  for (Time t = 0; t <= 100; ++t) {
+    if (t == 47)
+      for (Dispatcher* d : {&a, &b}) d->observe(4, false, 47);
+    EXPECT_EQ(kinds(a.step(t)), kinds(b.step(t))) << t;
+    for (std::size_t i = 0; i < plan.tokens.size(); ++i)
+      for (bool start : {true, false})
+        if (!a.executed(i, start)) {
+          EXPECT_EQ(a.lower(i, start), b.lower(i, start)) << t << " token " << i;
+          EXPECT_EQ(a.upper(i, start), b.upper(i, start)) << t << " token " << i;
+        }
+  }
+  EXPECT_TRUE(a.finished());
+  EXPECT_FALSE(a.broken());
+}
+
+// A tight triangle is not enough: a non-negative A->C (C <= A + 7) through a negative B->C
+// (C precedes B by 3) must stay, or C's bound would wait for B, which waits for C.
+TEST(DispatchableNetwork, ANonNegativeEdgeIsNotDominatedThroughANegativeOne) {
+  FlexiblePlan plan;
+  plan.horizon = 200;
+  add_token(&plan, "sc.a", "a", "x", {}, 0, 50, 0, 10, "");           // A = 0.start, B = 0.end
+  add_token(&plan, "sc.c", "c", "y", {}, 5, 100, 0, kUnbounded, "");  // C = 1.start
+  plan.constraints.push_back({"1.start", "0.end", 3, 100});
+  plan.constraints.push_back({"0.start", "1.start", 0, 100});
+  std::string error;
+  auto net = make_dispatchable(plan, &error);
+  ASSERT_TRUE(net) << error;
+  Dispatcher d(plan, *net, 0);
+  EXPECT_EQ(kinds(d.step(0)), (std::vector<std::string>{"start 0@0"}));
+  EXPECT_EQ(d.lower(1, true), 5);
+  EXPECT_EQ(d.upper(1, true), 7);  // A at 0, B <= 10, C <= B - 3
+  EXPECT_EQ(kinds(d.step(5)), (std::vector<std::string>{"start 1@5"}));
+  EXPECT_EQ(d.lower(0, false), 8);
+  EXPECT_EQ(d.upper(0, false), 10);
+}
+
+TEST(DispatchableNetwork, RejectsInconsistentAndUnknownTimepoints) {
+  FlexiblePlan plan = picture_plan();
+  plan.constraints.push_back({"1.start", "1.end", 20, 30});  // duration is at most 10
+  std::string error;
+  EXPECT_FALSE(make_dispatchable(plan, &error));
+  EXPECT_NE(error.find("negative cycle"), std::string::npos) << error;
+  plan = picture_plan();
+  plan.constraints.push_back({"9.start", "1.end", 0, 5});
+  EXPECT_FALSE(make_dispatchable(plan, &error));
+  EXPECT_NE(error.find("'9.start'"), std::string::npos) << error;
+}
+
+TEST(Dispatcher, ExecutesTimepointsInOrderAtTheirEarliestTimes) {
+  Dispatcher d = make_dispatcher(picture_plan());
+  EXPECT_EQ(kinds(d.step(0)), (std::vector<std::string>{"start 0@0"}));
+  EXPECT_TRUE(d.step(19).empty());  // the picture may not start before 20
+  EXPECT_EQ(kinds(d.step(20)), (std::vector<std::string>{"end 0@20", "start 1@20"}));
+  EXPECT_EQ(d.lower(1, false), 25);
+  EXPECT_EQ(d.upper(1, false), 30);
+  EXPECT_TRUE(d.step(24).empty());
+  EXPECT_EQ(kinds(d.step(25)), (std::vector<std::string>{"end 1@25", "start 2@25"}));
+  // The last ready holds the camera's value to the horizon.
+  EXPECT_TRUE(d.step(199).empty());
+  EXPECT_FALSE(d.finished());
+  EXPECT_EQ(kinds(d.step(200)), (std::vector<std::string>{"end 2@200"}));
+  EXPECT_TRUE(d.finished());
+  EXPECT_FALSE(d.broken());
+}
+
+TEST(Dispatcher, AnObservedEndTightensTheBoundsAfterIt) {
+  Dispatcher d = make_dispatcher(picture_plan(), 1000);  // the origin at absolute time 1000
+  d.set_observed(1, false, true);
+  d.step(1000);
+  d.step(1020);
+  EXPECT_TRUE(d.step(1025).empty());  // observed: not forced at its earliest time
+  d.observe(1, false, 1028);
+  EXPECT_EQ(d.lower(2, true), 1028);
+  EXPECT_EQ(d.upper(2, true), 1028);
+  EXPECT_EQ(kinds(d.step(1028)), (std::vector<std::string>{"end 1@1028", "start 2@1028"}));
+  EXPECT_FALSE(d.broken());
+}
+
+TEST(Dispatcher, AMissingObservationIsAViolationNotAHang) {
+  Dispatcher d = make_dispatcher(picture_plan());
+  d.set_observed(1, false, true);
+  d.step(0);
+  d.step(20);
+  EXPECT_TRUE(d.step(30).empty());  // still inside [25, 30]
+  auto events = d.step(31);
+  // The picture's end and the ready start rigidly tied to it both passed their bound.
+  ASSERT_EQ(kinds(events), (std::vector<std::string>{"violation 1@31", "violation 2@31"}));
+  EXPECT_EQ(events[0].kind, DispatchEvent::Kind::kViolation);
+  EXPECT_NE(events[0].reason.find("1.end: not observed by its bound 30"), std::string::npos)
+      << events[0].reason;
+  EXPECT_TRUE(d.broken());
+  EXPECT_TRUE(d.step(32).empty());  // reported once
+}
+
+TEST(Dispatcher, AnObservationOutsideItsWindowIsAViolation) {
+  Dispatcher d = make_dispatcher(picture_plan());
+  d.set_observed(1, false, true);
+  d.step(0);
+  d.step(20);
+  d.observe(1, false, 22);  // the picture lasts at least 5
+  auto events = d.step(22);
+  ASSERT_FALSE(events.empty());
+  EXPECT_EQ(events[0].kind, DispatchEvent::Kind::kViolation);
+  EXPECT_NE(events[0].reason.find("outside [25, 30]"), std::string::npos) << events[0].reason;
+}
+
+TEST(CommandMap, ChecksRulesAndFillsParameters) {
+  CommandMap map;
+  std::string error;
+  EXPECT_FALSE(map.add({"sc.camera", "picture", "camera", "take_image", "", {"?x"}}, &error));
+  EXPECT_NE(error.find("'?x' is not ?<number>"), std::string::npos) << error;
+  EXPECT_FALSE(map.add({"sc.camera", "ready", "camera", "", ""}, &error));
+  EXPECT_NE(error.find("a command or an expected mode"), std::string::npos) << error;
+  ASSERT_TRUE(
+      map.add({"sc.camera", "picture", "camera", "take_image", "imaging", {"?0", "raw"}}, &error));
+  EXPECT_FALSE(map.add({"sc.camera", "picture", "camera", "x", ""}, &error));
+  EXPECT_NE(error.find("declared twice"), std::string::npos);
+  FlexiblePlan plan = picture_plan();
+  auto c = map.command_for(plan.tokens[1], 1, 7, &error);
+  ASSERT_TRUE(c);
+  EXPECT_EQ(c->arguments, (std::vector<std::string>{"asteroid", "raw"}));
+  EXPECT_EQ(c->sent, 7);
+  plan.tokens[1].parameters.clear();
+  error.clear();
+  EXPECT_FALSE(map.command_for(plan.tokens[1], 1, 7, &error));
+  EXPECT_NE(error.find("no parameter ?0"), std::string::npos) << error;
+}
+
+// ---- the executive against a small simulated spacecraft ----
+
+// A toy spacecraft: devices take the mode their command implies, confirm the next tick, and
+// faults from the test change that.
+struct ToySpacecraft {
+  std::map<std::string, std::string> modes{
+      {"camera", "ready"}, {"ips", "standby"}, {"adcs", "pointing"}};
+  std::map<std::string, double> readings;
+  std::set<std::string> never_confirm, stuck;
+  std::vector<DeviceCommand> to_confirm, received;
+  Time imaging_until = -1;
+
+  Observations observe(Time now) {
+    if (imaging_until >= 0 && now >= imaging_until && !stuck.count("camera")) {
+      modes["camera"] = "ready";
+      imaging_until = -1;
+    }
+    return {now, modes, readings, {}};
+  }
+  void receive(const std::vector<DeviceCommand>& commands, Time now) {
+    for (const DeviceCommand& c : commands) {
+      received.push_back(c);
+      if (never_confirm.count(c.device)) continue;
+      if (c.command == "take_image") {
+        modes["camera"] = "imaging";
+        imaging_until = now + 5;
+      } else if (c.command == "thrust") {
+        modes["ips"] = "thrusting";
+      } else if (c.command == "standby") {
+        modes["ips"] = "standby";
+      } else if (c.command == "reset") {
+        modes[c.device] = "ok";
+      } else if (c.command == "turn") {
+        modes["adcs"] = "turning";
+      }
+      to_confirm.push_back(c);
+    }
+  }
+};
+
+// camera: ready -> picture(asteroid) at >= 10 for 5..10 -> ready;
+// engine: off -> thrusting(2) at >= 30 for 10..20 -> off. Both are goals.
+FlexiblePlan ds1_plan() {
+  FlexiblePlan plan;
+  plan.horizon = 100;
+  add_token(&plan, "sc.camera", "camera", "ready", {}, 0, 0, 0, kUnbounded, "initial");
+  add_token(&plan, "sc.camera", "camera", "picture", {"asteroid"}, 10, 60, 5, 10, "goal shot");
+  add_token(&plan, "sc.camera", "camera", "ready", {}, 0, 100, 0, kUnbounded, "after");
+  add_token(&plan, "sc.engine", "engine", "off", {}, 0, 0, 0, kUnbounded, "initial");
+  add_token(&plan, "sc.engine", "engine", "thrusting", {"2"}, 30, 60, 10, 20, "goal arc");
+  add_token(&plan, "sc.engine", "engine", "off", {}, 0, 100, 0, kUnbounded, "after");
+  return plan;
+}
+
+CommandMap ds1_commands() {
+  CommandMap map;
+  std::string error;
+  for (CommandRule r : std::vector<CommandRule>{
+           {"sc.camera", "picture", "camera", "take_image", "imaging", {"?0"}, 3},
+           {"sc.camera", "ready", "camera", "", "ready"},
+           {"sc.engine", "thrusting", "ips", "thrust", "thrusting", {"?0"}, 5},
+           {"sc.engine", "off", "ips", "standby", "standby", {}, 5}})
+    EXPECT_TRUE(map.add(r, &error)) << error;
+  return map;
+}
+
+struct Outcome {
+  std::vector<Tick> ticks;
+  std::vector<ExecutiveEvent> events;
+  std::optional<ReplanRequest> replan;
+  bool has(const std::string& kind) const {
+    for (const auto& e : events)
+      if (e.kind == kind) return true;
+    return false;
+  }
+  std::size_t count(const std::string& kind) const {
+    std::size_t n = 0;
+    for (const auto& e : events) n += e.kind == kind;
+    return n;
+  }
+  std::vector<std::string> responses() const {  // "fault <kind>@time", in order
+    std::vector<std::string> out;
+    for (const auto& e : events)
+      if (e.kind.rfind("fault ", 0) == 0) out.push_back(e.kind + "@" + std::to_string(e.time));
+    return out;
+  }
+  const ExecutiveEvent* first(const std::string& kind) const {
+    for (const auto& e : events)
+      if (e.kind == kind) return &e;
+    return nullptr;
+  }
+};
+
+std::unique_ptr<Executive> ds1_executive(FlexiblePlan plan = ds1_plan()) {
+  std::string error;
+  ExecutiveOptions options;
+  options.safing = {{"camera", "off", {}}, {"ips", "standby", {}}};
+  auto exec = Executive::create(
+      std::move(plan), ds1_commands(),
+      ds1_fault_table({{"bus_switch_status", {"bus_current_a", "bus_current_b"}, 0.5, 3}},
+                      {{"thruster_x", "adcs", "wheels_and_other_thrusters"}}),
+      options, 0, &error);
+  EXPECT_TRUE(exec) << error;
+  return exec;
+}
+
+// Steps executive and spacecraft together once per time unit; `inject` may change the
+// spacecraft before it is observed. Bounded by `until`.
+template <typename Inject>
+Outcome run(Executive* exec, ToySpacecraft* sc, Time until, Inject inject) {
+  Outcome r;
+  for (Time t = 0; t <= until; ++t) {
+    for (const DeviceCommand& c : sc->to_confirm) exec->confirm(c.device, c.command);
+    sc->to_confirm.clear();
+    inject(t, sc);
+    Tick tick = exec->step(sc->observe(t));
+    sc->receive(tick.commands, t);
+    r.events.insert(r.events.end(), tick.events.begin(), tick.events.end());
+    if (tick.replan) r.replan = tick.replan;
+    r.ticks.push_back(std::move(tick));
+  }
+  return r;
+}
+
+std::vector<std::string> sent(const ToySpacecraft& sc) {
+  std::vector<std::string> out;
+  for (const DeviceCommand& c : sc.received)
+    out.push_back(c.device + " " + c.command + "@" + std::to_string(c.sent));
+  return out;
+}
+
+TEST(Executive, WithoutFaultsCommandsThePlanInOrderAndFinishes) {
+  auto exec = ds1_executive();
+  ToySpacecraft sc;
+  Outcome r = run(exec.get(), &sc, 100, [](Time, ToySpacecraft*) {});
+  EXPECT_EQ(sent(sc),
+            (std::vector<std::string>{"camera take_image@10", "ips thrust@30", "ips standby@40"}));
+  EXPECT_EQ(sc.received[0].arguments, std::vector<std::string>{"asteroid"});
+  EXPECT_TRUE(exec->finished());
+  EXPECT_FALSE(exec->aborted());
+  EXPECT_FALSE(r.has("violation"));
+  EXPECT_EQ(r.count("fault abort_and_replan") + r.count("fault reset"), 0u);
+}
+
+TEST(Executive, CameraStuckOnAbortsSafesAndRequestsAPlanFromTheCurrentState) {
+  auto exec = ds1_executive();
+  ToySpacecraft sc;
+  sc.stuck.insert("camera");
+  Outcome r = run(exec.get(), &sc, 100, [](Time, ToySpacecraft*) {});
+  // The picture ends by time at 15; the camera still images at 15 and 16: two samples.
+  const ExecutiveEvent* fault = r.first("fault abort_and_replan");
+  ASSERT_TRUE(fault);
+  EXPECT_EQ(fault->time, 16);
+  EXPECT_NE(fault->text.find("camera reports imaging but the plan expects ready"),
+            std::string::npos);
+  ASSERT_TRUE(r.replan);
+  EXPECT_EQ(r.replan->time, 16);
+  EXPECT_EQ(r.replan->known_faults, (std::map<std::string, std::string>{{"camera", "imaging"}}));
+  ASSERT_EQ(r.replan->state.size(), 2u);
+  EXPECT_EQ(r.replan->state[0].timeline, "sc.camera");
+  EXPECT_EQ(r.replan->state[0].predicate, "ready");
+  EXPECT_EQ(r.replan->state[0].since, 15);
+  EXPECT_EQ(r.replan->state[1].predicate, "off");
+  // The picture was taken (its token ended); the thrusting arc remains to be planned.
+  ASSERT_EQ(r.replan->remaining_goals.size(), 1u);
+  EXPECT_EQ(r.replan->remaining_goals[0].predicate, "thrusting");
+  // Safing sent on the abort tick, and nothing more dispatched after it.
+  EXPECT_EQ(sent(sc),
+            (std::vector<std::string>{"camera take_image@10", "camera off@16", "ips standby@16"}));
+  EXPECT_TRUE(exec->aborted());
+}
+
+TEST(Executive, AFailedUnitIsResetWithoutReplanning) {
+  auto exec = ds1_executive();
+  ToySpacecraft sc;
+  Outcome r = run(exec.get(), &sc, 100, [](Time t, ToySpacecraft* s) {
+    if (t == 20) s->modes["lpe"] = "failed";  // cured by the reset the executive sends
+  });
+  EXPECT_EQ(r.count("fault reset"), 1u);
+  EXPECT_EQ(sc.modes["lpe"], "ok");
+  EXPECT_EQ(sent(sc), (std::vector<std::string>{"camera take_image@10", "lpe reset@20",
+                                                "ips thrust@30", "ips standby@40"}));
+  EXPECT_FALSE(r.replan);
+  EXPECT_TRUE(exec->finished());
+}
+
+TEST(Executive, AFalseSensorIsRecognisedByRedundantEvidenceAndIgnored) {
+  auto exec = ds1_executive();
+  ToySpacecraft sc;
+  Outcome r = run(exec.get(), &sc, 100, [](Time t, ToySpacecraft* s) {
+    s->readings["bus_current_a"] = 1.0;
+    s->readings["bus_current_b"] = 1.1;
+    s->readings["bus_switch_status"] = t < 5 ? 1.0 : 0.0;  // false from 5 on
+  });
+  const ExecutiveEvent* e = r.first("fault ignore_sensor");
+  ASSERT_TRUE(e);
+  EXPECT_EQ(e->time, 7);  // third disagreeing sample
+  EXPECT_EQ(r.count("fault ignore_sensor"), 1u);
+  EXPECT_TRUE(exec->ignored("bus_switch_status"));
+  EXPECT_FALSE(r.replan);
+  EXPECT_TRUE(exec->finished());
+}
+
+TEST(Executive, SensorsThatAgreeAmongThemselvesAreNotJudgedFalse) {
+  FalseSensorResponse part({{"s", {"a", "b"}, 0.5, 2}});
+  PlanState plan;
+  // The evidence disagrees within itself: it cannot judge s.
+  for (int i = 0; i < 5; ++i)
+    EXPECT_TRUE(part.assess({i, {}, {{"s", 0}, {"a", 1}, {"b", 3}}, {}}, plan).empty());
+  // Agreement in between resets the count.
+  EXPECT_TRUE(part.assess({5, {}, {{"s", 0}, {"a", 1}, {"b", 1}}, {}}, plan).empty());
+  EXPECT_TRUE(part.assess({6, {}, {{"s", 1}, {"a", 1}, {"b", 1}}, {}}, plan).empty());
+  EXPECT_TRUE(part.assess({7, {}, {{"s", 0}, {"a", 1}, {"b", 1}}, {}}, plan).empty());
+  EXPECT_EQ(part.assess({8, {}, {{"s", 0}, {"a", 1}, {"b", 1}}, {}}, plan).size(), 1u);
+  EXPECT_TRUE(part.ignored("s"));
+}
+
+TEST(Executive, AThrusterStuckClosedSwitchesTheControlModeOnce) {
+  auto exec = ds1_executive();
+  ToySpacecraft sc;
+  Outcome r = run(exec.get(), &sc, 100, [](Time t, ToySpacecraft* s) {
+    if (t == 12) s->modes["thruster_x"] = "stuck_closed";
+  });
+  EXPECT_EQ(r.count("fault switch_control_mode"), 1u);
+  ASSERT_EQ(sc.received.size(), 4u);
+  EXPECT_EQ(sent(sc)[1], "adcs set_mode@12");
+  EXPECT_EQ(sc.received[1].arguments, std::vector<std::string>{"wheels_and_other_thrusters"});
+  EXPECT_FALSE(r.replan);
+  EXPECT_TRUE(exec->finished());
+}
+
+TEST(Executive, AnUnconfirmedCommandStopsCommandingThatDeviceAndTheRestGoesOn) {
+  auto exec = ds1_executive();
+  ToySpacecraft sc;
+  sc.never_confirm.insert("ips");
+  Outcome r = run(exec.get(), &sc, 100, [](Time, ToySpacecraft*) {});
+  const ExecutiveEvent* e = r.first("fault stop_commanding");
+  ASSERT_TRUE(e);
+  EXPECT_EQ(e->time, 36);  // thrust sent at 30, 5 to confirm
+  EXPECT_TRUE(exec->disabled("ips"));
+  // The planned standby is not sent to the engine; the camera's part of the plan was done.
+  EXPECT_EQ(sent(sc), (std::vector<std::string>{"camera take_image@10", "ips thrust@30"}));
+  EXPECT_TRUE(r.has("skipped"));
+  EXPECT_FALSE(r.replan);
+  EXPECT_TRUE(exec->finished());
+}
+
+TEST(Executive, ATurnTheWorldEndsIsObservedAndItsLatenessBreaksThePlan) {
+  FlexiblePlan plan;
+  plan.horizon = 100;
+  add_token(&plan, "sc.attitude", "attitude", "pointAt", {"star"}, 0, 0, 0, kUnbounded, "initial");
+  add_token(&plan, "sc.attitude", "attitude", "turning", {"star", "asteroid"}, 0, 100, 20, 40,
+            "before of token 2");
+  add_token(&plan, "sc.attitude", "attitude", "pointAt", {"asteroid"}, 0, 100, 0, kUnbounded,
+            "goal point");
+  CommandMap map;
+  std::string error;
+  ASSERT_TRUE(map.add({"sc.attitude", "turning", "adcs", "turn", "turning", {"?1"}, 3, "pointing"},
+                      &error));
+  auto exec = Executive::create(plan, map, ds1_fault_table({}, {}), {}, 0, &error);
+  ASSERT_TRUE(exec) << error;
+  ToySpacecraft sc;
+  // The turn never completes: at 41 its bound (start 0 + 40) has passed.
+  Outcome r = run(exec.get(), &sc, 60, [](Time, ToySpacecraft*) {});
+  EXPECT_EQ(sent(sc), (std::vector<std::string>{"adcs turn@0"}));
+  EXPECT_EQ(sc.received[0].arguments, std::vector<std::string>{"asteroid"});
+  const ExecutiveEvent* v = r.first("violation");
+  ASSERT_TRUE(v);
+  EXPECT_EQ(v->time, 41);
+  ASSERT_TRUE(r.replan);
+  EXPECT_EQ(r.replan->state[0].predicate, "turning");
+  EXPECT_EQ(r.replan->remaining_goals.size(), 1u);
+
+  // Ended by the world at 25: the pointing starts then, and the plan finishes.
+  exec = Executive::create(plan, map, ds1_fault_table({}, {}), {}, 0, &error);
+  ToySpacecraft sc2;
+  r = run(exec.get(), &sc2, 100, [](Time t, ToySpacecraft* s) {
+    if (t == 25) s->modes["adcs"] = "pointing";
+  });
+  EXPECT_FALSE(r.replan);
+  EXPECT_TRUE(exec->finished());
+  EXPECT_EQ(exec->dispatcher().executed_at(2, true), 25);
+}
+
+TEST(Executive, DispatchesThePlannersCameraPlan) {
+  planner::Diagnostics errors;
+  const std::string dir = PLANNER_EXAMPLES_DIR;
+  auto model_text = planner::read_text_file(dir + "/camera.model", &errors);
+  auto problem_text = planner::read_text_file(dir + "/camera.problem", &errors);
+  ASSERT_TRUE(model_text && problem_text) << planner::to_string(errors);
+  auto m = planner::parse_model(*model_text, "camera.model", &errors);
+  auto model = planner::build_domain_model(*m, &errors);
+  auto p = planner::parse_problem(*problem_text, "camera.problem", &errors);
+  auto problem = planner::build_problem(*model, *p, &errors);
+  ASSERT_TRUE(problem) << planner::to_string(errors);
+  planner::PlanningOptions options;
+  options.termination.max_decisions = 10000;
+  planner::PlanResult result = planner::make_plan(*model, *problem, options);
+  ASSERT_TRUE(result.plan) << result.explanation;
+
+  CommandMap map;
+  std::string error;
+  for (CommandRule r : std::vector<CommandRule>{
+           {"dsone.attitude", "turning", "adcs", "turn", "turning", {"?1"}, 3, "pointing"},
+           {"dsone.camera", "picture", "camera", "take_image", "imaging", {"?0"}, 3},
+           {"dsone.camera", "ready", "camera", "", "ready"}})
+    ASSERT_TRUE(map.add(r, &error)) << error;
+  auto exec = Executive::create(*result.plan, map, ds1_fault_table({}, {}), {}, 0, &error);
+  ASSERT_TRUE(exec) << error;
+  ToySpacecraft sc;
+  Time turn_done = -1;
+  Outcome r = run(exec.get(), &sc, 200, [&](Time t, ToySpacecraft* s) {
+    if (s->modes["adcs"] == "turning" && turn_done < 0) turn_done = t + 25;  // the turn takes 25
+    if (t == turn_done) s->modes["adcs"] = "pointing";
+  });
+  EXPECT_FALSE(r.replan) << (r.replan ? r.replan->reason : "");
+  EXPECT_TRUE(exec->finished());
+  ASSERT_EQ(sc.received.size(), 2u);
+  EXPECT_EQ(sc.received[0].command, "turn");
+  EXPECT_EQ(sc.received[0].arguments, std::vector<std::string>{"asteroid"});
+  EXPECT_EQ(sc.received[1].command, "take_image");
+  EXPECT_EQ(sc.received[1].arguments, std::vector<std::string>{"asteroid"});
+  EXPECT_GE(sc.received[1].sent, turn_done);  // the picture waits for the observed turn end
+}
+
+}  // namespace
+}  // namespace autonomy::executive
+
+namespace autonomy::executive {
+namespace {
+
+void four_faults(Time t, ToySpacecraft* s) {
+  s->readings["bus_current_a"] = 1.0;
+  s->readings["bus_current_b"] = 1.0;
+  s->readings["bus_switch_status"] = t < 5 ? 1.0 : 0.0;
+  if (t == 12) s->modes["thruster_x"] = "stuck_closed";
+  if (t == 20) s->modes["lpe"] = "failed";
+}
+
+TEST(Executive, FourFaultsTogetherEachGetItsResponseAndThePlanFinishes) {
+  auto exec = ds1_executive();
+  ToySpacecraft sc;
+  sc.never_confirm.insert("ips");
+  Outcome r = run(exec.get(), &sc, 100, four_faults);
+  EXPECT_EQ(r.responses(),
+            (std::vector<std::string>{"fault ignore_sensor@7", "fault switch_control_mode@12",
+                                      "fault reset@20", "fault stop_commanding@36"}));
+  EXPECT_EQ(sent(sc), (std::vector<std::string>{"camera take_image@10", "adcs set_mode@12",
+                                                "lpe reset@20", "ips thrust@30"}));
+  EXPECT_FALSE(r.replan);
+  EXPECT_TRUE(exec->finished());
+}
+
+TEST(Executive, WithAllFiveTheStuckCameraAbortsAfterTheEarlierResponses) {
+  auto exec = ds1_executive();
+  ToySpacecraft sc;
+  sc.never_confirm.insert("ips");
+  sc.stuck.insert("camera");
+  Outcome r = run(exec.get(), &sc, 100, four_faults);
+  EXPECT_EQ(r.responses(),
+            (std::vector<std::string>{"fault ignore_sensor@7", "fault switch_control_mode@12",
+                                      "fault abort_and_replan@16"}));
+  ASSERT_TRUE(r.replan);
+  EXPECT_EQ(r.replan->known_faults, (std::map<std::string, std::string>{
+                                        {"camera", "imaging"}, {"thruster_x", "stuck_closed"}}));
+  EXPECT_TRUE(exec->aborted());
+  EXPECT_FALSE(exec->finished());
+}
+
+}  // namespace
+}  // namespace autonomy::executive
