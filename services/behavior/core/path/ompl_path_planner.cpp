@@ -12,7 +12,6 @@
 #include <ompl/geometric/SimpleSetup.h>
 #include <ompl/geometric/planners/informedtrees/BITstar.h>
 #include <ompl/geometric/planners/kpiece/KPIECE1.h>
-#include <ompl/geometric/planners/prm/LazyPRMstar.h>
 #include <ompl/geometric/planners/prm/PRMstar.h>
 #include <ompl/geometric/planners/rrt/InformedRRTstar.h>
 #include <ompl/geometric/planners/rrt/RRT.h>
@@ -46,7 +45,6 @@ ob::PlannerPtr make_planner(const std::string& name, const ob::SpaceInformationP
   if (name == "RRTstar") return std::make_shared<og::RRTstar>(si);
   if (name == "InformedRRTstar") return std::make_shared<og::InformedRRTstar>(si);
   if (name == "PRMstar") return std::make_shared<og::PRMstar>(si);
-  if (name == "LazyPRMstar") return std::make_shared<og::LazyPRMstar>(si);
   if (name == "BITstar") return std::make_shared<og::BITstar>(si);
   if (name == "KPIECE1") return std::make_shared<og::KPIECE1>(si);
   return nullptr;
@@ -135,9 +133,11 @@ std::optional<CurveModel> parse_curve_model(const std::string& text) {
   return std::nullopt;
 }
 
+// LazyPRMstar is not offered: in OMPL 1.5.2 (Debian 12) its solve() leaks the states it clones
+// (LeakSanitizer, in libompl's own frames), so every query would leak.
 const std::vector<std::string>& ompl_planner_names() {
   static const std::vector<std::string> names{"RRTConnect",      "RRT",     "RRTstar",
-                                              "InformedRRTstar", "PRMstar", "LazyPRMstar",
+                                              "InformedRRTstar", "PRMstar",
                                               "BITstar",         "KPIECE1"};
   return names;
 }
