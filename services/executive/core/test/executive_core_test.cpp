@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <random>
 #include <set>
 
 #include "executive.hpp"
@@ -143,6 +144,124 @@ TEST(DispatchableNetwork, RejectsInconsistentAndUnknownTimepoints) {
   plan.constraints.push_back({"9.start", "1.end", 0, 5});
   EXPECT_FALSE(make_dispatchable(plan, &error));
   EXPECT_NE(error.find("'9.start'"), std::string::npos) << error;
+}
+
+// The textbook construction, for comparison: Floyd-Warshall closure and the triangle rule
+// tried for every middle timepoint (n^3). Returns the closure and the kept edges.
+struct ReferenceNetwork {
+  bool consistent = true;
+  std::vector<Time> d;
+  std::vector<std::pair<std::size_t, std::size_t>> kept;
+};
+
+ReferenceNetwork reference_dispatchable(const FlexiblePlan& plan) {
+  const std::size_t n = 1 + 2 * plan.tokens.size();
+  constexpr Time kNone = kUnbounded;
+  auto tp = [&](const std::string& name) -> std::size_t {
+    if (name == "origin") return 0;
+    std::size_t dot = name.find('.');
+    std::size_t id = std::stoul(name.substr(0, dot));
+    return 1 + 2 * id + (name.substr(dot + 1) == "start" ? 0 : 1);
+  };
+  ReferenceNetwork r;
+  r.d.assign(n * n, kNone);
+  auto at = [&](std::size_t a, std::size_t b) -> Time& { return r.d[a * n + b]; };
+  for (std::size_t a = 0; a < n; ++a) at(a, a) = 0;
+  auto add = [&](std::size_t from, std::size_t to, Time lb, Time ub) {
+    if (ub < kUnbounded) at(from, to) = std::min(at(from, to), ub);
+    if (lb > -kUnbounded) at(to, from) = std::min(at(to, from), -lb);
+  };
+  for (std::size_t i = 0; i < plan.tokens.size(); ++i) {
+    const PlanToken& t = plan.tokens[i];
+    add(0, 1 + 2 * i, t.start_lb, t.start_ub);
+    add(0, 2 + 2 * i, t.end_lb, t.end_ub);
+    add(1 + 2 * i, 2 + 2 * i, std::max<Time>(0, t.duration_lb), t.duration_ub);
+  }
+  for (const auto& c : plan.constraints) add(tp(c.from), tp(c.to), c.lb, c.ub);
+  for (std::size_t k = 0; k < n; ++k)
+    for (std::size_t a = 0; a < n; ++a)
+      for (std::size_t b = 0; b < n; ++b)
+        if (at(a, k) != kNone && at(k, b) != kNone && at(a, k) + at(k, b) < at(a, b))
+          at(a, b) = at(a, k) + at(k, b);
+  for (std::size_t a = 0; a < n; ++a) r.consistent &= at(a, a) >= 0;
+  if (!r.consistent) return r;
+  auto rigid = [&](std::size_t x, std::size_t y) {
+    return at(x, y) != kNone && at(y, x) != kNone && at(x, y) + at(y, x) == 0;
+  };
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t c = 0; c < n; ++c) {
+      if (a == c || at(a, c) == kNone) continue;
+      bool dominated = false;
+      for (std::size_t b = 0; b < n && !dominated; ++b) {
+        if (b == a || b == c || at(a, b) == kNone || at(b, c) == kNone) continue;
+        if (at(a, b) + at(b, c) != at(a, c) || rigid(a, b) || rigid(b, c)) continue;
+        dominated = at(a, c) >= 0 ? at(b, c) >= 0 : at(a, b) < 0;
+      }
+      if (!dominated) r.kept.push_back({a, c});
+    }
+  return r;
+}
+
+// Random plans of a few timelines whose tokens meet (rigid links), some with fixed durations,
+// linked across timelines by random bounded and unbounded constraints.
+FlexiblePlan random_plan(std::mt19937* rng, int tokens) {
+  FlexiblePlan plan;
+  plan.horizon = 1000;
+  std::uniform_int_distribution<int> pick(0, 9);
+  for (int i = 0; i < tokens; ++i) {
+    Time d_lb = pick(*rng), d_ub = pick(*rng) < 3 ? d_lb : d_lb + 1 + pick(*rng);
+    if (pick(*rng) == 0) d_ub = kUnbounded;
+    add_token(&plan, "sc.line" + std::to_string(i % 3), "line" + std::to_string(i % 3), "p", {},
+              pick(*rng), pick(*rng) < 2 ? kUnbounded : 40 + 10 * pick(*rng), d_lb, d_ub, "");
+  }
+  int links = pick(*rng) % 4 + tokens / 3;
+  std::uniform_int_distribution<int> token(0, tokens - 1);
+  for (int k = 0; k < links; ++k) {
+    int a = token(*rng), b = token(*rng);
+    const char* ends[] = {".start", ".end"};
+    Time lb = -3 * pick(*rng), ub = pick(*rng) < 5 ? kUnbounded : lb + 5 * pick(*rng);
+    if (pick(*rng) == 0) ub = lb;  // rigid across timelines too
+    plan.constraints.push_back({std::to_string(a) + ends[pick(*rng) % 2],
+                                std::to_string(b) + ends[pick(*rng) % 2], lb, ub});
+  }
+  return plan;
+}
+
+// The sparse construction (Johnson closure, dominance by flag propagation) keeps exactly the
+// edges the n^3 triangle rule keeps, with the same weights and windows, and rejects exactly
+// the inconsistent plans.
+TEST(DispatchableNetwork, SameEdgesAndWindowsAsTheCubicConstructionOnRandomPlans) {
+  std::mt19937 rng(12);
+  int consistent = 0, inconsistent = 0;
+  for (int round = 0; round < 300; ++round) {
+    FlexiblePlan plan = random_plan(&rng, 2 + round % 14);
+    ReferenceNetwork ref = reference_dispatchable(plan);
+    std::string error;
+    auto net = make_dispatchable(plan, &error);
+    ASSERT_EQ(net.has_value(), ref.consistent) << "round " << round << ": " << error;
+    if (!net) {
+      EXPECT_NE(error.find("negative cycle through"), std::string::npos) << error;
+      ++inconsistent;
+      continue;
+    }
+    ++consistent;
+    const std::size_t n = net->names.size();
+    std::vector<std::pair<std::size_t, std::size_t>> kept;
+    for (const DistanceEdge& e : net->edges) {
+      kept.push_back({e.from, e.to});
+      EXPECT_EQ(e.weight, ref.d[e.from * n + e.to]) << "round " << round;
+    }
+    ASSERT_EQ(kept, ref.kept) << "round " << round;
+    for (std::size_t p = 0; p < n; ++p) {
+      Time lo = ref.d[p * n] == kUnbounded ? -kUnbounded : -ref.d[p * n];
+      Time hi = ref.d[p];
+      EXPECT_EQ(net->earliest[p], lo) << "round " << round << " " << net->names[p];
+      EXPECT_EQ(net->latest[p], hi) << "round " << round << " " << net->names[p];
+    }
+  }
+  // Both kinds of plan were met, so neither comparison is vacuous.
+  EXPECT_GT(consistent, 100);
+  EXPECT_GT(inconsistent, 10);
 }
 
 TEST(Dispatcher, ExecutesTimepointsInOrderAtTheirEarliestTimes) {
