@@ -55,6 +55,7 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 // its end (the order is a heuristic, exactness does not depend on it).
 constexpr double kBucketsPerRes = 1.0;  // measured: 0.25 .. 4 alike
 constexpr std::size_t kRing = 64;
+constexpr std::size_t kPrefetchAhead = 4;  // tiles of the bucket ahead of the one running
 
 inline v8f splat(float x) {
   return v8f{x, x, x, x, x, x, x, x};
@@ -93,18 +94,17 @@ struct Tile {
 
 class TileSearch {
  public:
-  TileSearch(int width, int height, float orthogonal, float diagonal, double res,
-             const std::uint8_t* mask, float* dist)
-      : w_(width),
-        h_(height),
-        tiles_x_((width + kLanes - 1) / kLanes),
-        tiles_y_((height + kRows - 1) / kRows),
-        mask_(mask),
+  TileSearch(const OccupancyRaster& raster, float orthogonal, float diagonal, float* dist)
+      : w_(raster.width()),
+        h_(raster.height()),
+        tiles_x_((w_ + kLanes - 1) / kLanes),
+        tiles_y_((h_ + kRows - 1) / kRows),
         dist_(dist),
-        per_bucket_(kBucketsPerRes / res),
+        per_bucket_(kBucketsPerRes / raster.resolution_m()),
         pending_(static_cast<std::size_t>(tiles_x_) * static_cast<std::size_t>(tiles_y_), kInf),
         ring_(kRing) {
     for (int m = 0; m < 8; ++m) base_[m] = splat(m < 4 ? orthogonal : diagonal);
+    build_free_bits(raster);
   }
 
   TileSearchStats run(std::size_t goal) {
@@ -115,6 +115,7 @@ class TileSearch {
     while (queued_ != 0) {
       std::vector<std::uint32_t>& bucket = ring_[k % kRing];
       for (std::size_t i = 0; i < bucket.size(); ++i) {  // may grow while read
+        if (i + kPrefetchAhead < bucket.size()) prefetch_tile(bucket[i + kPrefetchAhead]);
         const std::uint32_t t = bucket[i];
         --queued_;
         if (pending_[t] == kInf) continue;  // ran already from an earlier entry
@@ -128,7 +129,8 @@ class TileSearch {
     stats_.reachable += 1;  // the goal, finite before its tile first ran
     stats_.tiles = pending_.size();
     stats_.buckets = kRing;
-    stats_.work_bytes = pending_.capacity() * sizeof(float) + ring_.capacity() * sizeof(ring_[0]);
+    stats_.work_bytes = pending_.capacity() * sizeof(float) + ring_.capacity() * sizeof(ring_[0]) +
+                        free_.capacity() * sizeof(std::uint64_t);
     for (const auto& b : ring_) stats_.work_bytes += b.capacity() * sizeof(std::uint32_t);
     return stats_;
   }
@@ -164,20 +166,72 @@ class TileSearch {
     east = x0 + kLanes < w_ ? p[x0 + kLanes] : kInf;
   }
 
-  void load_steps(int y, int x0, v8f (&step)[8]) const {
-    v8u8 bytes{};
-    if (y >= 0 && y < h_) {
-      const std::uint8_t* p = mask_ + static_cast<std::size_t>(y) * static_cast<std::size_t>(w_);
-      if (x0 + kLanes <= w_) {
-        std::memcpy(&bytes, p + x0, sizeof bytes);
-      } else {
-        for (int i = 0; x0 + i < w_; ++i) bytes[i] = p[x0 + i];
+  // free_ holds the raster's free cells shifted by one column, with a blocked border: rows
+  // -1 .. tiles_y_ * kRows (row y at index y + 1), bit c + 1 of a row = cell c free, bits past the
+  // width clear. A tile row's cells and their two neighbours (columns x0 - 1 .. x0 + 8) are then
+  // the low ten bits of the 16 bits at byte x0 / 8, with no bounds tests.
+  void build_free_bits(const OccupancyRaster& raster) {
+    const std::size_t words = raster.words_per_row();
+    free_stride_ = words + 1;
+    free_.assign(free_stride_ * (static_cast<std::size_t>(tiles_y_) * kRows + 2), 0);
+    const unsigned tail = static_cast<unsigned>(w_) % 64;
+    for (int y = 0; y < h_; ++y) {
+      const std::uint64_t* in = raster.row_words(y);
+      std::uint64_t* out = free_.data() + (static_cast<std::size_t>(y) + 1) * free_stride_;
+      for (std::size_t k = 0; k < words; ++k) {
+        std::uint64_t f = ~in[k];
+        if (k + 1 == words && tail != 0) f &= (std::uint64_t{1} << tail) - 1;
+        out[k] |= f << 1;
+        out[k + 1] |= f >> 63;
       }
     }
-    const v8i m = __builtin_convertvector(bytes, v8i);
+  }
+
+  unsigned free_window(int y, int tx) const {
+    const auto* row = reinterpret_cast<const unsigned char*>(
+        free_.data() + static_cast<std::size_t>(y + 1) * free_stride_);
+    std::uint16_t v;
+    std::memcpy(&v, row + tx, sizeof v);
+    return v;
+  }
+
+  // The step cost of every move from the cells of tile row y (columns tx * 8 ..), +inf where the
+  // move is not allowed: the target must be free and a diagonal needs both cells beside it free.
+  void load_steps(int y, int tx, v8f (&step)[8]) const {
+    const unsigned dn = free_window(y - 1, tx), cur = free_window(y, tx),
+                   up = free_window(y + 1, tx);
+    // Bit i of each: lane i's neighbour in that direction (or the cell itself) is free.
+    const unsigned c = (cur >> 1) & 0xffu, cw = cur & 0xffu, ce = (cur >> 2) & 0xffu;
+    const unsigned u = (up >> 1) & 0xffu, uw = up & 0xffu, ue = (up >> 2) & 0xffu;
+    const unsigned d = (dn >> 1) & 0xffu, dw = dn & 0xffu, de = (dn >> 2) & 0xffu;
+    const unsigned e = c & ce, n = c & u, wst = c & cw, s = c & d;
+    const unsigned allowed[8] = {e, n, wst, s, e & n & ue, wst & n & uw, wst & s & dw, e & s & de};
     const v8f inf = splat(kInf);
-    // Bit d moved to the sign: a blend on the sign bit, no compare.
-    for (int d = 0; d < 8; ++d) step[d] = (m << (31 - d)) < 0 ? base_[d] : inf;
+    // Lane i's bit moved to the sign: a blend on the sign bit, no compare.
+    const v8i to_sign{31, 30, 29, 28, 27, 26, 25, 24};
+    for (int m = 0; m < 8; ++m) {
+      const auto a = static_cast<std::int32_t>(allowed[m]);
+      const v8i bits = v8i{a, a, a, a, a, a, a, a} << to_sign;
+      step[m] = bits < 0 ? base_[m] : inf;
+    }
+  }
+
+  // The rows a tile run will read, fetched while earlier tiles of the bucket run: on big maps the
+  // rows of a tile are a row-length apart and the wave visits tiles all along its front, so
+  // nearly every row would otherwise miss the cache.
+  void prefetch_tile(std::uint32_t t) const {
+    const int tx = static_cast<int>(t % static_cast<std::uint32_t>(tiles_x_));
+    const int ty = static_cast<int>(t / static_cast<std::uint32_t>(tiles_x_));
+    const int x0 = tx * kLanes;
+    const int first = std::max(0, ty * kRows - 1);
+    const int last = std::min(h_ - 1, ty * kRows + kRows);
+    const std::size_t left = static_cast<std::size_t>(x0 > 0 ? x0 - 1 : 0);
+    const std::size_t right = static_cast<std::size_t>(std::min(x0 + kLanes, w_ - 1));
+    for (int y = first; y <= last; ++y) {
+      const float* p = dist_ + static_cast<std::size_t>(y) * static_cast<std::size_t>(w_);
+      __builtin_prefetch(p + left, 1);
+      __builtin_prefetch(p + right, 1);
+    }
   }
 
   void store_row(int y, int x0, const v8f& row) const {
@@ -238,7 +292,7 @@ class TileSearch {
     Tile& t = tile_;
     for (int r = 0; r < kRows + 2; ++r) load_row(y0 + r - 1, x0, t.row[r], t.west[r], t.east[r]);
     for (int r = 0; r < kRows; ++r) {
-      load_steps(y0 + r, x0, t.step[r]);
+      load_steps(y0 + r, tx, t.step[r]);
       t.before[r] = t.row[r + 1];
     }
     // Start from the side the better labels come from; stop when a sweep changes nothing after
@@ -305,8 +359,9 @@ class TileSearch {
   }
 
   int w_, h_, tiles_x_, tiles_y_;
-  const std::uint8_t* mask_;
   float* dist_;
+  std::vector<std::uint64_t> free_;
+  std::size_t free_stride_ = 0;  // words per row of free_
   double per_bucket_;
   v8f base_[8];
   std::vector<float> pending_;  // per tile: the key it is queued with, +inf when not queued
@@ -319,10 +374,9 @@ class TileSearch {
 
 }  // namespace
 
-TileSearchStats tile_search(std::size_t goal, int width, int height, float orthogonal,
-                            float diagonal, double resolution, const std::uint8_t* mask,
-                            float* dist) {
-  TileSearch search(width, height, orthogonal, diagonal, resolution, mask, dist);
+TileSearchStats tile_search(std::size_t goal, const OccupancyRaster& raster, float orthogonal,
+                            float diagonal, float* dist) {
+  TileSearch search(raster, orthogonal, diagonal, dist);
   return search.run(goal);
 }
 
@@ -339,8 +393,7 @@ bool tile_search_available() {
   return false;
 }
 
-TileSearchStats tile_search(std::size_t, int, int, float, float, double, const std::uint8_t*,
-                            float*) {
+TileSearchStats tile_search(std::size_t, const OccupancyRaster&, float, float, float*) {
   return {};
 }
 
