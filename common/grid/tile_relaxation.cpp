@@ -74,6 +74,11 @@ inline v8f west_of(v8f a, float west) {
 inline v8f east_of(v8f a, float east) {
   return __builtin_shuffle(a, splat(east), v8i{1, 2, 3, 4, 5, 6, 7, 8});
 }
+// GCC 12 dropped __builtin_prefetch / _mm_prefetch in the scheduler loop (the loop has no other
+// effect); a volatile asm stays.
+inline void prefetch(const float* p) {
+  asm volatile("prefetcht0 %0" : : "m"(*p));
+}
 inline float hmin(v8f a) {
   float m = a[0];
   for (int i = 1; i < kLanes; ++i) m = std::min(m, a[i]);
@@ -229,8 +234,8 @@ class TileSearch {
     const std::size_t right = static_cast<std::size_t>(std::min(x0 + kLanes, w_ - 1));
     for (int y = first; y <= last; ++y) {
       const float* p = dist_ + static_cast<std::size_t>(y) * static_cast<std::size_t>(w_);
-      __builtin_prefetch(p + left, 1);
-      __builtin_prefetch(p + right, 1);
+      prefetch(p + left);
+      prefetch(p + right);
     }
   }
 
