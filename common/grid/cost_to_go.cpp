@@ -460,8 +460,7 @@ FieldResult compute_cost_to_go(const OccupancyRaster& raster, Cell goal,
     const StepCosts steps = step_costs(raster.resolution_m());
     const std::size_t g = raster.index(goal);
     dist[g] = 0.0f;
-    const auto t =
-        detail::tile_search(g, raster, steps.orthogonal, steps.diagonal, dist.data());
+    const auto t = detail::tile_search(g, raster, steps.orthogonal, steps.diagonal, dist.data());
     result.stats.expanded = t.reachable;
     result.stats.pushes = t.tile_runs;
     result.stats.tiles = t.tiles;
