@@ -95,6 +95,10 @@ struct Tile {
   float east[kRows + 2];
   v8f step[kRows][8];  // per tile row and move: the step cost per lane, +inf where not allowed
   v8f before[kRows];   // the labels as loaded
+  // Per tile row: bit 8 m + i set when move m (E, N, W, S) is allowed from lane i; diag the same
+  // for NE, NW, SW, SE. Vectors over the rows.
+  v8i orth;
+  v8i diag;
 };
 
 class TileSearch {
@@ -155,6 +159,13 @@ class TileSearch {
 
   // Row y of the raster into a vector at columns x0 .. x0 + 7, +inf outside; plus the ring cells.
   void load_row(int y, int x0, v8f& row, float& west, float& east) const {
+    if (x0 > 0 && x0 + kLanes < w_ && y >= 0 && y < h_) {  // the usual case: no edge near
+      const float* p = dist_ + static_cast<std::size_t>(y) * static_cast<std::size_t>(w_) + x0;
+      std::memcpy(&row, p, sizeof row);
+      west = p[-1];
+      east = p[kLanes];
+      return;
+    }
     if (y < 0 || y >= h_) {
       row = splat(kInf);
       west = east = kInf;
@@ -200,24 +211,39 @@ class TileSearch {
     return v;
   }
 
-  // The step cost of every move from the cells of tile row y (columns tx * 8 ..), +inf where the
-  // move is not allowed: the target must be free and a diagonal needs both cells beside it free.
-  void load_steps(int y, int tx, v8f (&step)[8]) const {
-    const unsigned dn = free_window(y - 1, tx), cur = free_window(y, tx),
-                   up = free_window(y + 1, tx);
-    // Bit i of each: lane i's neighbour in that direction (or the cell itself) is free.
-    const unsigned c = (cur >> 1) & 0xffu, cw = cur & 0xffu, ce = (cur >> 2) & 0xffu;
-    const unsigned u = (up >> 1) & 0xffu, uw = up & 0xffu, ue = (up >> 2) & 0xffu;
-    const unsigned d = (dn >> 1) & 0xffu, dw = dn & 0xffu, de = (dn >> 2) & 0xffu;
-    const unsigned e = c & ce, n = c & u, wst = c & cw, s = c & d;
-    const unsigned allowed[8] = {e, n, wst, s, e & n & ue, wst & n & uw, wst & s & dw, e & s & de};
+  // The step cost of every move from the cells of the tile's rows, +inf where the move is not
+  // allowed: the target must be free and a diagonal needs both cells beside it free. Also the
+  // allowed-move bits per row (orth, diag), for offer_beside.
+  void load_steps(int y0, int tx, Tile& t) const {
+    unsigned win[kRows + 2];
+    for (int r = 0; r < kRows + 2; ++r) win[r] = free_window(y0 + r - 1, tx);
     const v8f inf = splat(kInf);
-    // Lane i's bit moved to the sign: a blend on the sign bit, no compare.
-    const v8i to_sign{31, 30, 29, 28, 27, 26, 25, 24};
-    for (int m = 0; m < 8; ++m) {
-      const auto a = static_cast<std::int32_t>(allowed[m]);
-      const v8i bits = v8i{a, a, a, a, a, a, a, a} << to_sign;
-      step[m] = bits < 0 ? base_[m] : inf;
+    // Lane i's bit of byte m % 4 moved to the sign: a blend on the sign bit, no compare.
+    const v8i to_sign[4] = {v8i{31, 30, 29, 28, 27, 26, 25, 24}, v8i{23, 22, 21, 20, 19, 18, 17, 16},
+                            v8i{15, 14, 13, 12, 11, 10, 9, 8}, v8i{7, 6, 5, 4, 3, 2, 1, 0}};
+    for (int r = 0; r < kRows; ++r) {
+      const unsigned dn = win[r], cur = win[r + 1], up = win[r + 2];
+      // Bit i of each: lane i's neighbour in that direction (or the cell itself) is free.
+      const unsigned c = (cur >> 1) & 0xffu, cw = cur & 0xffu, ce = (cur >> 2) & 0xffu;
+      const unsigned u = (up >> 1) & 0xffu, uw = up & 0xffu, ue = (up >> 2) & 0xffu;
+      const unsigned d = (dn >> 1) & 0xffu, dw = dn & 0xffu, de = (dn >> 2) & 0xffu;
+      const unsigned e = c & ce, n = c & u, wst = c & cw, s = c & d;
+      const unsigned ne = e & n & ue, nw = wst & n & uw, sw = wst & s & dw, se = e & s & de;
+      const unsigned orth = e | n << 8 | wst << 16 | s << 24;
+      const unsigned diag = ne | nw << 8 | sw << 16 | se << 24;
+      v8f(&step)[8] = t.step[r];
+      if ((orth & diag) == 0xffffffffu) {  // open space: every move allowed
+        for (int m = 0; m < 8; ++m) step[m] = base_[m];
+      } else {
+        const auto o = static_cast<std::int32_t>(orth), g = static_cast<std::int32_t>(diag);
+        const v8i vo{o, o, o, o, o, o, o, o}, vg{g, g, g, g, g, g, g, g};
+        for (int m = 0; m < 4; ++m) {
+          step[m] = (vo << to_sign[m]) < 0 ? base_[m] : inf;
+          step[m + 4] = (vg << to_sign[m]) < 0 ? base_[m + 4] : inf;
+        }
+      }
+      t.orth[r] = static_cast<std::int32_t>(orth);
+      t.diag[r] = static_cast<std::int32_t>(diag);
     }
   }
 
@@ -296,10 +322,8 @@ class TileSearch {
     const int y0 = ty * kRows;
     Tile& t = tile_;
     for (int r = 0; r < kRows + 2; ++r) load_row(y0 + r - 1, x0, t.row[r], t.west[r], t.east[r]);
-    for (int r = 0; r < kRows; ++r) {
-      load_steps(y0 + r, tx, t.step[r]);
-      t.before[r] = t.row[r + 1];
-    }
+    load_steps(y0, tx, t);
+    for (int r = 0; r < kRows; ++r) t.before[r] = t.row[r + 1];
     // Start from the side the better labels come from; stop when a sweep changes nothing after
     // at least one sweep of each direction (the last sweeps of both directions then hold: every
     // move into the tile is satisfied).
@@ -346,21 +370,33 @@ class TileSearch {
   }
 
   // Moves from lane `lane` (0 or 7) of tile rows 1 .. kRows into the ring column `ring` beside it
-  // (rows 1 .. kRows; the corner cells are offer_across's).
+  // (rows 1 .. kRows; the corner cells are offer_across's). Vector lane r - 1 stands for tile row
+  // r: the tile's column is gathered, the allowed moves come from edge_moves.
   void offer_beside(const Tile& t, int lane, Move straight, Move up, Move down,
                     const float (&ring)[kRows + 2], int tx_to, int ty) {
-    float best = kInf;
-    for (int r = 1; r <= kRows; ++r) {
-      const float c = t.row[r][lane];
-      const v8f(&st)[8] = t.step[r - 1];
-      const float s = c + st[straight][lane];
-      if (s < ring[r]) best = std::min(best, s);
-      const float u = c + st[up][lane];
-      if (r < kRows && u < ring[r + 1]) best = std::min(best, u);
-      const float d = c + st[down][lane];
-      if (r > 1 && d < ring[r - 1]) best = std::min(best, d);
-    }
-    if (best < kInf) activate(tx_to, ty, best);
+    const v8i rows{0, 1, 2, 3, 4, 5, 6, 7};
+    const v8f col = reinterpret_cast<v8f>(_mm256_i32gather_ps(
+        &t.row[1][lane], reinterpret_cast<__m256i>(rows * kLanes), sizeof(float)));
+    const v8f inf = splat(kInf);
+    // Bit 8 (m % 4) + lane of each row's word to the sign.
+    const auto allowed = [&](Move m) {
+      const v8i& words = m < 4 ? t.orth : t.diag;
+      return (words << (31 - 8 * (m % 4) - lane)) < 0;
+    };
+    v8f ring_here, ring_above, ring_below;  // ring rows r, r + 1 and r - 1 for lane r - 1
+    std::memcpy(&ring_here, &ring[1], sizeof ring_here);
+    std::memcpy(&ring_above, &ring[2], sizeof ring_above);
+    std::memcpy(&ring_below, &ring[0], sizeof ring_below);
+    const v8f step_s = allowed(straight) ? base_[straight] : inf;
+    // The last row's move up and the first row's move down reach the corners: not here.
+    const v8i not_top{-1, -1, -1, -1, -1, -1, -1, 0}, not_bottom{0, -1, -1, -1, -1, -1, -1, -1};
+    const v8f step_u = (allowed(up) & not_top) ? base_[up] : inf;
+    const v8f step_d = (allowed(down) & not_bottom) ? base_[down] : inf;
+    const v8f s = col + step_s, u = col + step_u, d = col + step_d;
+    const v8f best = vmin(s < ring_here ? s : inf, vmin(u < ring_above ? u : inf,
+                                                          d < ring_below ? d : inf));
+    const float m = hmin(best);
+    if (m < kInf) activate(tx_to, ty, m);
   }
 
   int w_, h_, tiles_x_, tiles_y_;
