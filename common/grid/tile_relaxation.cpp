@@ -60,6 +60,9 @@ constexpr std::size_t kPrefetchAhead = 4;  // tiles of the bucket ahead of the o
 inline v8f splat(float x) {
   return v8f{x, x, x, x, x, x, x, x};
 }
+inline v8i splat_i(std::int32_t x) {
+  return v8i{x, x, x, x, x, x, x, x};
+}
 inline v8f vmin(v8f a, v8f b) {
   return a < b ? a : b;
 }
@@ -94,7 +97,8 @@ struct Tile {
   float west[kRows + 2];
   float east[kRows + 2];
   v8f step[kRows][8];  // per tile row and move: the step cost per lane, +inf where not allowed
-  v8f before[kRows];   // the labels as loaded
+  const v8f (*steps[kRows])[8];  // per tile row: its step[] or, in open space, the base steps
+  v8f before[kRows];             // the labels as loaded
   // Per tile row: bit 8 m + i set when move m (E, N, W, S) is allowed from lane i; diag the same
   // for NE, NW, SW, SE. Vectors over the rows.
   v8i orth;
@@ -159,13 +163,6 @@ class TileSearch {
 
   // Row y of the raster into a vector at columns x0 .. x0 + 7, +inf outside; plus the ring cells.
   void load_row(int y, int x0, v8f& row, float& west, float& east) const {
-    if (x0 > 0 && x0 + kLanes < w_ && y >= 0 && y < h_) {  // the usual case: no edge near
-      const float* p = dist_ + static_cast<std::size_t>(y) * static_cast<std::size_t>(w_) + x0;
-      std::memcpy(&row, p, sizeof row);
-      west = p[-1];
-      east = p[kLanes];
-      return;
-    }
     if (y < 0 || y >= h_) {
       row = splat(kInf);
       west = east = kInf;
@@ -215,35 +212,43 @@ class TileSearch {
   // allowed: the target must be free and a diagonal needs both cells beside it free. Also the
   // allowed-move bits per row (orth, diag), for offer_beside.
   void load_steps(int y0, int tx, Tile& t) const {
-    unsigned win[kRows + 2];
-    for (int r = 0; r < kRows + 2; ++r) win[r] = free_window(y0 + r - 1, tx);
+    std::int32_t win[kRows + 2];
+    for (int r = 0; r < kRows + 2; ++r)
+      win[r] = static_cast<std::int32_t>(free_window(y0 + r - 1, tx));
+    // Lane r: tile row r (0-based) and its rows below and above. The move bits of all eight rows
+    // at once.
+    v8i dn, cur, up;
+    std::memcpy(&dn, &win[0], sizeof dn);
+    std::memcpy(&cur, &win[1], sizeof cur);
+    std::memcpy(&up, &win[2], sizeof up);
+    const v8i byte = splat_i(0xff);
+    // Bit i of each: lane i's neighbour in that direction (or the cell itself) is free.
+    const v8i c = (cur >> 1) & byte, cw = cur & byte, ce = (cur >> 2) & byte;
+    const v8i u = (up >> 1) & byte, uw = up & byte, ue = (up >> 2) & byte;
+    const v8i d = (dn >> 1) & byte, dw = dn & byte, de = (dn >> 2) & byte;
+    const v8i e = c & ce, n = c & u, wst = c & cw, s = c & d;
+    const v8i ne = e & n & ue, nw = wst & n & uw, sw = wst & s & dw, se = e & s & de;
+    t.orth = e | n << 8 | wst << 16 | s << 24;
+    t.diag = ne | nw << 8 | sw << 16 | se << 24;
+    const int open = _mm256_movemask_ps(reinterpret_cast<__m256>((t.orth & t.diag) == splat_i(-1)));
     const v8f inf = splat(kInf);
     // Lane i's bit of byte m % 4 moved to the sign: a blend on the sign bit, no compare.
-    const v8i to_sign[4] = {v8i{31, 30, 29, 28, 27, 26, 25, 24}, v8i{23, 22, 21, 20, 19, 18, 17, 16},
-                            v8i{15, 14, 13, 12, 11, 10, 9, 8}, v8i{7, 6, 5, 4, 3, 2, 1, 0}};
+    const v8i to_sign[4] = {v8i{31, 30, 29, 28, 27, 26, 25, 24},
+                            v8i{23, 22, 21, 20, 19, 18, 17, 16}, v8i{15, 14, 13, 12, 11, 10, 9, 8},
+                            v8i{7, 6, 5, 4, 3, 2, 1, 0}};
     for (int r = 0; r < kRows; ++r) {
-      const unsigned dn = win[r], cur = win[r + 1], up = win[r + 2];
-      // Bit i of each: lane i's neighbour in that direction (or the cell itself) is free.
-      const unsigned c = (cur >> 1) & 0xffu, cw = cur & 0xffu, ce = (cur >> 2) & 0xffu;
-      const unsigned u = (up >> 1) & 0xffu, uw = up & 0xffu, ue = (up >> 2) & 0xffu;
-      const unsigned d = (dn >> 1) & 0xffu, dw = dn & 0xffu, de = (dn >> 2) & 0xffu;
-      const unsigned e = c & ce, n = c & u, wst = c & cw, s = c & d;
-      const unsigned ne = e & n & ue, nw = wst & n & uw, sw = wst & s & dw, se = e & s & de;
-      const unsigned orth = e | n << 8 | wst << 16 | s << 24;
-      const unsigned diag = ne | nw << 8 | sw << 16 | se << 24;
-      v8f(&step)[8] = t.step[r];
-      if ((orth & diag) == 0xffffffffu) {  // open space: every move allowed
-        for (int m = 0; m < 8; ++m) step[m] = base_[m];
-      } else {
-        const auto o = static_cast<std::int32_t>(orth), g = static_cast<std::int32_t>(diag);
-        const v8i vo{o, o, o, o, o, o, o, o}, vg{g, g, g, g, g, g, g, g};
-        for (int m = 0; m < 4; ++m) {
-          step[m] = (vo << to_sign[m]) < 0 ? base_[m] : inf;
-          step[m + 4] = (vg << to_sign[m]) < 0 ? base_[m + 4] : inf;
-        }
+      if (open >> r & 1) {  // open space: every move allowed, the shared base steps
+        t.steps[r] = &base_;
+        continue;
       }
-      t.orth[r] = static_cast<std::int32_t>(orth);
-      t.diag[r] = static_cast<std::int32_t>(diag);
+      v8f(&step)[8] = t.step[r];
+      t.steps[r] = &t.step[r];
+      const v8i vo = __builtin_shuffle(t.orth, splat_i(r)),
+                vg = __builtin_shuffle(t.diag, splat_i(r));
+      for (int m = 0; m < 4; ++m) {
+        step[m] = (vo << to_sign[m]) < 0 ? base_[m] : inf;
+        step[m + 4] = (vg << to_sign[m]) < 0 ? base_[m + 4] : inf;
+      }
     }
   }
 
@@ -277,7 +282,7 @@ class TileSearch {
 
   // The moves along row r of the tile (local r in 1 .. kRows), repeated until no lane improves.
   static v8f along_row(const Tile& t, int r, v8f c) {
-    const v8f(&st)[8] = t.step[r - 1];
+    const v8f(&st)[8] = *t.steps[r - 1];
     for (;;) {
       const v8f n = vmin(c, vmin(west_of(c, t.west[r]) + st[kW], east_of(c, t.east[r]) + st[kE]));
       if (!any(n < c)) return c;
@@ -289,7 +294,7 @@ class TileSearch {
   static bool sweep_up(Tile& t) {
     v8i changed{};
     for (int r = 1; r <= kRows; ++r) {
-      const v8f(&st)[8] = t.step[r - 1];
+      const v8f(&st)[8] = *t.steps[r - 1];
       const v8f& b = t.row[r - 1];
       v8f c = vmin(t.row[r], b + st[kS]);
       c = vmin(c, west_of(b, t.west[r - 1]) + st[kSW]);
@@ -304,7 +309,7 @@ class TileSearch {
   static bool sweep_down(Tile& t) {
     v8i changed{};
     for (int r = kRows; r >= 1; --r) {
-      const v8f(&st)[8] = t.step[r - 1];
+      const v8f(&st)[8] = *t.steps[r - 1];
       const v8f& a = t.row[r + 1];
       v8f c = vmin(t.row[r], a + st[kN]);
       c = vmin(c, west_of(a, t.west[r + 1]) + st[kNW]);
@@ -321,7 +326,16 @@ class TileSearch {
     const int x0 = tx * kLanes;
     const int y0 = ty * kRows;
     Tile& t = tile_;
-    for (int r = 0; r < kRows + 2; ++r) load_row(y0 + r - 1, x0, t.row[r], t.west[r], t.east[r]);
+    if (x0 > 0 && x0 + kLanes < w_ && y0 > 0 && y0 + kRows < h_) {  // the usual case: no edge near
+      const float* p = dist_ + static_cast<std::size_t>(y0 - 1) * static_cast<std::size_t>(w_) + x0;
+      for (int r = 0; r < kRows + 2; ++r, p += w_) {
+        std::memcpy(&t.row[r], p, sizeof t.row[r]);
+        t.west[r] = p[-1];
+        t.east[r] = p[kLanes];
+      }
+    } else {
+      for (int r = 0; r < kRows + 2; ++r) load_row(y0 + r - 1, x0, t.row[r], t.west[r], t.east[r]);
+    }
     load_steps(y0, tx, t);
     for (int r = 0; r < kRows; ++r) t.before[r] = t.row[r + 1];
     // Start from the side the better labels come from; stop when a sweep changes nothing after
@@ -358,7 +372,7 @@ class TileSearch {
   void offer_across(const Tile& t, int from, int to, Move straight, Move to_west, Move to_east,
                     int tx, int ty_to) {
     const v8f& c = t.row[from];
-    const v8f(&st)[8] = t.step[from - 1];
+    const v8f(&st)[8] = *t.steps[from - 1];
     const v8f inf = splat(kInf);
     const v8f dw = c + st[to_west];  // lane i offers to lane i - 1
     const v8f de = c + st[to_east];  // lane i offers to lane i + 1
@@ -393,8 +407,8 @@ class TileSearch {
     const v8f step_u = (allowed(up) & not_top) ? base_[up] : inf;
     const v8f step_d = (allowed(down) & not_bottom) ? base_[down] : inf;
     const v8f s = col + step_s, u = col + step_u, d = col + step_d;
-    const v8f best = vmin(s < ring_here ? s : inf, vmin(u < ring_above ? u : inf,
-                                                          d < ring_below ? d : inf));
+    const v8f best =
+        vmin(s < ring_here ? s : inf, vmin(u < ring_above ? u : inf, d < ring_below ? d : inf));
     const float m = hmin(best);
     if (m < kInf) activate(tx_to, ty, m);
   }
