@@ -108,7 +108,9 @@ struct Tile {
 class TileSearch {
  public:
   TileSearch(const OccupancyRaster& raster, float orthogonal, float diagonal, float* dist)
-      : w_(raster.width()),
+      : raster_(raster),
+        row_bytes_(raster.words_per_row() * sizeof(std::uint64_t)),
+        w_(raster.width()),
         h_(raster.height()),
         tiles_x_((w_ + kLanes - 1) / kLanes),
         tiles_y_((h_ + kRows - 1) / kRows),
@@ -117,7 +119,6 @@ class TileSearch {
         pending_(static_cast<std::size_t>(tiles_x_) * static_cast<std::size_t>(tiles_y_), kInf),
         ring_(kRing) {
     for (int m = 0; m < 8; ++m) base_[m] = splat(m < 4 ? orthogonal : diagonal);
-    build_free_bits(raster);
   }
 
   TileSearchStats run(std::size_t goal) {
@@ -142,8 +143,7 @@ class TileSearch {
     stats_.reachable += 1;  // the goal, finite before its tile first ran
     stats_.tiles = pending_.size();
     stats_.buckets = kRing;
-    stats_.work_bytes = pending_.capacity() * sizeof(float) + ring_.capacity() * sizeof(ring_[0]) +
-                        free_.capacity() * sizeof(std::uint64_t);
+    stats_.work_bytes = pending_.capacity() * sizeof(float) + ring_.capacity() * sizeof(ring_[0]);
     for (const auto& b : ring_) stats_.work_bytes += b.capacity() * sizeof(std::uint32_t);
     return stats_;
   }
@@ -179,33 +179,25 @@ class TileSearch {
     east = x0 + kLanes < w_ ? p[x0 + kLanes] : kInf;
   }
 
-  // free_ holds the raster's free cells shifted by one column, with a blocked border: rows
-  // -1 .. tiles_y_ * kRows (row y at index y + 1), bit c + 1 of a row = cell c free, bits past the
-  // width clear. A tile row's cells and their two neighbours (columns x0 - 1 .. x0 + 8) are then
-  // the low ten bits of the 16 bits at byte x0 / 8, with no bounds tests.
-  void build_free_bits(const OccupancyRaster& raster) {
-    const std::size_t words = raster.words_per_row();
-    free_stride_ = words + 1;
-    free_.assign(free_stride_ * (static_cast<std::size_t>(tiles_y_) * kRows + 2), 0);
-    const unsigned tail = static_cast<unsigned>(w_) % 64;
-    for (int y = 0; y < h_; ++y) {
-      const std::uint64_t* in = raster.row_words(y);
-      std::uint64_t* out = free_.data() + (static_cast<std::size_t>(y) + 1) * free_stride_;
-      for (std::size_t k = 0; k < words; ++k) {
-        std::uint64_t f = ~in[k];
-        if (k + 1 == words && tail != 0) f &= (std::uint64_t{1} << tail) - 1;
-        out[k] |= f << 1;
-        out[k + 1] |= f >> 63;
-      }
-    }
-  }
-
+  // The free cells of row y at columns x0 - 1 .. x0 + 8 (x0 = 8 tx) as bits 0 .. 9, cells outside
+  // the raster blocked. Read from the raster's bits for each tile run: no per-cell array is
+  // prepared, so the raster's unreached parts cost nothing.
   unsigned free_window(int y, int tx) const {
-    const auto* row = reinterpret_cast<const unsigned char*>(
-        free_.data() + static_cast<std::size_t>(y + 1) * free_stride_);
-    std::uint16_t v;
-    std::memcpy(&v, row + tx, sizeof v);
-    return v;
+    if (y < 0 || y >= h_) return 0;
+    const auto* b = reinterpret_cast<const unsigned char*>(raster_.row_words(y));
+    const int x0 = tx * kLanes;
+    if (tx > 0 && x0 + kLanes < w_ && static_cast<std::size_t>(tx) + 2 < row_bytes_) {
+      // The usual case: all ten columns inside, four bytes readable from column x0 - 8.
+      std::uint32_t bytes;
+      std::memcpy(&bytes, b + tx - 1, sizeof bytes);
+      return ~(bytes >> 7) & 0x3ffu;
+    }
+    unsigned blocked = static_cast<unsigned>(b[tx]) << 1;
+    blocked |= tx > 0 ? b[tx - 1] >> 7 : 1u;
+    if (x0 + kLanes < w_) blocked |= (static_cast<unsigned>(b[tx + 1]) & 1u) << 9;
+    // Columns x0 - 1 + j for j < w - x0 + 1 exist (the raster's padding bits read as free).
+    const int inside = std::min(10, w_ - x0 + 1);
+    return ~blocked & ((1u << inside) - 1u);
   }
 
   // The step cost of every move from the cells of the tile's rows, +inf where the move is not
@@ -413,10 +405,10 @@ class TileSearch {
     if (m < kInf) activate(tx_to, ty, m);
   }
 
+  const OccupancyRaster& raster_;
+  std::size_t row_bytes_;
   int w_, h_, tiles_x_, tiles_y_;
   float* dist_;
-  std::vector<std::uint64_t> free_;
-  std::size_t free_stride_ = 0;  // words per row of free_
   double per_bucket_;
   v8f base_[8];
   std::vector<float> pending_;  // per tile: the key it is queued with, +inf when not queued
