@@ -283,7 +283,10 @@ class TileSearch {
   }
 
   // Bottom to top: moves from the row below, then along the row. True if a label changed.
-  static bool sweep_up(Tile& t) {
+  // closed: every row already holds its along-row fixed point (a sweep ran along_row on it and the
+  // ring columns do not change within a run), so a row the moves from the row below or above do
+  // not improve stays as it is.
+  static bool sweep_up(Tile& t, bool closed) {
     v8i changed{};
     for (int r = 1; r <= kRows; ++r) {
       const v8f(&st)[8] = *t.steps[r - 1];
@@ -291,6 +294,7 @@ class TileSearch {
       v8f c = vmin(t.row[r], b + st[kS]);
       c = vmin(c, west_of(b, t.west[r - 1]) + st[kSW]);
       c = vmin(c, east_of(b, t.east[r - 1]) + st[kSE]);
+      if (closed && !any(c < t.row[r])) continue;
       c = along_row(t, r, c);
       changed |= c < t.row[r];
       t.row[r] = c;
@@ -298,7 +302,7 @@ class TileSearch {
     return any(changed);
   }
 
-  static bool sweep_down(Tile& t) {
+  static bool sweep_down(Tile& t, bool closed) {
     v8i changed{};
     for (int r = kRows; r >= 1; --r) {
       const v8f(&st)[8] = *t.steps[r - 1];
@@ -306,6 +310,7 @@ class TileSearch {
       v8f c = vmin(t.row[r], a + st[kN]);
       c = vmin(c, west_of(a, t.west[r + 1]) + st[kNW]);
       c = vmin(c, east_of(a, t.east[r + 1]) + st[kNE]);
+      if (closed && !any(c < t.row[r])) continue;
       c = along_row(t, r, c);
       changed |= c < t.row[r];
       t.row[r] = c;
@@ -335,7 +340,7 @@ class TileSearch {
     // move into the tile is satisfied).
     bool up = hmin(t.row[0]) <= hmin(t.row[kRows + 1]);
     for (int sweeps = 1;; ++sweeps, up = !up) {
-      const bool changed = up ? sweep_up(t) : sweep_down(t);
+      const bool changed = up ? sweep_up(t, sweeps > 1) : sweep_down(t, sweeps > 1);
       if (!changed && sweeps >= 2) {
         stats_.passes += static_cast<std::size_t>(sweeps);
         break;
