@@ -37,9 +37,11 @@
 // vectors, and the tile is swept upwards and downwards (each row: the three moves from the row
 // below or above as whole-vector adds and mins, then the moves along the row repeated until no
 // lane improves) until a sweep changes nothing. The tile is then written back and the neighbours
-// whose shared border changed are queued. Tiles are queued in buckets of the smallest label that
-// changed on their border, so the wave crosses the map roughly in distance order and most tiles
-// are relaxed once or twice.
+// that a move out of it now improves are queued, in buckets of the smallest improved label, so
+// the wave crosses the map roughly in distance order and most tiles are relaxed once.
+// The step costs come from the raster's bits at each run (no per-cell move array): nothing but
+// the output is prepared per cell, so a map whose reachable part is small costs little more than
+// its +inf fill.
 namespace autonomy::grid::detail {
 #ifdef AUTONOMY_TILE_SEARCH
 namespace {
