@@ -3,7 +3,7 @@
 // the same maps, for map classes x sizes x goal placements (common/grid/map_classes), and on
 // ROS map_server maps given with --map.
 //
-//   field_bench                          5 classes x 250, 1000, 2000 x 3 goals (a few minutes)
+//   field_bench                          6 classes x 250, 1000, 2000 x 3 goals (a few minutes)
 //   field_bench --quick                  250 and 1000 only
 //   field_bench --large                  adds 4000 x 4000
 //   field_bench --classes slam,maze --sizes 500 --goals corner

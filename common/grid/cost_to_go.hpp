@@ -49,7 +49,7 @@
 // bytes/cell. The bucket queue adds the move masks (1 byte/cell) and its ring: 5.1-5.3 bytes/cell.
 // Both under the 8-byte budget. The input raster is 1 bit per cell.
 //
-// Speed (bench/field_bench, see docs/fields.md): 15-38x less CPU time than the textbook Dijkstra
+// Speed (bench/field_bench, see docs/fields.md): 15-42x less CPU time than the textbook Dijkstra
 // with double labels on generated building floors, SLAM-like maps, mazes, small clutter and large
 // blocks (250^2 .. 4000^2, goals at the centre, a corner or in a passage) and on Nav2's
 // warehouse, depot and tb3_sandbox maps; e.g. about 5 ms against 100 ms at 1000^2. On a small
