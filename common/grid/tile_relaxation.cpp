@@ -48,6 +48,7 @@ namespace {
 
 typedef float v8f __attribute__((vector_size(32)));
 typedef std::int32_t v8i __attribute__((vector_size(32)));
+typedef std::uint32_t v8u __attribute__((vector_size(32)));  // bit sets: shifts without sign
 typedef std::uint8_t v8u8 __attribute__((vector_size(8)));
 
 constexpr int kLanes = 8;  // tile width: one row vector
@@ -64,6 +65,13 @@ inline v8f splat(float x) {
 }
 inline v8i splat_i(std::int32_t x) {
   return v8i{x, x, x, x, x, x, x, x};
+}
+inline v8u splat_u(std::uint32_t x) {
+  return v8u{x, x, x, x, x, x, x, x};
+}
+// Lanes whose top bit is set (all ones), as a select mask.
+inline v8i top_bit(v8u x) {
+  return reinterpret_cast<v8i>(x) < 0;
 }
 inline v8f vmin(v8f a, v8f b) {
   return a < b ? a : b;
@@ -103,8 +111,8 @@ struct Tile {
   v8f before[kRows];             // the labels as loaded
   // Per tile row: bit 8 m + i set when move m (E, N, W, S) is allowed from lane i; diag the same
   // for NE, NW, SW, SE. Vectors over the rows.
-  v8i orth;
-  v8i diag;
+  v8u orth;
+  v8u diag;
 };
 
 class TileSearch {
@@ -206,30 +214,29 @@ class TileSearch {
   // allowed: the target must be free and a diagonal needs both cells beside it free. Also the
   // allowed-move bits per row (orth, diag), for offer_beside.
   void load_steps(int y0, int tx, Tile& t) const {
-    std::int32_t win[kRows + 2];
-    for (int r = 0; r < kRows + 2; ++r)
-      win[r] = static_cast<std::int32_t>(free_window(y0 + r - 1, tx));
+    std::uint32_t win[kRows + 2];
+    for (int r = 0; r < kRows + 2; ++r) win[r] = free_window(y0 + r - 1, tx);
     // Lane r: tile row r (0-based) and its rows below and above. The move bits of all eight rows
     // at once.
-    v8i dn, cur, up;
+    v8u dn, cur, up;
     std::memcpy(&dn, &win[0], sizeof dn);
     std::memcpy(&cur, &win[1], sizeof cur);
     std::memcpy(&up, &win[2], sizeof up);
-    const v8i byte = splat_i(0xff);
+    const v8u byte = splat_u(0xffu);
     // Bit i of each: lane i's neighbour in that direction (or the cell itself) is free.
-    const v8i c = (cur >> 1) & byte, cw = cur & byte, ce = (cur >> 2) & byte;
-    const v8i u = (up >> 1) & byte, uw = up & byte, ue = (up >> 2) & byte;
-    const v8i d = (dn >> 1) & byte, dw = dn & byte, de = (dn >> 2) & byte;
-    const v8i e = c & ce, n = c & u, wst = c & cw, s = c & d;
-    const v8i ne = e & n & ue, nw = wst & n & uw, sw = wst & s & dw, se = e & s & de;
+    const v8u c = (cur >> 1) & byte, cw = cur & byte, ce = (cur >> 2) & byte;
+    const v8u u = (up >> 1) & byte, uw = up & byte, ue = (up >> 2) & byte;
+    const v8u d = (dn >> 1) & byte, dw = dn & byte, de = (dn >> 2) & byte;
+    const v8u e = c & ce, n = c & u, wst = c & cw, s = c & d;
+    const v8u ne = e & n & ue, nw = wst & n & uw, sw = wst & s & dw, se = e & s & de;
     t.orth = e | n << 8 | wst << 16 | s << 24;
     t.diag = ne | nw << 8 | sw << 16 | se << 24;
-    const int open = _mm256_movemask_ps(reinterpret_cast<__m256>((t.orth & t.diag) == splat_i(-1)));
+    const int open =
+        _mm256_movemask_ps(reinterpret_cast<__m256>((t.orth & t.diag) == splat_u(0xffffffffu)));
     const v8f inf = splat(kInf);
-    // Lane i's bit of byte m % 4 moved to the sign: a blend on the sign bit, no compare.
-    const v8i to_sign[4] = {v8i{31, 30, 29, 28, 27, 26, 25, 24},
-                            v8i{23, 22, 21, 20, 19, 18, 17, 16}, v8i{15, 14, 13, 12, 11, 10, 9, 8},
-                            v8i{7, 6, 5, 4, 3, 2, 1, 0}};
+    // Lane i's bit of byte m % 4 moved to the top: a blend on the sign bit, no compare.
+    const v8u to_top[4] = {v8u{31, 30, 29, 28, 27, 26, 25, 24}, v8u{23, 22, 21, 20, 19, 18, 17, 16},
+                           v8u{15, 14, 13, 12, 11, 10, 9, 8}, v8u{7, 6, 5, 4, 3, 2, 1, 0}};
     for (int r = 0; r < kRows; ++r) {
       if (open >> r & 1) {  // open space: every move allowed, the shared base steps
         t.steps[r] = &base_;
@@ -237,11 +244,11 @@ class TileSearch {
       }
       v8f(&step)[8] = t.step[r];
       t.steps[r] = &t.step[r];
-      const v8i vo = __builtin_shuffle(t.orth, splat_i(r)),
-                vg = __builtin_shuffle(t.diag, splat_i(r));
+      const v8u vo = __builtin_shuffle(t.orth, splat_u(static_cast<std::uint32_t>(r)));
+      const v8u vg = __builtin_shuffle(t.diag, splat_u(static_cast<std::uint32_t>(r)));
       for (int m = 0; m < 4; ++m) {
-        step[m] = (vo << to_sign[m]) < 0 ? base_[m] : inf;
-        step[m + 4] = (vg << to_sign[m]) < 0 ? base_[m + 4] : inf;
+        step[m] = top_bit(vo << to_top[m]) ? base_[m] : inf;
+        step[m + 4] = top_bit(vg << to_top[m]) ? base_[m + 4] : inf;
       }
     }
   }
@@ -384,7 +391,7 @@ class TileSearch {
 
   // Moves from lane `lane` (0 or 7) of tile rows 1 .. kRows into the ring column `ring` beside it
   // (rows 1 .. kRows; the corner cells are offer_across's). Vector lane r - 1 stands for tile row
-  // r: the tile's column is gathered, the allowed moves come from edge_moves.
+  // r: the tile's column is gathered, the allowed moves come from the rows' orth / diag bits.
   void offer_beside(const Tile& t, int lane, Move straight, Move up, Move down,
                     const float (&ring)[kRows + 2], int tx_to, int ty) {
     const v8i rows{0, 1, 2, 3, 4, 5, 6, 7};
@@ -393,8 +400,8 @@ class TileSearch {
     const v8f inf = splat(kInf);
     // Bit 8 (m % 4) + lane of each row's word to the sign.
     const auto allowed = [&](Move m) {
-      const v8i& words = m < 4 ? t.orth : t.diag;
-      return (words << (31 - 8 * (m % 4) - lane)) < 0;
+      const v8u& words = m < 4 ? t.orth : t.diag;
+      return top_bit(words << static_cast<unsigned>(31 - 8 * (m % 4) - lane));
     };
     v8f ring_here, ring_above, ring_below;  // ring rows r, r + 1 and r - 1 for lane r - 1
     std::memcpy(&ring_here, &ring[1], sizeof ring_here);
