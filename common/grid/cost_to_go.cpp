@@ -455,6 +455,20 @@ FieldResult compute_cost_to_go(const OccupancyRaster& raster, Cell goal,
   } else if (auto why = check_layers(raster, layers, max_extra); !why.empty()) {
     result.status = FieldStatus::kBadLayer;
     result.reason = std::move(why);
+  } else if (layers.empty() && detail::tile_search_available()) {
+    // No move masks here: the tile search reads the raster's bits for the tiles it reaches.
+    const StepCosts steps = step_costs(raster.resolution_m());
+    const std::size_t g = raster.index(goal);
+    dist[g] = 0.0f;
+    const auto t = detail::tile_search(g, raster, steps.orthogonal, steps.diagonal, dist.data());
+    result.stats.expanded = t.reachable;
+    result.stats.pushes = t.tile_runs;
+    result.stats.tiles = t.tiles;
+    result.stats.tile_runs = t.tile_runs;
+    result.stats.tile_sweeps = t.passes;
+    result.stats.buckets = t.buckets;
+    result.stats.work_bytes += t.work_bytes;
+    result.stats.reachable = std::max<std::size_t>(result.stats.expanded, 1);
   } else {
     std::vector<std::uint8_t> mask;
     mask.reserve(n);
@@ -476,17 +490,6 @@ FieldResult compute_cost_to_go(const OccupancyRaster& raster, Cell goal,
         static_cast<double>(std::min(kMaxRing, std::max<std::size_t>(64, n / 128)));
     if (static_cast<double>(ring_size_for(max_step, kBucketsPerRes / res)) > ring_limit) {
       heap_search(g, raster.width(), steps, layers, mask.data(), dist.data(), result.stats);
-    } else if (layers.empty() && detail::tile_search_available()) {
-      dist[g] = 0.0f;
-      const auto t = detail::tile_search(g, raster.width(), raster.height(), steps.orthogonal,
-                                         steps.diagonal, res, mask.data(), dist.data());
-      result.stats.expanded = t.reachable;
-      result.stats.pushes = t.tile_runs;
-      result.stats.tiles = t.tiles;
-      result.stats.tile_runs = t.tile_runs;
-      result.stats.tile_sweeps = t.passes;
-      result.stats.buckets = t.buckets;
-      result.stats.work_bytes += t.work_bytes;
     } else if (layers.empty()) {
       distance_search(g, raster.width(), steps, res, mask.data(), dist.data(), result.stats);
     } else {

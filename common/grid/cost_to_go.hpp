@@ -33,24 +33,28 @@
 //   from the row below/above as whole-vector adds and mins, moves along the row repeated until no
 //   lane improves) until a sweep changes nothing; then only the neighbouring tiles that a move out
 //   of it now improves are queued, in buckets of their smallest improved label. Most tiles run
-//   once (measured 0.8-1.05 runs per tile on building, SLAM-like, maze and cluttered maps), each
-//   run about two sweeps: about 45 instructions per cell against about 250 for a cell queue. Any
-//   relaxation order reaches the same fixed point (see the .cpp), so the result is the textbook
-//   float Dijkstra's, bit for bit. Elsewhere (no AVX2): a bucket queue whose buckets are res/4
-//   wide is exactly ordered: a cell popped from bucket k can only push cells into buckets > k,
-//   hence every cell is final when its bucket comes up and is expanded exactly once. In both, the
-//   allowed moves of every cell are precomputed into one byte (8 bits, corner rule included), so
-//   the inner loops have no bounds or obstacle tests.
+//   once (measured 0.8-1.05 runs per tile on every map class), each run about two sweeps: about
+//   34 instructions per cell against about 250 for a cell queue. A tile's allowed moves are read
+//   from the raster's bits when it runs, so nothing is prepared per cell but the output and
+//   unreached space costs only its +inf. Any relaxation order reaches the same fixed point (see
+//   the .cpp), so the result is the textbook float Dijkstra's, bit for bit. Elsewhere (no AVX2,
+//   or with layers): a bucket queue whose buckets are res/4 wide is exactly ordered: a cell popped
+//   from bucket k can only push cells into buckets > k, hence every cell is final when its bucket
+//   comes up and is expanded exactly once. There the allowed moves of every cell are precomputed
+//   into one byte (8 bits, corner rule included), so the inner loops have no bounds or obstacle
+//   tests.
 //
-// Memory: output (4 bytes/cell) + move masks (1 byte/cell) + the tile scheduler (a float per tile,
-// 0.06 bytes/cell) or the bucket ring; FieldStats::work_bytes reports the total the computation
-// holds, output included: 5.1-5.3 bytes/cell, under the 8-byte budget. The input raster is 1 bit
-// per cell.
+// Memory: output (4 bytes/cell) + the tile scheduler (a float per tile, 0.06 bytes/cell);
+// FieldStats::work_bytes reports the total the computation holds, output included: 4.06-4.3
+// bytes/cell. The bucket queue adds the move masks (1 byte/cell) and its ring: 5.1-5.3 bytes/cell.
+// Both under the 8-byte budget. The input raster is 1 bit per cell.
 //
-// Speed (bench/field_bench, see docs/fields.md): 13-31x less CPU time than the textbook Dijkstra
+// Speed (bench/field_bench, see docs/fields.md): 15-42x less CPU time than the textbook Dijkstra
 // with double labels on generated building floors, SLAM-like maps, mazes, small clutter and large
-// blocks (250^2 .. 4000^2, goals at the centre, a corner or in a passage) and on Nav2's warehouse
-// and depot maps; e.g. about 4 ms against 90 ms at 1000^2.
+// blocks (250^2 .. 4000^2, goals at the centre, a corner or in a passage) and on Nav2's
+// warehouse, depot and tb3_sandbox maps; e.g. about 5 ms against 100 ms at 1000^2. On a small
+// arena in a large unknown grid (4-5 % reachable) the output's +inf fill dominates: the field
+// takes 1.3-1.5 times one plain pass over the output there.
 //
 // Layers: the same bucket queue, with one candidate and bucket per move; when a layer's largest
 // step would need a ring longer than min(4096, cells / 128) buckets (about 1000 resolutions on big

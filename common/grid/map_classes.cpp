@@ -229,6 +229,73 @@ OccupancyRaster clutter(int width, int height, Rng& rng, double res) {
   return r;
 }
 
+// A small mapped arena inside a large unknown grid, as a robot's map of a test arena or the start
+// of an exploration looks (Nav2's tb3_sandbox: 384 x 384 cells, 5.4 % known free, the rest
+// unknown): everything is unknown (blocked) except a regular hexagon whose circumradius is 0.14 of
+// the smaller side, closed by a 2-cell wall, with a 3 x 3 grid of round pillars, 2..4 wall stubs
+// reaching in, ragged edges and speckle. About 4-5 % of the cells are free. Integer arithmetic
+// only (sqrt(3) / 2 as 866 / 1000).
+OccupancyRaster arena(int width, int height, Rng& rng, double res) {
+  OccupancyRaster r(width, height, res);
+  fill(r, 0, 0, width, height, true);
+  const long long cx = width / 2, cy = height / 2;
+  const long long radius =
+      std::max(4LL, static_cast<long long>(std::min(width, height)) * 14 / 100);
+  // Inside the hexagon (flat top and bottom) of circumradius q around the centre.
+  const auto inside = [&](long long col, long long row, long long q) {
+    const long long dx = std::llabs(col - cx), dy = std::llabs(row - cy);
+    return 1000 * dy <= 866 * q && 1732 * dx + 1000 * dy <= 1732 * q;
+  };
+  for (int row = 0; row < height; ++row)
+    for (int col = 0; col < width; ++col)
+      if (inside(col, row, radius - 2)) r.set_blocked({col, row}, false);
+  const long long spacing = std::max(2LL, radius * 10 / 22);
+  const long long pillar = std::max(1LL, radius / 12);
+  for (long long i = -1; i <= 1; ++i) {
+    for (long long j = -1; j <= 1; ++j) {
+      const long long px = cx + i * spacing, py = cy + j * spacing;
+      for (long long y = py - pillar; y <= py + pillar; ++y)
+        for (long long x = px - pillar; x <= px + pillar; ++x)
+          if ((x - px) * (x - px) + (y - py) * (y - py) <= pillar * pillar && x >= 0 && y >= 0 &&
+              x < width && y < height)
+            r.set_blocked({static_cast<int>(x), static_cast<int>(y)}, true);
+    }
+  }
+  const int stubs = rng.uniform(2, 4);
+  for (int k = 0; k < stubs; ++k) {
+    const int len = static_cast<int>(radius) / 3 + rng.uniform(0, static_cast<int>(radius) / 6);
+    const int off = rng.uniform(-static_cast<int>(radius) / 3, static_cast<int>(radius) / 3);
+    const int c = static_cast<int>(cx), row = static_cast<int>(cy);
+    const int reach = static_cast<int>(radius * 866 / 1000);
+    switch (rng.uniform(0, 3)) {
+      case 0:  // from the bottom wall up
+        fill(r, c + off, row - reach, c + off + 2, row - reach + len, true);
+        break;
+      case 1:  // from the top wall down
+        fill(r, c + off, row + reach - len, c + off + 2, row + reach, true);
+        break;
+      case 2:  // from the left across
+        fill(r, c - static_cast<int>(radius) / 2 - len / 2, row + off,
+             c - static_cast<int>(radius) / 2 + len / 2, row + off + 2, true);
+        break;
+      default:
+        fill(r, c + static_cast<int>(radius) / 2 - len / 2, row + off,
+             c + static_cast<int>(radius) / 2 + len / 2, row + off + 2, true);
+        break;
+    }
+  }
+  const OccupancyRaster before = r;
+  for (int row = 0; row < height; ++row) {
+    for (int col = 0; col < width; ++col) {
+      if (before.blocked({col, row})) continue;
+      const bool edge = before.blocked({col + 1, row}) || before.blocked({col - 1, row}) ||
+                        before.blocked({col, row + 1}) || before.blocked({col, row - 1});
+      if ((edge && rng.chance(25)) || rng.engine() % 1000 < 3) r.set_blocked({col, row}, true);
+    }
+  }
+  return r;
+}
+
 // Label of the largest 4-connected free region per cell (1) or not (0).
 std::vector<std::uint8_t> largest_region(const OccupancyRaster& r) {
   const std::size_t n = r.cell_count();
@@ -280,6 +347,8 @@ const char* to_string(MapClass c) {
       return "slam";
     case MapClass::kMaze:
       return "maze";
+    case MapClass::kArena:
+      return "arena";
   }
   return "?";
 }
@@ -324,6 +393,8 @@ OccupancyRaster make_map(MapClass c, int width, int height, std::uint64_t seed,
       return slam(width, height, rng, resolution_m);
     case MapClass::kMaze:
       return maze(width, height, rng, resolution_m);
+    case MapClass::kArena:
+      return arena(width, height, rng, resolution_m);
   }
   return OccupancyRaster(width, height, resolution_m);
 }

@@ -2,7 +2,8 @@
 // Generated occupancy maps that look like the maps robots really get, for tests and benchmarks of
 // the cost-to-goal field: building floors (rooms, 1-3 cell walls with doors, long corridors),
 // SLAM-like scans of such floors (rotated so walls are staircases, ragged wall edges, speckle,
-// unknown space outside and in unscanned patches), mazes, small random clutter and large blocks.
+// unknown space outside and in unscanned patches), mazes, small random clutter, large blocks, and
+// a small mapped arena in a large unknown grid (where only a few percent of the cells are free).
 // Deterministic: the same (class, size, seed) gives the same map on every platform
 // (std::mt19937_64 output and integer arithmetic only, plus one rotation evaluated in double).
 //
@@ -24,10 +25,12 @@ enum class MapClass {
   kBuilding,  // rooms, thin walls with doors, corridors, some furniture
   kSlam,      // a building floor as a SLAM map shows it
   kMaze,      // a maze with 6-cell corridors and 2-cell walls, a few loops
+  kArena,     // a small mapped arena (4-5 % of the cells) inside a large unknown grid
 };
 
-inline constexpr MapClass kAllMapClasses[] = {
-    MapClass::kClutter, MapClass::kBlocks, MapClass::kBuilding, MapClass::kSlam, MapClass::kMaze};
+inline constexpr MapClass kAllMapClasses[] = {MapClass::kClutter,  MapClass::kBlocks,
+                                              MapClass::kBuilding, MapClass::kSlam,
+                                              MapClass::kMaze,     MapClass::kArena};
 
 const char* to_string(MapClass c);
 std::optional<MapClass> map_class_from_string(const std::string& name);
