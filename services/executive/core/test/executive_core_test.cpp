@@ -4,6 +4,7 @@
 #include <set>
 
 #include "executive.hpp"
+#include "mode_identification.hpp"
 #include "planner.hpp"
 #include "planner_language.hpp"
 
@@ -711,6 +712,139 @@ TEST(Executive, WithAllFiveTheStuckCameraAbortsAfterTheEarlierResponses) {
                                         {"camera", "imaging"}, {"thruster_x", "stuck_closed"}}));
   EXPECT_TRUE(exec->aborted());
   EXPECT_FALSE(exec->finished());
+}
+
+}  // namespace
+}  // namespace autonomy::executive
+
+namespace autonomy::executive {
+namespace {
+
+// The camera's power: a bus switch with a status sensor, the camera's current on the bus, the
+// camera's own mode report. The camera needs the bus on.
+ModeIdentifier camera_power_model() {
+  ComponentModel bus{"camera_bus",
+                     {{"on", false, 0, "", {{"camera_bus.status", 1, 0.1}}},
+                      {"off", false, 0, "", {{"camera_bus.status", 0, 0.1}}},
+                      {"failed", true, 1.0, "", {{"camera_bus.status", 0, 0.1}}}},
+                     {}};
+  ComponentModel camera{"camera",
+                        {{"off", false, 0, "off", {{"camera.current", 0, 0.1}}},
+                         {"ready", false, 0, "ready", {{"camera.current", 0.5, 0.2}}},
+                         {"imaging", false, 0, "imaging", {{"camera.current", 1.2, 0.3}}},
+                         {"stuck_on", true, 1.0, "imaging", {{"camera.current", 1.2, 0.3}}},
+                         {"unpowered", false, 0, "off", {{"camera.current", 0, 0.1}}}},
+                        {{"camera_bus", {"on"}, "unpowered"}}};
+  std::string error;
+  // Given dependants first: the identifier orders them itself.
+  auto id = ModeIdentifier::create({camera, bus}, ModeCosts{}, &error);
+  EXPECT_TRUE(id) << error;
+  return *id;
+}
+
+Observations camera_readings(double status, double current, std::string report) {
+  Observations o;
+  o.readings = {{"camera_bus.status", status}, {"camera.current", current}};
+  o.device_modes = {{"camera", std::move(report)}};
+  return o;
+}
+
+const std::map<std::string, std::string> kImaging{{"camera_bus", "on"}, {"camera", "imaging"}};
+
+TEST(ModeIdentification, ReadingsAsCommandedAreTheCommandedModes) {
+  Diagnosis d = camera_power_model().identify(kImaging, camera_readings(1, 1.2, "imaging"));
+  EXPECT_EQ(d.modes.at("camera_bus"), "on");
+  EXPECT_EQ(d.modes.at("camera"), "imaging");
+  EXPECT_TRUE(d.faults.empty());
+  EXPECT_TRUE(d.false_sensors.empty());
+  EXPECT_DOUBLE_EQ(d.cost, 0);
+  EXPECT_FALSE(d.ambiguous);
+}
+
+// The DS1 case: the bus status says off while the camera draws imaging current and reports
+// imaging. One false sensor (cost 1) explains it; a failed bus would leave two readings
+// unexplained (the current and the report: cost 1 + 2).
+TEST(ModeIdentification, ALoneDisagreeingSensorIsJudgedFalse) {
+  Diagnosis d = camera_power_model().identify(kImaging, camera_readings(0, 1.2, "imaging"));
+  EXPECT_EQ(d.modes.at("camera_bus"), "on");
+  EXPECT_EQ(d.modes.at("camera"), "imaging");
+  EXPECT_EQ(d.false_sensors, (std::vector<std::string>{"camera_bus.status"}));
+  EXPECT_TRUE(d.faults.empty());
+  EXPECT_DOUBLE_EQ(d.cost, 1.0);
+}
+
+// The same status reading with the other readings agreeing: the bus failed (cost 1) and the
+// camera is off because of it, not a second fault; blaming sensors would take three.
+TEST(ModeIdentification, ReadingsThatAgreeOnAFailureAreAFailedDevice) {
+  Diagnosis d = camera_power_model().identify(kImaging, camera_readings(0, 0, "off"));
+  EXPECT_EQ(d.modes.at("camera_bus"), "failed");
+  EXPECT_EQ(d.modes.at("camera"), "unpowered");
+  EXPECT_EQ(d.faults, (std::vector<std::string>{"camera_bus=failed"}));
+  EXPECT_TRUE(d.false_sensors.empty());
+  EXPECT_DOUBLE_EQ(d.cost, 1.0);
+}
+
+// Commanded off, the camera still reports imaging and draws current: stuck on (1) beats
+// "the command was not taken" (2) and two false readings (2).
+TEST(ModeIdentification, ACameraStillOnAfterItsOffIsStuckOn) {
+  Diagnosis d = camera_power_model().identify({{"camera_bus", "on"}, {"camera", "off"}},
+                                              camera_readings(1, 1.2, "imaging"));
+  EXPECT_EQ(d.modes.at("camera"), "stuck_on");
+  EXPECT_EQ(d.faults, (std::vector<std::string>{"camera=stuck_on"}));
+  EXPECT_DOUBLE_EQ(d.cost, 1.0);
+  EXPECT_GT(d.assignments_tried, 0u);
+}
+
+// Absent readings predict nothing: with no telemetry at all the commanded modes stand.
+TEST(ModeIdentification, NoReadingsLeaveTheCommandedModes) {
+  Diagnosis d = camera_power_model().identify(kImaging, Observations{});
+  EXPECT_EQ(d.modes.at("camera"), "imaging");
+  EXPECT_DOUBLE_EQ(d.cost, 0);
+}
+
+TEST(ModeIdentification, BadModelsAreRejectedWithTheirReason) {
+  std::string error;
+  ComponentModel a{"a", {{"on", false, 0, "", {}}}, {{"b", {"on"}, "on"}}};
+  ComponentModel b{"b", {{"on", false, 0, "", {}}}, {{"a", {"on"}, "on"}}};
+  EXPECT_FALSE(ModeIdentifier::create({a, b}, ModeCosts{}, &error));
+  EXPECT_NE(error.find("cycle"), std::string::npos) << error;
+  ComponentModel c{"c", {{"on", false, 0, "", {}}}, {{"nobody", {"on"}, "on"}}};
+  EXPECT_FALSE(ModeIdentifier::create({c}, ModeCosts{}, &error));
+  EXPECT_NE(error.find("unknown component 'nobody'"), std::string::npos) << error;
+  ComponentModel d{"d", {{"on", false, 0, "", {}}}, {{"b2", {"up"}, "on"}}};
+  ComponentModel b2{"b2", {{"on", false, 0, "", {}}}, {}};
+  EXPECT_FALSE(ModeIdentifier::create({d, b2}, ModeCosts{}, &error));
+  EXPECT_NE(error.find("unknown mode 'up'"), std::string::npos) << error;
+}
+
+// As a fault response: the diagnosis acts once it held for `samples` ticks: the false
+// sensor is ignored (once), the failed bus reset (and answered again if it fails again after
+// recovering).
+TEST(ModeIdentification, AsAResponseItActsOnStableDiagnosesOnce) {
+  ModeIdentificationResponse response(
+      camera_power_model(), {{"camera_bus", "failed", FaultAction::Kind::kReset, "", ""}}, 2);
+  PlanState plan;
+  plan.expected_modes = kImaging;
+  EXPECT_TRUE(response.assess(camera_readings(0, 1.2, "imaging"), plan).empty());  // 1st sample
+  auto actions = response.assess(camera_readings(0, 1.2, "imaging"), plan);
+  ASSERT_EQ(actions.size(), 1u);
+  EXPECT_EQ(actions[0].kind, FaultAction::Kind::kIgnoreSensor);
+  EXPECT_EQ(actions[0].subject, "camera_bus.status");
+  EXPECT_NE(actions[0].reason.find("false camera_bus.status"), std::string::npos)
+      << actions[0].reason;
+  EXPECT_TRUE(response.assess(camera_readings(0, 1.2, "imaging"), plan).empty());  // done
+
+  for (int round = 0; round < 2; ++round) {
+    EXPECT_TRUE(response.assess(camera_readings(0, 0, "off"), plan).empty());
+    actions = response.assess(camera_readings(0, 0, "off"), plan);
+    ASSERT_EQ(actions.size(), 1u) << round;
+    EXPECT_EQ(actions[0].kind, FaultAction::Kind::kReset);
+    EXPECT_EQ(actions[0].subject, "camera_bus");
+    EXPECT_TRUE(response.assess(camera_readings(0, 0, "off"), plan).empty());
+    // The reset worked: nominal readings again.
+    response.assess(camera_readings(1, 1.2, "imaging"), plan);
+    response.assess(camera_readings(1, 1.2, "imaging"), plan);
+  }
 }
 
 }  // namespace
