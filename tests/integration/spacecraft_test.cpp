@@ -151,7 +151,7 @@ TEST_F(SpacecraftTest, LockstepCommandsAreConfirmedInTelemetry) {
 
   // Confirmed at the tick it was sent for, seen in the next tick's telemetry, turning.
   ASSERT_TRUE(run_until("turn-1 confirmed", driver, [&] {
-    return first(*telemetry_, [](const auto& t) { return device(t, "adcs")->confirmed_command_id == "turn-1"; });
+    return !!first(*telemetry_, [](const auto& t) { return device(t, "adcs")->confirmed_command_id == "turn-1"; });
   }));
   const int64_t k0 = driver.sent_at("turn-1");
   const auto confirmed =
@@ -166,7 +166,7 @@ TEST_F(SpacecraftTest, LockstepCommandsAreConfirmedInTelemetry) {
 
   // 36.87 deg at 0.2 deg/s: 185 one-second steps.
   ASSERT_TRUE(run_until("pointing at asteroid-1", driver, [&] {
-    return first(*telemetry_, [](const auto& t) { return t.attitude.pointing_target == "asteroid-1"; });
+    return !!first(*telemetry_, [](const auto& t) { return t.attitude.pointing_target == "asteroid-1"; });
   }));
   const auto pointed = *first(*telemetry_, [](const auto& t) { return t.attitude.pointing_target == "asteroid-1"; });
   EXPECT_EQ(pointed.tick - k0, 185);
@@ -175,7 +175,7 @@ TEST_F(SpacecraftTest, LockstepCommandsAreConfirmedInTelemetry) {
 
   driver.send("img-1", "camera", "take_image", {"asteroid-1"});
   ASSERT_TRUE(run_until("image on target", driver,
-                        [&] { return first(*telemetry_, [](const auto& t) { return t.camera.images_on_target == 1; }); }));
+                        [&] { return !!first(*telemetry_, [](const auto& t) { return t.camera.images_on_target == 1; }); }));
   const auto imaged = *first(*telemetry_, [](const auto& t) { return t.camera.images_on_target == 1; });
   EXPECT_EQ(imaged.tick - driver.sent_at("img-1"), 20);  // the exposure
   EXPECT_DOUBLE_EQ(imaged.storage.used_mb, 5.0);          // 4 MB at the start + 1
@@ -207,7 +207,7 @@ TEST_F(SpacecraftTest, BadCommandsAreRejectedWithTheirReasons) {
   ASSERT_TRUE(status_of(*status_, "good"));
   EXPECT_TRUE(status_of(*status_, "good")->accepted);
   ASSERT_TRUE(run_until("counts in telemetry", driver, [&] {
-    return first(*telemetry_, [](const auto& t) { return t.commands_rejected == 4 && t.commands_accepted == 1; });
+    return !!first(*telemetry_, [](const auto& t) { return t.commands_rejected == 4 && t.commands_accepted == 1; });
   }));
   const auto t = *first(*telemetry_, [](const auto& t) { return t.commands_rejected == 4; });
   EXPECT_EQ(device(t, "ips")->mode, "thrusting");
@@ -231,7 +231,7 @@ TEST_F(SpacecraftTest, InjectedFaultsShowInTelemetryAndTruth) {
 
   ASSERT_TRUE(run_until("faults in telemetry", driver, [&] {
     truth.poll();
-    return first(*telemetry_, [](const auto& t) {
+    return !!first(*telemetry_, [](const auto& t) {
       return device(t, "thruster_x")->mode == "stuck_closed" && device(t, "lpe")->mode == "failed" &&
              reading(t, "camera_switch_status") == 0.0;
     });
@@ -251,7 +251,7 @@ TEST_F(SpacecraftTest, InjectedFaultsShowInTelemetryAndTruth) {
   driver.send("reset-1", "lpe", "reset");
   ASSERT_TRUE(run_until("lpe reset", driver, [&] {
     truth.poll();
-    return first(*telemetry_, [](const auto& t) { return device(t, "lpe")->confirmed_command_id == "reset-1"; });
+    return !!first(*telemetry_, [](const auto& t) { return device(t, "lpe")->confirmed_command_id == "reset-1"; });
   }));
   EXPECT_EQ(status_of(*status_, "cam-1")->reason, "commands to camera pass through lpe, which has failed");
   const auto reset = *first(*telemetry_, [](const auto& t) { return device(t, "lpe")->confirmed_command_id == "reset-1"; });
@@ -297,7 +297,7 @@ TEST_F(SpacecraftTest, ScenarioFaultOnACommandInPacedTime) {
   // Twenty ticks later the engine still has not done it; the camera did.
   ASSERT_TRUE(await("20 ticks after the thrust", [&] {
     telemetry_->poll();
-    return first(*telemetry_, [&](const auto& t) { return t.tick >= accepted.tick + 20; });
+    return !!first(*telemetry_, [&](const auto& t) { return t.tick >= accepted.tick + 20; });
   }));
   const auto later = *first(*telemetry_, [&](const auto& t) { return t.tick >= accepted.tick + 20; });
   EXPECT_EQ(device(later, "ips")->mode, "standby");
