@@ -41,7 +41,7 @@ std::string number(double v) {
   return out.str();
 }
 
-// A whole number in [lo, hi] written as decimal digits, or nullopt.
+// A whole number written in decimal digits (at most 9), or nullopt.
 std::optional<long> parse_int(const std::string& text) {
   if (text.empty() || text.size() > 9) return std::nullopt;
   char* end = nullptr;
@@ -421,7 +421,7 @@ void Spacecraft::step(double dt_s) {
   if (downlinking_) {
     const StationWindowSpec* w = window_at(time_s_);
     if (!w) {
-      downlinking_ = false;  // the station set
+      downlinking_ = false;  // the window closed: the station is out of view
     } else {
       const double sent = std::min(used_mb_, w->rate_kbps * dt_s / 8000.0);
       used_mb_ -= sent;
