@@ -15,7 +15,8 @@ T round_trip(const T& value) {
 }
 
 TEST(SpacecraftConversionsTest, CommandAndStatusRoundTrip) {
-  const msg::SpacecraftCommand c{"c-1", "executive", 42, "camera", "take_image", {"asteroid-1", "raw"}};
+  const msg::SpacecraftCommand c{"c-1",    "executive",  42,
+                                 "camera", "take_image", {"asteroid-1", "raw"}};
   const msg::SpacecraftCommand back = round_trip(c);
   EXPECT_EQ(back.command_id, "c-1");
   EXPECT_EQ(back.source, "executive");
@@ -25,7 +26,8 @@ TEST(SpacecraftConversionsTest, CommandAndStatusRoundTrip) {
   EXPECT_EQ(back.arguments, (std::vector<std::string>{"asteroid-1", "raw"}));
   EXPECT_TRUE(round_trip(msg::SpacecraftCommand{}).arguments.empty());
 
-  const msg::SpacecraftCommandStatus s{"c-1", "executive", "camera", "take_image", false, "camera is off", 42, 7};
+  const msg::SpacecraftCommandStatus s{"c-1", "executive",     "camera", "take_image",
+                                       false, "camera is off", 42,       7};
   const msg::SpacecraftCommandStatus sb = round_trip(s);
   EXPECT_EQ(sb.command_id, "c-1");
   EXPECT_EQ(sb.source, "executive");
@@ -82,7 +84,8 @@ TEST(SpacecraftConversionsTest, TelemetryRoundTrip) {
 }
 
 TEST(SpacecraftConversionsTest, FaultInjectionAndStateRoundTrip) {
-  const msg::SpacecraftFaultInjection f{"f-1", "test", "false_sensor", "camera_switch_status", 0.25, false, true};
+  const msg::SpacecraftFaultInjection f{"f-1", "test", "false_sensor", "camera_switch_status", 0.25,
+                                        false, true};
   const auto fb = round_trip(f);
   EXPECT_EQ(fb.fault_id, "f-1");
   EXPECT_EQ(fb.source, "test");

@@ -12,7 +12,9 @@ namespace {
 
 constexpr std::size_t kMaxArguments = 8;
 
-int64_t to_ns(double seconds) { return static_cast<int64_t>(std::llround(seconds * 1e9)); }
+int64_t to_ns(double seconds) {
+  return static_cast<int64_t>(std::llround(seconds * 1e9));
+}
 
 // Why a received command cannot even be looked at (overlong strings, too many arguments).
 std::optional<std::string> malformed(const msg::SpacecraftCommand& c) {
@@ -52,9 +54,9 @@ SpacecraftArea::SpacecraftArea(const dds::Participant& participant, service::Eve
   loop.on_samples<msg::SpacecraftFaultInjection>(injection_reader_,
                                                  [this](auto s) { on_injections(std::move(s)); });
   const spacecraft::SpacecraftSpec& s = craft_.spec();
-  spdlog::info("spacecraft '{}': {} devices, {} targets, {} ground-station windows, {} scenario faults",
-               s.name, craft_.devices().size(), s.targets.size(), s.telecom.windows.size(),
-               s.faults.size());
+  spdlog::info(
+      "spacecraft '{}': {} devices, {} targets, {} ground-station windows, {} scenario faults",
+      s.name, craft_.devices().size(), s.targets.size(), s.telecom.windows.size(), s.faults.size());
 }
 
 void SpacecraftArea::on_commands(std::vector<dds::Sample<msg::SpacecraftCommand>> samples) {
@@ -63,11 +65,14 @@ void SpacecraftArea::on_commands(std::vector<dds::Sample<msg::SpacecraftCommand>
     msg::SpacecraftCommand& c = s.value;
     if (auto problem = malformed(c)) {
       ++malformed_;
-      msg::SpacecraftCommand echo{msg::clipped_id(c.command_id), msg::clipped_id(c.source, msg::kMaxNameLength),
-                                  c.tick, msg::clipped_id(c.device, msg::kMaxNameLength),
-                                  msg::clipped_id(c.command, msg::kMaxNameLength), {}};
-      spdlog::warn("spacecraft command '{}' from '{}' rejected: {}", msg::clipped_for_log(c.command_id),
-                   msg::clipped_for_log(c.source), *problem);
+      msg::SpacecraftCommand echo{msg::clipped_id(c.command_id),
+                                  msg::clipped_id(c.source, msg::kMaxNameLength),
+                                  c.tick,
+                                  msg::clipped_id(c.device, msg::kMaxNameLength),
+                                  msg::clipped_id(c.command, msg::kMaxNameLength),
+                                  {}};
+      spdlog::warn("spacecraft command '{}' from '{}' rejected: {}",
+                   msg::clipped_for_log(c.command_id), msg::clipped_for_log(c.source), *problem);
       answer(echo, false, *problem, tick_);
       continue;
     }
@@ -79,7 +84,8 @@ void SpacecraftArea::on_commands(std::vector<dds::Sample<msg::SpacecraftCommand>
   after_samples_();
 }
 
-void SpacecraftArea::on_injections(std::vector<dds::Sample<msg::SpacecraftFaultInjection>> samples) {
+void SpacecraftArea::on_injections(
+    std::vector<dds::Sample<msg::SpacecraftFaultInjection>> samples) {
   for (auto& s : samples)
     if (s.valid) injections_.push_back(std::move(s.value));
 }
@@ -107,7 +113,8 @@ void SpacecraftArea::apply(const msg::SpacecraftCommand& c, std::int64_t tick) {
       craft_.submit({c.command_id, c.source, c.device, c.command, c.arguments});
   if (r.accepted)
     spdlog::info("tick {}: {} {} [{}] from {} accepted ({})", tick, c.device, c.command,
-                 msg::clipped_for_log(c.arguments.empty() ? "" : c.arguments[0]), c.source, c.command_id);
+                 msg::clipped_for_log(c.arguments.empty() ? "" : c.arguments[0]), c.source,
+                 c.command_id);
   else
     spdlog::warn("tick {}: {} {} from {} rejected ({}): {}", tick, c.device, c.command, c.source,
                  c.command_id, r.reason);
@@ -115,8 +122,12 @@ void SpacecraftArea::apply(const msg::SpacecraftCommand& c, std::int64_t tick) {
 }
 
 void SpacecraftArea::apply(const msg::SpacecraftFaultInjection& f, std::int64_t tick) {
-  msg::SpacecraftCommand echo{msg::clipped_id(f.fault_id), msg::clipped_id(f.source, msg::kMaxNameLength),
-                              tick, msg::clipped_id(f.subject, msg::kMaxNameLength), "inject", {}};
+  msg::SpacecraftCommand echo{msg::clipped_id(f.fault_id),
+                              msg::clipped_id(f.source, msg::kMaxNameLength),
+                              tick,
+                              msg::clipped_id(f.subject, msg::kMaxNameLength),
+                              "inject",
+                              {}};
   if (auto problem = msg::first_length_problem({{"fault_id", f.fault_id, msg::kMaxIdLength},
                                                 {"source", f.source, msg::kMaxNameLength},
                                                 {"kind", f.kind, msg::kMaxNameLength},
@@ -138,20 +149,23 @@ void SpacecraftArea::apply(const msg::SpacecraftFaultInjection& f, std::int64_t 
            tick);
     return;
   }
-  spacecraft::FaultSpec spec{f.fault_id, *kind, f.subject, f.value, f.reset_cures, std::nullopt, ""};
-  const spacecraft::CommandResult r =
-      craft_.inject(std::move(spec), "injected by " + (f.source.empty() ? std::string("?") : f.source));
+  spacecraft::FaultSpec spec{f.fault_id,    *kind,        f.subject, f.value,
+                             f.reset_cures, std::nullopt, ""};
+  const spacecraft::CommandResult r = craft_.inject(
+      std::move(spec), "injected by " + (f.source.empty() ? std::string("?") : f.source));
   if (r.accepted)
-    spdlog::info("tick {}: fault '{}' ({} {}) injected by {}", tick, f.fault_id, f.kind, f.subject, f.source);
+    spdlog::info("tick {}: fault '{}' ({} {}) injected by {}", tick, f.fault_id, f.kind, f.subject,
+                 f.source);
   else
     spdlog::warn("tick {}: fault injection '{}' rejected: {}", tick, f.fault_id, r.reason);
   answer(echo, r.accepted, r.reason, tick);
 }
 
-void SpacecraftArea::answer(const msg::SpacecraftCommand& c, bool accepted, const std::string& reason,
-                            std::int64_t tick) {
+void SpacecraftArea::answer(const msg::SpacecraftCommand& c, bool accepted,
+                            const std::string& reason, std::int64_t tick) {
   // Commands are applied in the step that ends the last published tick: its time is theirs.
-  status_writer_.write({c.command_id, c.source, c.device, c.command, accepted, reason, tick, tick_ns_});
+  status_writer_.write(
+      {c.command_id, c.source, c.device, c.command, accepted, reason, tick, tick_ns_});
 }
 
 void SpacecraftArea::publish(std::int64_t tick, std::int64_t sim_time_ns) {
@@ -163,10 +177,11 @@ void SpacecraftArea::publish(std::int64_t tick, std::int64_t sim_time_ns) {
   t.commands_rejected += malformed_;
   telemetry_writer_.write(t);
   for (const spacecraft::FaultEvent& e : craft_.take_fault_events()) {
-    spdlog::info("fault '{}' ({} {}) {} at {} s ({})", e.fault.id, to_string(e.fault.kind), e.fault.subject,
-                 e.active ? "active" : "ended by " + e.ended_by, e.time_s, e.trigger);
-    fault_writer_.write({e.fault.id, to_string(e.fault.kind), e.fault.subject, e.fault.value, e.active,
-                         e.trigger, e.ended_by, to_ns(e.time_s)});
+    spdlog::info("fault '{}' ({} {}) {} at {} s ({})", e.fault.id, to_string(e.fault.kind),
+                 e.fault.subject, e.active ? "active" : "ended by " + e.ended_by, e.time_s,
+                 e.trigger);
+    fault_writer_.write({e.fault.id, to_string(e.fault.kind), e.fault.subject, e.fault.value,
+                         e.active, e.trigger, e.ended_by, to_ns(e.time_s)});
   }
 }
 

@@ -55,8 +55,8 @@ class SpacecraftArea {
   std::vector<msg::SpacecraftCommand> unsynchronised_;
   std::vector<msg::SpacecraftFaultInjection> injections_;
   std::uint64_t malformed_ = 0;
-  std::int64_t tick_ = 0;         // the last tick published
-  std::int64_t tick_ns_ = 0;      // its simulated time
+  std::int64_t tick_ = 0;     // the last tick published
+  std::int64_t tick_ns_ = 0;  // its simulated time
 
   dds::Topic<msg::SpacecraftCommand> command_topic_;
   dds::Topic<msg::SpacecraftCommandStatus> status_topic_;

@@ -16,7 +16,8 @@ using configfile::Locator;
 using configfile::Position;
 namespace sc = spacecraft;
 
-const std::set<std::string> kFixedDevices = {"adcs", "ips", "camera", "power", "telecom", "storage"};
+const std::set<std::string> kFixedDevices = {"adcs",  "ips",     "camera",
+                                             "power", "telecom", "storage"};
 
 class SectionChecker {
  public:
@@ -57,7 +58,8 @@ class SectionChecker {
   double value(bool present, double v, double fallback, bool ok, const std::string& what,
                const std::string& rule, Position p) {
     if (!present) return fallback;
-    if (!std::isfinite(v) || !ok) error(p, what + " must be " + rule + " (got " + format_number(v) + ")");
+    if (!std::isfinite(v) || !ok)
+      error(p, what + " must be " + rule + " (got " + format_number(v) + ")");
     return v;
   }
 
@@ -112,16 +114,18 @@ class SectionChecker {
     for (int i = 0; i < a.modes_size(); ++i) {
       const config::ControlMode& m = a.modes(i);
       const Locator ml = at.nested("modes", i);
-      if (m.name().empty()) error(ml.self(), "control mode " + std::to_string(i) + ": name is missing");
+      if (m.name().empty())
+        error(ml.self(), "control mode " + std::to_string(i) + ": name is missing");
       unique(modes, m.name(), "control mode", ml.at("name"));
       sc::ControlModeSpec mode{m.name(), {}, m.max_rate_deg_s()};
       if (!(std::isfinite(m.max_rate_deg_s()) && m.max_rate_deg_s() > 0))
-        error(ml.at("max_rate_deg_s"), "control mode '" + m.name() + "': max_rate_deg_s must be positive (got " +
+        error(ml.at("max_rate_deg_s"), "control mode '" + m.name() +
+                                           "': max_rate_deg_s must be positive (got " +
                                            format_number(m.max_rate_deg_s()) + ")");
       for (int k = 0; k < m.actuators_size(); ++k) {
         if (!seen.count(m.actuators(k)))
-          error(ml.at("actuators", k), "control mode '" + m.name() + "': actuator '" + m.actuators(k) +
-                                           "' is not one of attitude.thrusters");
+          error(ml.at("actuators", k), "control mode '" + m.name() + "': actuator '" +
+                                           m.actuators(k) + "' is not one of attitude.thrusters");
         mode.actuators.push_back(m.actuators(k));
       }
       out.modes.push_back(std::move(mode));
@@ -135,9 +139,9 @@ class SectionChecker {
       error(a.control_mode().empty() ? at.self() : at.at("control_mode"),
             "attitude: control_mode '" + a.control_mode() + "' is not one of its modes");
     out.pointing_tolerance_deg =
-        value(a.has_pointing_tolerance_deg(), a.pointing_tolerance_deg(), out.pointing_tolerance_deg,
-              a.pointing_tolerance_deg() > 0, "attitude: pointing_tolerance_deg", "positive",
-              at.at("pointing_tolerance_deg"));
+        value(a.has_pointing_tolerance_deg(), a.pointing_tolerance_deg(),
+              out.pointing_tolerance_deg, a.pointing_tolerance_deg() > 0,
+              "attitude: pointing_tolerance_deg", "positive", at.at("pointing_tolerance_deg"));
   }
 
   void ion_engine(const config::Spacecraft& f, const Locator& at, sc::IonEngineSpec& out) {
@@ -148,8 +152,9 @@ class SectionChecker {
                                       std::to_string(e.max_level()) + ")");
       out.max_level = static_cast<int>(e.max_level());
     }
-    out.min_power_w = value(e.has_min_power_w(), e.min_power_w(), out.min_power_w, e.min_power_w() >= 0,
-                            "ion_engine: min_power_w", ">= 0", at.at("min_power_w"));
+    out.min_power_w =
+        value(e.has_min_power_w(), e.min_power_w(), out.min_power_w, e.min_power_w() >= 0,
+              "ion_engine: min_power_w", ">= 0", at.at("min_power_w"));
     out.max_power_w = value(e.has_max_power_w(), e.max_power_w(), out.max_power_w,
                             e.max_power_w() >= out.min_power_w, "ion_engine: max_power_w",
                             ">= min_power_w", at.at("max_power_w"));
@@ -166,39 +171,47 @@ class SectionChecker {
                                          c.initial_mode() + "\")");
       out.initial_mode = c.initial_mode();
     }
-    out.ready_power_w = value(c.has_ready_power_w(), c.ready_power_w(), out.ready_power_w, c.ready_power_w() >= 0,
-                              "camera: ready_power_w", ">= 0", at.at("ready_power_w"));
+    out.ready_power_w =
+        value(c.has_ready_power_w(), c.ready_power_w(), out.ready_power_w, c.ready_power_w() >= 0,
+              "camera: ready_power_w", ">= 0", at.at("ready_power_w"));
     out.imaging_power_w = value(c.has_imaging_power_w(), c.imaging_power_w(), out.imaging_power_w,
-                                c.imaging_power_w() >= 0, "camera: imaging_power_w", ">= 0", at.at("imaging_power_w"));
+                                c.imaging_power_w() >= 0, "camera: imaging_power_w", ">= 0",
+                                at.at("imaging_power_w"));
     out.exposure_s = value(c.has_exposure_s(), c.exposure_s(), out.exposure_s, c.exposure_s() > 0,
                            "camera: exposure_s", "positive", at.at("exposure_s"));
-    out.image_mb = value(c.has_image_mb(), c.image_mb(), out.image_mb, c.image_mb() >= 0, "camera: image_mb",
-                         ">= 0", at.at("image_mb"));
+    out.image_mb = value(c.has_image_mb(), c.image_mb(), out.image_mb, c.image_mb() >= 0,
+                         "camera: image_mb", ">= 0", at.at("image_mb"));
   }
 
   void power(const config::Spacecraft& f, const Locator& at, sc::PowerSpec& out) {
     const config::SpacecraftPower& p = f.power();
-    out.solar_array_w = value(p.has_solar_array_w(), p.solar_array_w(), out.solar_array_w, p.solar_array_w() >= 0,
-                              "power: solar_array_w", ">= 0", at.at("solar_array_w"));
+    out.solar_array_w =
+        value(p.has_solar_array_w(), p.solar_array_w(), out.solar_array_w, p.solar_array_w() >= 0,
+              "power: solar_array_w", ">= 0", at.at("solar_array_w"));
     out.battery_capacity_wh =
         value(p.has_battery_capacity_wh(), p.battery_capacity_wh(), out.battery_capacity_wh,
-              p.battery_capacity_wh() > 0, "power: battery_capacity_wh", "positive", at.at("battery_capacity_wh"));
+              p.battery_capacity_wh() > 0, "power: battery_capacity_wh", "positive",
+              at.at("battery_capacity_wh"));
     out.battery_soc = value(p.has_battery_soc(), p.battery_soc(), out.battery_soc,
-                            p.battery_soc() >= 0 && p.battery_soc() <= 1, "power: battery_soc", "in 0..1",
-                            at.at("battery_soc"));
-    out.base_load_w = value(p.has_base_load_w(), p.base_load_w(), out.base_load_w, p.base_load_w() >= 0,
-                            "power: base_load_w", ">= 0", at.at("base_load_w"));
-    out.max_discharge_w = value(p.has_max_discharge_w(), p.max_discharge_w(), out.max_discharge_w,
-                                p.max_discharge_w() >= 0, "power: max_discharge_w", ">= 0", at.at("max_discharge_w"));
+                            p.battery_soc() >= 0 && p.battery_soc() <= 1, "power: battery_soc",
+                            "in 0..1", at.at("battery_soc"));
+    out.base_load_w =
+        value(p.has_base_load_w(), p.base_load_w(), out.base_load_w, p.base_load_w() >= 0,
+              "power: base_load_w", ">= 0", at.at("base_load_w"));
+    out.max_discharge_w =
+        value(p.has_max_discharge_w(), p.max_discharge_w(), out.max_discharge_w,
+              p.max_discharge_w() >= 0, "power: max_discharge_w", ">= 0", at.at("max_discharge_w"));
     std::map<std::string, int> seen, fed;
     for (int i = 0; i < p.switches_size(); ++i) {
       const config::BusSwitch& s = p.switches(i);
       const Locator sl = at.nested("switches", i);
-      if (s.name().empty()) error(sl.self(), "bus switch " + std::to_string(i) + ": name is missing");
+      if (s.name().empty())
+        error(sl.self(), "bus switch " + std::to_string(i) + ": name is missing");
       unique(seen, s.name(), "bus switch", sl.at("name"));
       if (s.device() != "camera" && s.device() != "ips" && s.device() != "telecom")
         error(s.device().empty() ? sl.self() : sl.at("device"),
-              "bus switch '" + s.name() + "': device must be camera, ips or telecom (got \"" + s.device() + "\")");
+              "bus switch '" + s.name() + "': device must be camera, ips or telecom (got \"" +
+                  s.device() + "\")");
       else
         unique(fed, s.device(), "switch for device", sl.at("device"));
       out.switches.push_back({s.name(), s.device(), !s.has_closed() || s.closed()});
@@ -207,24 +220,29 @@ class SectionChecker {
 
   void telecom(const config::Spacecraft& f, const Locator& at, sc::TelecomSpec& out) {
     const config::Telecom& t = f.telecom();
-    out.transmit_power_w = value(t.has_transmit_power_w(), t.transmit_power_w(), out.transmit_power_w,
-                                 t.transmit_power_w() >= 0, "telecom: transmit_power_w", ">= 0",
-                                 at.at("transmit_power_w"));
+    out.transmit_power_w = value(t.has_transmit_power_w(), t.transmit_power_w(),
+                                 out.transmit_power_w, t.transmit_power_w() >= 0,
+                                 "telecom: transmit_power_w", ">= 0", at.at("transmit_power_w"));
     double previous_end = 0;
     for (int i = 0; i < t.windows_size(); ++i) {
       const config::StationWindow& w = t.windows(i);
       const Locator wl = at.nested("windows", i);
-      const std::string who = "window " + std::to_string(i) + (w.station().empty() ? "" : " (" + w.station() + ")");
+      const std::string who =
+          "window " + std::to_string(i) + (w.station().empty() ? "" : " (" + w.station() + ")");
       if (w.station().empty()) error(wl.self(), who + ": station is missing");
       if (!(std::isfinite(w.start_s()) && w.start_s() >= 0))
-        error(wl.at("start_s"), who + ": start_s must be >= 0 (got " + format_number(w.start_s()) + ")");
+        error(wl.at("start_s"),
+              who + ": start_s must be >= 0 (got " + format_number(w.start_s()) + ")");
       else if (w.start_s() < previous_end)
         error(wl.at("start_s"), who + ": starts at " + format_number(w.start_s()) +
-                                    " s, before the previous window ends (" + format_number(previous_end) + " s)");
+                                    " s, before the previous window ends (" +
+                                    format_number(previous_end) + " s)");
       if (!(std::isfinite(w.end_s()) && w.end_s() > w.start_s()))
-        error(wl.at("end_s"), who + ": end_s must be after start_s (got " + format_number(w.end_s()) + ")");
+        error(wl.at("end_s"),
+              who + ": end_s must be after start_s (got " + format_number(w.end_s()) + ")");
       if (!(std::isfinite(w.rate_kbps()) && w.rate_kbps() > 0))
-        error(wl.at("rate_kbps"), who + ": rate_kbps must be positive (got " + format_number(w.rate_kbps()) + ")");
+        error(wl.at("rate_kbps"),
+              who + ": rate_kbps must be positive (got " + format_number(w.rate_kbps()) + ")");
       previous_end = std::max(previous_end, w.end_s());
       out.windows.push_back({w.station(), w.start_s(), w.end_s(), w.rate_kbps()});
     }
@@ -232,12 +250,13 @@ class SectionChecker {
 
   void storage(const config::Spacecraft& f, const Locator& at, sc::StorageSpec& out) {
     const config::DataStorage& s = f.storage();
-    out.capacity_mb = value(s.has_capacity_mb(), s.capacity_mb(), out.capacity_mb, s.capacity_mb() > 0,
-                            "storage: capacity_mb", "positive", at.at("capacity_mb"));
+    out.capacity_mb =
+        value(s.has_capacity_mb(), s.capacity_mb(), out.capacity_mb, s.capacity_mb() > 0,
+              "storage: capacity_mb", "positive", at.at("capacity_mb"));
     out.used_mb = s.used_mb();
     if (!(std::isfinite(s.used_mb()) && s.used_mb() >= 0 && s.used_mb() <= out.capacity_mb))
-      error(at.at("used_mb"), "storage: used_mb must be in 0.." + format_number(out.capacity_mb) + " (got " +
-                                  format_number(s.used_mb()) + ")");
+      error(at.at("used_mb"), "storage: used_mb must be in 0.." + format_number(out.capacity_mb) +
+                                  " (got " + format_number(s.used_mb()) + ")");
   }
 
   void electronics(const config::Spacecraft& f, const Locator& at, sc::SpacecraftSpec& spec) {
@@ -278,24 +297,36 @@ class SectionChecker {
       fault.value = x.value();
       fault.reset_cures = !x.has_reset_cures() || x.reset_cures();
       switch (x.kind()) {
-        case config::STUCK_ON: fault.kind = sc::FaultKind::StuckOn; break;
-        case config::FAILED: fault.kind = sc::FaultKind::Failed; break;
-        case config::FALSE_SENSOR: fault.kind = sc::FaultKind::FalseSensor; break;
-        case config::STUCK_CLOSED: fault.kind = sc::FaultKind::StuckClosed; break;
-        case config::NEVER_CONFIRMED: fault.kind = sc::FaultKind::NeverConfirmed; break;
+        case config::STUCK_ON:
+          fault.kind = sc::FaultKind::StuckOn;
+          break;
+        case config::FAILED:
+          fault.kind = sc::FaultKind::Failed;
+          break;
+        case config::FALSE_SENSOR:
+          fault.kind = sc::FaultKind::FalseSensor;
+          break;
+        case config::STUCK_CLOSED:
+          fault.kind = sc::FaultKind::StuckClosed;
+          break;
+        case config::NEVER_CONFIRMED:
+          fault.kind = sc::FaultKind::NeverConfirmed;
+          break;
         default:
           error(fl.self(), "fault '" + x.id() +
-                               "': kind is missing (STUCK_ON, FAILED, FALSE_SENSOR, STUCK_CLOSED, NEVER_CONFIRMED)");
+                               "': kind is missing (STUCK_ON, FAILED, FALSE_SENSOR, STUCK_CLOSED, "
+                               "NEVER_CONFIRMED)");
           continue;
       }
       if (x.trigger_case() == config::SpacecraftFault::kAtS) fault.at_s = x.at_s();
-      if (x.trigger_case() == config::SpacecraftFault::kOnCommand) fault.on_command = x.on_command();
+      if (x.trigger_case() == config::SpacecraftFault::kOnCommand)
+        fault.on_command = x.on_command();
       if (auto problem = probe.fault_problem(fault)) {
         const char* field = x.trigger_case() == config::SpacecraftFault::kOnCommand &&
                                     problem->find("on_command") != std::string::npos
                                 ? "on_command"
                             : problem->find("at_s") != std::string::npos ? "at_s"
-                                                                           : "subject";
+                                                                         : "subject";
         error(fl.at(field), *problem);
         continue;
       }
@@ -311,10 +342,9 @@ class SectionChecker {
 
 }  // namespace
 
-std::optional<spacecraft::SpacecraftSpec> check_spacecraft_section(const config::Spacecraft& file,
-                                                                   const Locator& at,
-                                                                   const std::string& source,
-                                                                   std::vector<ScenarioError>& errors) {
+std::optional<spacecraft::SpacecraftSpec> check_spacecraft_section(
+    const config::Spacecraft& file, const Locator& at, const std::string& source,
+    std::vector<ScenarioError>& errors) {
   return SectionChecker(source, errors).check(file, at);
 }
 

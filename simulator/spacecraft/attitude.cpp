@@ -19,7 +19,8 @@ Attitude::Attitude(const AttitudeSpec& spec, const std::vector<TargetSpec>& targ
     : spec_(spec), targets_(targets), mode_(spec.control_mode) {
   for (TargetSpec& t : targets_) t.direction.normalize();
   if (knows_target(spec.initial_target)) {
-    q_ = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), direction(spec.initial_target));
+    q_ = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(),
+                                            direction(spec.initial_target));
     pointing_ = spec.initial_target;
   }
 }
@@ -29,7 +30,9 @@ bool Attitude::knows_target(const std::string& target) const {
                      [&](const TargetSpec& t) { return t.name == target; });
 }
 
-bool Attitude::knows_mode(const std::string& mode) const { return mode_spec(mode) != nullptr; }
+bool Attitude::knows_mode(const std::string& mode) const {
+  return mode_spec(mode) != nullptr;
+}
 
 const ControlModeSpec* Attitude::mode_spec(const std::string& mode) const {
   for (const ControlModeSpec& m : spec_.modes)
@@ -50,7 +53,9 @@ bool Attitude::mode_usable(const std::string& mode, const std::set<std::string>&
                       [&](const std::string& a) { return stuck.count(a) > 0; });
 }
 
-double Attitude::remaining_deg() const { return turn_ ? turn_->remaining_rad * kDegPerRad : 0.0; }
+double Attitude::remaining_deg() const {
+  return turn_ ? turn_->remaining_rad * kDegPerRad : 0.0;
+}
 
 double Attitude::angle_to_deg(const std::string& target) const {
   return angle_between(boresight(), direction(target)) * kDegPerRad;
@@ -73,7 +78,8 @@ void Attitude::turn_to(const std::string& target) {
   Eigen::Vector3d axis = from.cross(to);
   if (axis.norm() < 1e-12) {
     // Opposite directions: any axis perpendicular to the boresight is a shortest rotation.
-    axis = from.cross(std::abs(from.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY());
+    axis =
+        from.cross(std::abs(from.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY());
   }
   turn_ = Turn{target, axis.normalized(), angle};
   pointing_.clear();

@@ -59,11 +59,16 @@ bool switchable(const std::string& device) {
 
 const char* to_string(FaultKind kind) {
   switch (kind) {
-    case FaultKind::StuckOn: return "stuck_on";
-    case FaultKind::Failed: return "failed";
-    case FaultKind::FalseSensor: return "false_sensor";
-    case FaultKind::StuckClosed: return "stuck_closed";
-    case FaultKind::NeverConfirmed: return "never_confirmed";
+    case FaultKind::StuckOn:
+      return "stuck_on";
+    case FaultKind::Failed:
+      return "failed";
+    case FaultKind::FalseSensor:
+      return "false_sensor";
+    case FaultKind::StuckClosed:
+      return "stuck_closed";
+    case FaultKind::NeverConfirmed:
+      return "never_confirmed";
   }
   return "?";
 }
@@ -87,8 +92,8 @@ Spacecraft::Spacecraft(SpacecraftSpec spec)
     throw std::invalid_argument("spacecraft: unknown initial target '" +
                                 spec_.attitude.initial_target + "'");
   if (!attitude_.knows_mode(spec_.attitude.control_mode))
-    throw std::invalid_argument("spacecraft: unknown control mode '" +
-                                spec_.attitude.control_mode + "'");
+    throw std::invalid_argument("spacecraft: unknown control mode '" + spec_.attitude.control_mode +
+                                "'");
   if (spec_.ion_engine.max_level < 1) throw std::invalid_argument("spacecraft: max_level < 1");
   if (spec_.camera.initial_mode != "off" && spec_.camera.initial_mode != "ready")
     throw std::invalid_argument("spacecraft: camera initial mode must be off or ready");
@@ -128,8 +133,8 @@ std::optional<std::string> Spacecraft::fault_problem(const FaultSpec& f) const {
       break;
     case FaultKind::Failed:
     case FaultKind::NeverConfirmed:
-      if (!device) return what + ": unknown device '" + f.subject + "' (devices: " +
-                          join(device_names_) + ")";
+      if (!device)
+        return what + ": unknown device '" + f.subject + "' (devices: " + join(device_names_) + ")";
       break;
     case FaultKind::StuckClosed:
       if (std::find(thrusters.begin(), thrusters.end(), f.subject) == thrusters.end())
@@ -181,8 +186,8 @@ bool Spacecraft::clear_fault(const std::string& id) {
       end_fault(i, "cleared");
       return true;
     }
-  const auto armed = std::find_if(armed_.begin(), armed_.end(),
-                                  [&](const FaultSpec& f) { return f.id == id; });
+  const auto armed =
+      std::find_if(armed_.begin(), armed_.end(), [&](const FaultSpec& f) { return f.id == id; });
   if (armed == armed_.end()) return false;
   armed_.erase(armed);
   return true;
@@ -198,7 +203,8 @@ void Spacecraft::end_fault(std::size_t index, const std::string& ended_by) {
   active_.erase(active_.begin() + static_cast<std::ptrdiff_t>(index));
 }
 
-const Spacecraft::ActiveFault* Spacecraft::active(FaultKind kind, const std::string& subject) const {
+const Spacecraft::ActiveFault* Spacecraft::active(FaultKind kind,
+                                                  const std::string& subject) const {
   for (const ActiveFault& a : active_)
     if (a.spec.kind == kind && a.spec.subject == subject) return &a;
   return nullptr;
@@ -255,8 +261,8 @@ std::optional<std::string> Spacecraft::check(const Command& c) const {
   if (arguments < 0)
     return c.device + " has no command '" + c.command + "' (commands: " + join(names) + ")";
   if (static_cast<int>(c.arguments.size()) != arguments)
-    return c.device + " " + c.command + " takes " + std::to_string(arguments) + " argument(s), got " +
-           std::to_string(c.arguments.size());
+    return c.device + " " + c.command + " takes " + std::to_string(arguments) +
+           " argument(s), got " + std::to_string(c.arguments.size());
   if (c.command == "reset") return std::nullopt;  // a failed unit must be able to take it
   if (active(FaultKind::Failed, c.device)) return c.device + " has failed (reset it)";
   for (const ElectronicsSpec& u : spec_.electronics)
@@ -352,8 +358,8 @@ void Spacecraft::execute(const Command& c) {
       camera_mode_ = "imaging";
       exposure_left_s_ = spec_.camera.exposure_s;
       image_target_ = arg;
-      image_on_target_ = !attitude_.turning() && attitude_.angle_to_deg(arg) <=
-                                                    spec_.attitude.pointing_tolerance_deg;
+      image_on_target_ = !attitude_.turning() &&
+                         attitude_.angle_to_deg(arg) <= spec_.attitude.pointing_tolerance_deg;
     }
   } else if (c.device == "power") {
     const bool close = c.command == "switch_on";
@@ -430,8 +436,8 @@ void Spacecraft::step(double dt_s) {
   }
 
   const double net_w = spec_.power.solar_array_w - load_w();
-  battery_wh_ = std::clamp(battery_wh_ + net_w * dt_s / 3600.0, 0.0,
-                           spec_.power.battery_capacity_wh);
+  battery_wh_ =
+      std::clamp(battery_wh_ + net_w * dt_s / 3600.0, 0.0, spec_.power.battery_capacity_wh);
 
   time_s_ += dt_s;
   ++steps_;
@@ -502,9 +508,8 @@ std::map<std::string, double> Spacecraft::true_readings() const {
     r[s.name + "_voltage_a"] = closed;
     r[s.name + "_voltage_b"] = closed;
   }
-  r["battery_soc"] = spec_.power.battery_capacity_wh > 0.0
-                         ? battery_wh_ / spec_.power.battery_capacity_wh
-                         : 0.0;
+  r["battery_soc"] =
+      spec_.power.battery_capacity_wh > 0.0 ? battery_wh_ / spec_.power.battery_capacity_wh : 0.0;
   r["solar_array_w"] = spec_.power.solar_array_w;
   r["load_w"] = load_w();
   r["ips_power_w"] = ips_power_w(thrust_level_);
@@ -546,8 +551,15 @@ msg::SpacecraftTelemetry Spacecraft::telemetry() const {
   }
 
   const Eigen::Quaterniond& q = attitude_.orientation();
-  t.attitude = {q.w(), q.x(), q.y(), q.z(), attitude_.pointing_target(), attitude_.turn_target(),
-                attitude_.control_mode(), attitude_.last_rate_deg_s(), attitude_.remaining_deg()};
+  t.attitude = {q.w(),
+                q.x(),
+                q.y(),
+                q.z(),
+                attitude_.pointing_target(),
+                attitude_.turn_target(),
+                attitude_.control_mode(),
+                attitude_.last_rate_deg_s(),
+                attitude_.remaining_deg()};
   t.propulsion = {static_cast<std::uint32_t>(thrust_level_), ips_power_w(thrust_level_),
                   thrust_time_s_};
   t.camera = {camera_power_w(), images_taken_, images_on_target_, last_image_target_};

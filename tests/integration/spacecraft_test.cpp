@@ -101,15 +101,17 @@ std::optional<double> reading(const msg::SpacecraftTelemetry& t, const std::stri
 }
 
 // The first telemetry sample (in tick order) that satisfies `pred`.
-std::optional<msg::SpacecraftTelemetry> first(const Recorder<msg::SpacecraftTelemetry>& r,
-                                              const std::function<bool(const msg::SpacecraftTelemetry&)>& pred) {
+std::optional<msg::SpacecraftTelemetry> first(
+    const Recorder<msg::SpacecraftTelemetry>& r,
+    const std::function<bool(const msg::SpacecraftTelemetry&)>& pred) {
   auto all = r.matching(pred);
   if (all.empty()) return std::nullopt;
-  return *std::min_element(all.begin(), all.end(), [](const auto& a, const auto& b) { return a.tick < b.tick; });
+  return *std::min_element(all.begin(), all.end(),
+                           [](const auto& a, const auto& b) { return a.tick < b.tick; });
 }
 
-std::optional<msg::SpacecraftCommandStatus> status_of(const Recorder<msg::SpacecraftCommandStatus>& r,
-                                                      const std::string& id) {
+std::optional<msg::SpacecraftCommandStatus> status_of(
+    const Recorder<msg::SpacecraftCommandStatus>& r, const std::string& id) {
   auto all = r.matching([&](const auto& s) { return s.command_id == id; });
   if (all.empty()) return std::nullopt;
   return all.front();
@@ -117,7 +119,8 @@ std::optional<msg::SpacecraftCommandStatus> status_of(const Recorder<msg::Spacec
 
 class SpacecraftTest : public ProcessTest {
  protected:
-  void start_ds1(int domain, const std::string& scenario = kDs1, std::vector<std::string> extra = {}) {
+  void start_ds1(int domain, const std::string& scenario = kDs1,
+                 std::vector<std::string> extra = {}) {
     join(domain);
     std::vector<std::string> args{"--config", scenario, "--wait-for", kName};
     args.insert(args.end(), extra.begin(), extra.end());
@@ -151,11 +154,14 @@ TEST_F(SpacecraftTest, LockstepCommandsAreConfirmedInTelemetry) {
 
   // Confirmed at the tick it was sent for, seen in the next tick's telemetry, turning.
   ASSERT_TRUE(run_until("turn-1 confirmed", driver, [&] {
-    return !!first(*telemetry_, [](const auto& t) { return device(t, "adcs")->confirmed_command_id == "turn-1"; });
+    return !!first(*telemetry_, [](const auto& t) {
+      return device(t, "adcs")->confirmed_command_id == "turn-1";
+    });
   }));
   const int64_t k0 = driver.sent_at("turn-1");
-  const auto confirmed =
-      *first(*telemetry_, [](const auto& t) { return device(t, "adcs")->confirmed_command_id == "turn-1"; });
+  const auto confirmed = *first(*telemetry_, [](const auto& t) {
+    return device(t, "adcs")->confirmed_command_id == "turn-1";
+  });
   EXPECT_EQ(confirmed.tick, k0 + 1);
   EXPECT_EQ(device(confirmed, "adcs")->confirmed_tick, k0);
   EXPECT_EQ(device(confirmed, "adcs")->mode, "turning");
@@ -166,19 +172,23 @@ TEST_F(SpacecraftTest, LockstepCommandsAreConfirmedInTelemetry) {
 
   // 36.87 deg at 0.2 deg/s: 185 one-second steps.
   ASSERT_TRUE(run_until("pointing at asteroid-1", driver, [&] {
-    return !!first(*telemetry_, [](const auto& t) { return t.attitude.pointing_target == "asteroid-1"; });
+    return !!first(*telemetry_,
+                   [](const auto& t) { return t.attitude.pointing_target == "asteroid-1"; });
   }));
-  const auto pointed = *first(*telemetry_, [](const auto& t) { return t.attitude.pointing_target == "asteroid-1"; });
+  const auto pointed =
+      *first(*telemetry_, [](const auto& t) { return t.attitude.pointing_target == "asteroid-1"; });
   EXPECT_EQ(pointed.tick - k0, 185);
   EXPECT_EQ(device(pointed, "adcs")->mode, "pointing");
   EXPECT_LT(*reading(pointed, "pointing_error_deg"), 1e-6);
 
   driver.send("img-1", "camera", "take_image", {"asteroid-1"});
-  ASSERT_TRUE(run_until("image on target", driver,
-                        [&] { return !!first(*telemetry_, [](const auto& t) { return t.camera.images_on_target == 1; }); }));
-  const auto imaged = *first(*telemetry_, [](const auto& t) { return t.camera.images_on_target == 1; });
+  ASSERT_TRUE(run_until("image on target", driver, [&] {
+    return !!first(*telemetry_, [](const auto& t) { return t.camera.images_on_target == 1; });
+  }));
+  const auto imaged =
+      *first(*telemetry_, [](const auto& t) { return t.camera.images_on_target == 1; });
   EXPECT_EQ(imaged.tick - driver.sent_at("img-1"), 20);  // the exposure
-  EXPECT_DOUBLE_EQ(imaged.storage.used_mb, 5.0);          // 4 MB at the start + 1
+  EXPECT_DOUBLE_EQ(imaged.storage.used_mb, 5.0);         // 4 MB at the start + 1
   EXPECT_EQ(device(imaged, "camera")->mode, "ready");
   EXPECT_EQ(imaged.commands_rejected, 0u);
 }
@@ -200,14 +210,18 @@ TEST_F(SpacecraftTest, BadCommandsAreRejectedWithTheirReasons) {
     EXPECT_TRUE(s && !s->accepted) << id;
     return s ? s->reason : "";
   };
-  EXPECT_EQ(reason("bad-device").rfind("unknown device 'warp_drive' (devices: adcs, camera, ips, lpe,", 0), 0u);
+  EXPECT_EQ(reason("bad-device")
+                .rfind("unknown device 'warp_drive' (devices: adcs, camera, ips, lpe,", 0),
+            0u);
   EXPECT_EQ(reason("bad-target"), "unknown target 'moon'");
   EXPECT_EQ(reason("bad-level"), "thrust level '99' is out of range 1..15");
   EXPECT_EQ(reason("bad-mode"), "no ground station in view (next: dss-14 at 21600 s)");
   ASSERT_TRUE(status_of(*status_, "good"));
   EXPECT_TRUE(status_of(*status_, "good")->accepted);
   ASSERT_TRUE(run_until("counts in telemetry", driver, [&] {
-    return !!first(*telemetry_, [](const auto& t) { return t.commands_rejected == 4 && t.commands_accepted == 1; });
+    return !!first(*telemetry_, [](const auto& t) {
+      return t.commands_rejected == 4 && t.commands_accepted == 1;
+    });
   }));
   const auto t = *first(*telemetry_, [](const auto& t) { return t.commands_rejected == 4; });
   EXPECT_EQ(device(t, "ips")->mode, "thrusting");
@@ -218,7 +232,8 @@ TEST_F(SpacecraftTest, InjectedFaultsShowInTelemetryAndTruth) {
   start_ds1(kDomainInjected);
   record();
   Recorder<msg::SpacecraftFaultState> truth(participant(), dds::topics::truth_spacecraft_fault);
-  dds::Topic<msg::SpacecraftFaultInjection> inject_topic(participant(), dds::topics::spacecraft_fault_injection);
+  dds::Topic<msg::SpacecraftFaultInjection> inject_topic(participant(),
+                                                         dds::topics::spacecraft_fault_injection);
   dds::Writer<msg::SpacecraftFaultInjection> inject(participant(), inject_topic);
   LockstepDriver driver(participant());
   ASSERT_TRUE(driver.join());
@@ -232,11 +247,12 @@ TEST_F(SpacecraftTest, InjectedFaultsShowInTelemetryAndTruth) {
   ASSERT_TRUE(run_until("faults in telemetry", driver, [&] {
     truth.poll();
     return !!first(*telemetry_, [](const auto& t) {
-      return device(t, "thruster_x")->mode == "stuck_closed" && device(t, "lpe")->mode == "failed" &&
-             reading(t, "camera_switch_status") == 0.0;
+      return device(t, "thruster_x")->mode == "stuck_closed" &&
+             device(t, "lpe")->mode == "failed" && reading(t, "camera_switch_status") == 0.0;
     });
   }));
-  const auto t = *first(*telemetry_, [](const auto& t) { return device(t, "lpe")->mode == "failed"; });
+  const auto t =
+      *first(*telemetry_, [](const auto& t) { return device(t, "lpe")->mode == "failed"; });
   EXPECT_EQ(reading(t, "camera_switch_voltage_a"), 1.0);  // the redundant readings stay true
   EXPECT_EQ(reading(t, "camera_switch_voltage_b"), 1.0);
   EXPECT_EQ(device(t, "camera")->mode, "ready");
@@ -244,23 +260,30 @@ TEST_F(SpacecraftTest, InjectedFaultsShowInTelemetryAndTruth) {
   ASSERT_TRUE(status_of(*status_, "boom"));
   EXPECT_FALSE(status_of(*status_, "boom")->accepted);
   EXPECT_EQ(status_of(*status_, "boom")->reason,
-            "unknown fault kind 'explode' (stuck_on, failed, false_sensor, stuck_closed, never_confirmed)");
+            "unknown fault kind 'explode' (stuck_on, failed, false_sensor, stuck_closed, "
+            "never_confirmed)");
 
   // The failed unit refuses what passes through it until a reset cures it.
   driver.send("cam-1", "camera", "off");
   driver.send("reset-1", "lpe", "reset");
   ASSERT_TRUE(run_until("lpe reset", driver, [&] {
     truth.poll();
-    return !!first(*telemetry_, [](const auto& t) { return device(t, "lpe")->confirmed_command_id == "reset-1"; });
+    return !!first(*telemetry_, [](const auto& t) {
+      return device(t, "lpe")->confirmed_command_id == "reset-1";
+    });
   }));
-  EXPECT_EQ(status_of(*status_, "cam-1")->reason, "commands to camera pass through lpe, which has failed");
-  const auto reset = *first(*telemetry_, [](const auto& t) { return device(t, "lpe")->confirmed_command_id == "reset-1"; });
+  EXPECT_EQ(status_of(*status_, "cam-1")->reason,
+            "commands to camera pass through lpe, which has failed");
+  const auto reset = *first(*telemetry_, [](const auto& t) {
+    return device(t, "lpe")->confirmed_command_id == "reset-1";
+  });
   EXPECT_EQ(device(reset, "lpe")->mode, "ok");
   ASSERT_TRUE(await("fault truth", [&] {
     truth.poll();
     return !truth.matching([](const auto& f) { return f.fault_id == "lpe" && !f.active; }).empty();
   }));
-  const auto ended = truth.matching([](const auto& f) { return f.fault_id == "lpe" && !f.active; }).front();
+  const auto ended =
+      truth.matching([](const auto& f) { return f.fault_id == "lpe" && !f.active; }).front();
   EXPECT_EQ(ended.ended_by, "reset");
   const auto tx = truth.matching([](const auto& f) { return f.fault_id == "tx"; });
   ASSERT_FALSE(tx.empty());
@@ -273,7 +296,8 @@ TEST_F(SpacecraftTest, ScenarioFaultOnACommandInPacedTime) {
   // ds1 with its ion-engine fault switched on, run paced at 50x by a sender outside lockstep.
   std::string text = read_file(kDs1);
   const std::string fault = "# faults { id: \"ips-unconfirmed\"";
-  const std::string clock = "simulation { mode: LOCKSTEP step_s: 1.0 seed: 1999 ack_timeout_s: 5.0 }";
+  const std::string clock =
+      "simulation { mode: LOCKSTEP step_s: 1.0 seed: 1999 ack_timeout_s: 5.0 }";
   ASSERT_NE(text.find(fault), std::string::npos);
   ASSERT_NE(text.find(clock), std::string::npos);
   text.replace(text.find(fault), 2, "");
@@ -299,7 +323,8 @@ TEST_F(SpacecraftTest, ScenarioFaultOnACommandInPacedTime) {
     telemetry_->poll();
     return !!first(*telemetry_, [&](const auto& t) { return t.tick >= accepted.tick + 20; });
   }));
-  const auto later = *first(*telemetry_, [&](const auto& t) { return t.tick >= accepted.tick + 20; });
+  const auto later =
+      *first(*telemetry_, [&](const auto& t) { return t.tick >= accepted.tick + 20; });
   EXPECT_EQ(device(later, "ips")->mode, "standby");
   EXPECT_EQ(device(later, "ips")->confirmed_tick, -1);
   EXPECT_EQ(device(later, "camera")->confirmed_command_id, "cam-1");
@@ -327,7 +352,9 @@ TEST_F(SpacecraftTest, BadSpacecraftSectionStopsTheSimulatorWithItsPosition) {
   ASSERT_TRUE(sim.status()->exited);
   EXPECT_NE(sim.status()->code, 0);
   const std::string out = read_file(sim.log_file());
-  EXPECT_NE(out.find(file + ":25:5: attitude: initial_target 'pluto' is not a target"), std::string::npos) << out;
+  EXPECT_NE(out.find(file + ":25:5: attitude: initial_target 'pluto' is not a target"),
+            std::string::npos)
+      << out;
 }
 
 }  // namespace

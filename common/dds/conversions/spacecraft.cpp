@@ -12,11 +12,12 @@ void DdsType<msg::SpacecraftCommand>::to_c(const msg::SpacecraftCommand& v, C& o
 }
 
 msg::SpacecraftCommand DdsType<msg::SpacecraftCommand>::from_c(const C& in) {
-  return {from_c_str(in.command_id), from_c_str(in.source), in.tick,
+  return {from_c_str(in.command_id), from_c_str(in.source),  in.tick,
           from_c_str(in.device),     from_c_str(in.command), from_c_strings(in.arguments)};
 }
 
-void DdsType<msg::SpacecraftCommandStatus>::to_c(const msg::SpacecraftCommandStatus& v, C& out, Arena&) {
+void DdsType<msg::SpacecraftCommandStatus>::to_c(const msg::SpacecraftCommandStatus& v, C& out,
+                                                 Arena&) {
   out.command_id = c_str(v.command_id);
   out.source = c_str(v.source);
   out.device = c_str(v.device);
@@ -28,12 +29,18 @@ void DdsType<msg::SpacecraftCommandStatus>::to_c(const msg::SpacecraftCommandSta
 }
 
 msg::SpacecraftCommandStatus DdsType<msg::SpacecraftCommandStatus>::from_c(const C& in) {
-  return {from_c_str(in.command_id), from_c_str(in.source), from_c_str(in.device),
-          from_c_str(in.command),    in.accepted,            from_c_str(in.reason),
-          in.tick,                   in.sim_time_ns};
+  return {from_c_str(in.command_id),
+          from_c_str(in.source),
+          from_c_str(in.device),
+          from_c_str(in.command),
+          in.accepted,
+          from_c_str(in.reason),
+          in.tick,
+          in.sim_time_ns};
 }
 
-void DdsType<msg::SpacecraftTelemetry>::to_c(const msg::SpacecraftTelemetry& v, C& out, Arena& arena) {
+void DdsType<msg::SpacecraftTelemetry>::to_c(const msg::SpacecraftTelemetry& v, C& out,
+                                             Arena& arena) {
   out.spacecraft = c_str(v.spacecraft);
   out.tick = v.tick;
   out.sim_time_ns = v.sim_time_ns;
@@ -47,16 +54,25 @@ void DdsType<msg::SpacecraftTelemetry>::to_c(const msg::SpacecraftTelemetry& v, 
   out.devices = {nd, nd, devices, false};
   const uint32_t nr = static_cast<uint32_t>(v.readings.size());
   auto* readings = arena.allocate<autonomy_SensorReading>(nr);
-  for (uint32_t i = 0; i < nr; ++i) readings[i] = {c_str(v.readings[i].sensor), v.readings[i].value};
+  for (uint32_t i = 0; i < nr; ++i)
+    readings[i] = {c_str(v.readings[i].sensor), v.readings[i].value};
   out.readings = {nr, nr, readings, false};
   const msg::AttitudeTelemetry& a = v.attitude;
-  out.attitude = {a.qw, a.qx, a.qy, a.qz, c_str(a.pointing_target), c_str(a.turn_target),
-                  c_str(a.control_mode), a.rate_deg_s, a.remaining_deg};
+  out.attitude = {a.qw,
+                  a.qx,
+                  a.qy,
+                  a.qz,
+                  c_str(a.pointing_target),
+                  c_str(a.turn_target),
+                  c_str(a.control_mode),
+                  a.rate_deg_s,
+                  a.remaining_deg};
   out.propulsion = {v.propulsion.thrust_level, v.propulsion.power_w, v.propulsion.thrust_time_s};
   out.camera = {v.camera.power_w, v.camera.images_taken, v.camera.images_on_target,
                 c_str(v.camera.last_image_target)};
   out.power = {v.power.solar_array_w, v.power.load_w, v.power.battery_soc, v.power.battery_wh};
-  out.telecom = {c_str(v.telecom.ground_station), v.telecom.downlink_rate_kbps, v.telecom.downlinked_mb};
+  out.telecom = {c_str(v.telecom.ground_station), v.telecom.downlink_rate_kbps,
+                 v.telecom.downlinked_mb};
   out.storage = {v.storage.used_mb, v.storage.capacity_mb};
   out.commands_accepted = v.commands_accepted;
   out.commands_rejected = v.commands_rejected;
@@ -77,8 +93,15 @@ msg::SpacecraftTelemetry DdsType<msg::SpacecraftTelemetry>::from_c(const C& in) 
   for (uint32_t i = 0; i < in.readings._length; ++i)
     v.readings.push_back({from_c_str(in.readings._buffer[i].sensor), in.readings._buffer[i].value});
   const auto& a = in.attitude;
-  v.attitude = {a.qw, a.qx, a.qy, a.qz, from_c_str(a.pointing_target), from_c_str(a.turn_target),
-                from_c_str(a.control_mode), a.rate_deg_s, a.remaining_deg};
+  v.attitude = {a.qw,
+                a.qx,
+                a.qy,
+                a.qz,
+                from_c_str(a.pointing_target),
+                from_c_str(a.turn_target),
+                from_c_str(a.control_mode),
+                a.rate_deg_s,
+                a.remaining_deg};
   v.propulsion = {in.propulsion.thrust_level, in.propulsion.power_w, in.propulsion.thrust_time_s};
   v.camera = {in.camera.power_w, in.camera.images_taken, in.camera.images_on_target,
               from_c_str(in.camera.last_image_target)};
@@ -91,7 +114,8 @@ msg::SpacecraftTelemetry DdsType<msg::SpacecraftTelemetry>::from_c(const C& in) 
   return v;
 }
 
-void DdsType<msg::SpacecraftFaultInjection>::to_c(const msg::SpacecraftFaultInjection& v, C& out, Arena&) {
+void DdsType<msg::SpacecraftFaultInjection>::to_c(const msg::SpacecraftFaultInjection& v, C& out,
+                                                  Arena&) {
   out.fault_id = c_str(v.fault_id);
   out.source = c_str(v.source);
   out.kind = c_str(v.kind);
@@ -102,8 +126,12 @@ void DdsType<msg::SpacecraftFaultInjection>::to_c(const msg::SpacecraftFaultInje
 }
 
 msg::SpacecraftFaultInjection DdsType<msg::SpacecraftFaultInjection>::from_c(const C& in) {
-  return {from_c_str(in.fault_id), from_c_str(in.source), from_c_str(in.kind),
-          from_c_str(in.subject),  in.value,               in.reset_cures,
+  return {from_c_str(in.fault_id),
+          from_c_str(in.source),
+          from_c_str(in.kind),
+          from_c_str(in.subject),
+          in.value,
+          in.reset_cures,
           in.clear};
 }
 
@@ -119,9 +147,14 @@ void DdsType<msg::SpacecraftFaultState>::to_c(const msg::SpacecraftFaultState& v
 }
 
 msg::SpacecraftFaultState DdsType<msg::SpacecraftFaultState>::from_c(const C& in) {
-  return {from_c_str(in.fault_id), from_c_str(in.kind),     from_c_str(in.subject),
-          in.value,                in.active,               from_c_str(in.trigger),
-          from_c_str(in.ended_by), in.since_ns};
+  return {from_c_str(in.fault_id),
+          from_c_str(in.kind),
+          from_c_str(in.subject),
+          in.value,
+          in.active,
+          from_c_str(in.trigger),
+          from_c_str(in.ended_by),
+          in.since_ns};
 }
 
 }  // namespace autonomy::dds

@@ -51,14 +51,16 @@ TEST(SpacecraftSection, MinimalSectionNeedsNoWorldAndTakesTheDefaults) {
 }
 
 TEST(SpacecraftSection, FaultsWithTimesAndEventsAreRead) {
-  const ScenarioLoadResult r = load_scenario_text(section(kMinimal + R"(  electronics { name: "lpe" devices: "camera" }
+  const ScenarioLoadResult r =
+      load_scenario_text(section(kMinimal + R"(  electronics { name: "lpe" devices: "camera" }
   power { switches { name: "cam_sw" device: "camera" } }
   faults { id: "a" kind: STUCK_ON subject: "camera" on_command: "camera take_image" }
   faults { id: "b" kind: FAILED subject: "lpe" at_s: 7200 reset_cures: false }
   faults { id: "c" kind: FALSE_SENSOR subject: "cam_sw_status" value: 0 at_s: 10 }
   faults { id: "d" kind: STUCK_CLOSED subject: "tx" }
   faults { id: "e" kind: NEVER_CONFIRMED subject: "ips" on_command: "ips thrust" }
-)"), "s.pbtxt");
+)"),
+                         "s.pbtxt");
   ASSERT_TRUE(r.ok()) << r.error_text();
   const auto& f = r.scenario->spacecraft->faults;
   ASSERT_EQ(f.size(), 5u);
@@ -81,28 +83,34 @@ TEST(SpacecraftSection, ErrorsNameTheirLineAndColumn) {
   }
 )")),
             (Errors{"s.pbtxt:5:5: attitude: initial_target 'moon' is not a target",
-                    "s.pbtxt:7:31: control mode 'thrusters': actuator 'ty' is not one of attitude.thrusters"}));
-  EXPECT_EQ(errors_of(section(kMinimal + R"(  ion_engine { max_level: 0 }
+                    "s.pbtxt:7:31: control mode 'thrusters': actuator 'ty' is not one of "
+                    "attitude.thrusters"}));
+  EXPECT_EQ(
+      errors_of(section(kMinimal + R"(  ion_engine { max_level: 0 }
   camera { initial_mode: "imaging" exposure_s: -1 }
   telecom {
     windows { station: "dss-14" start_s: 100 end_s: 200 rate_kbps: 10 }
     windows { station: "dss-43" start_s: 150 end_s: 120 rate_kbps: 0 }
   }
 )")),
-            (Errors{"s.pbtxt:11:16: ion_engine: max_level must be in 1..1000 (got 0)",
-                    "s.pbtxt:12:12: camera: initial_mode must be \"off\" or \"ready\" (got \"imaging\")",
-                    "s.pbtxt:12:36: camera: exposure_s must be positive (got -1.0)",
-                    "s.pbtxt:15:33: window 1 (dss-43): starts at 150.0 s, before the previous window ends (200.0 s)",
-                    "s.pbtxt:15:46: window 1 (dss-43): end_s must be after start_s (got 120.0)",
-                    "s.pbtxt:15:57: window 1 (dss-43): rate_kbps must be positive (got 0.0)"}));
-  EXPECT_EQ(errors_of(section(kMinimal + R"(  faults { id: "x" kind: STUCK_CLOSED subject: "camera" at_s: 5 }
+      (Errors{"s.pbtxt:11:16: ion_engine: max_level must be in 1..1000 (got 0)",
+              "s.pbtxt:12:12: camera: initial_mode must be \"off\" or \"ready\" (got \"imaging\")",
+              "s.pbtxt:12:36: camera: exposure_s must be positive (got -1.0)",
+              "s.pbtxt:15:33: window 1 (dss-43): starts at 150.0 s, before the previous window "
+              "ends (200.0 s)",
+              "s.pbtxt:15:46: window 1 (dss-43): end_s must be after start_s (got 120.0)",
+              "s.pbtxt:15:57: window 1 (dss-43): rate_kbps must be positive (got 0.0)"}));
+  EXPECT_EQ(
+      errors_of(
+          section(kMinimal + R"(  faults { id: "x" kind: STUCK_CLOSED subject: "camera" at_s: 5 }
   faults { id: "y" subject: "ips" }
   faults { id: "z" kind: FAILED subject: "ips" on_command: "warp engage" }
 )")),
-            (Errors{"s.pbtxt:11:39: stuck_closed fault 'x': 'camera' is not a thruster (thrusters: tx)",
-                    "s.pbtxt:12:3: fault 'y': kind is missing (STUCK_ON, FAILED, FALSE_SENSOR, STUCK_CLOSED, "
-                    "NEVER_CONFIRMED)",
-                    "s.pbtxt:13:48: failed fault 'z': on_command names unknown device 'warp'"}));
+      (Errors{
+          "s.pbtxt:11:39: stuck_closed fault 'x': 'camera' is not a thruster (thrusters: tx)",
+          "s.pbtxt:12:3: fault 'y': kind is missing (STUCK_ON, FAILED, FALSE_SENSOR, STUCK_CLOSED, "
+          "NEVER_CONFIRMED)",
+          "s.pbtxt:13:48: failed fault 'z': on_command names unknown device 'warp'"}));
   EXPECT_EQ(errors_of("spacecraft { name: \"x\" }\n"),
             (Errors{"s.pbtxt:1:1: spacecraft: at least one target is needed",
                     "s.pbtxt:1:1: spacecraft: attitude is missing"}));

@@ -61,9 +61,9 @@ TEST(SpacecraftTest, StartsPointedAtItsInitialTargetWithEveryDevice) {
   Spacecraft sc(test_spec());
   EXPECT_EQ(sc.attitude().pointing_target(), "star");
   EXPECT_NEAR(sc.attitude().pointing_error_deg(), 0.0, 1e-9);
-  EXPECT_EQ(sc.devices(), (std::vector<std::string>{"adcs", "camera", "ips", "lpe", "power",
-                                                    "storage", "telecom", "thruster_x",
-                                                    "thruster_y", "thruster_z"}));
+  EXPECT_EQ(sc.devices(),
+            (std::vector<std::string>{"adcs", "camera", "ips", "lpe", "power", "storage", "telecom",
+                                      "thruster_x", "thruster_y", "thruster_z"}));
   EXPECT_EQ(sc.mode("camera"), "ready");
   EXPECT_EQ(sc.mode("ips"), "standby");
   EXPECT_EQ(sc.mode("adcs"), "pointing");
@@ -96,7 +96,9 @@ TEST(SpacecraftTest, CommandsAreRejectedWithTheirReasonsAndCounted) {
     EXPECT_FALSE(r.accepted) << c.device << " " << c.command;
     return r.reason;
   };
-  EXPECT_EQ(reason(cmd("warp_drive", "engage")).rfind("unknown device 'warp_drive' (devices: adcs,", 0), 0u);
+  EXPECT_EQ(
+      reason(cmd("warp_drive", "engage")).rfind("unknown device 'warp_drive' (devices: adcs,", 0),
+      0u);
   EXPECT_EQ(reason(cmd("camera", "fly")),
             "camera has no command 'fly' (commands: reset, power_on, off, take_image)");
   EXPECT_EQ(reason(cmd("camera", "take_image")), "camera take_image takes 1 argument(s), got 0");
@@ -109,7 +111,8 @@ TEST(SpacecraftTest, CommandsAreRejectedWithTheirReasonsAndCounted) {
   EXPECT_EQ(reason(cmd("camera", "take_image", {"star"})), "camera is off, not ready");
   ASSERT_TRUE(sc.submit(cmd("adcs", "turn", {"asteroid"})).accepted);
   EXPECT_EQ(reason(cmd("adcs", "turn", {"star"})), "adcs is turning to asteroid (90 deg left)");
-  EXPECT_EQ(reason(cmd("telecom", "downlink")), "no ground station in view (next: goldstone at 100 s)");
+  EXPECT_EQ(reason(cmd("telecom", "downlink")),
+            "no ground station in view (next: goldstone at 100 s)");
   EXPECT_EQ(sc.commands_rejected(), 10u);
   EXPECT_EQ(sc.commands_accepted(), 2u);
   const msg::SpacecraftTelemetry t = sc.telemetry();
@@ -186,7 +189,8 @@ TEST(SpacecraftTest, PowerBalanceChargesAndDrainsTheBattery) {
   EXPECT_EQ(sc.mode("power"), "deficit");
   // Without the battery only the array's 2000 - 310 W are left for the engine.
   ASSERT_TRUE(sc.submit(cmd("ips", "standby")).accepted);
-  EXPECT_EQ(sc.submit(cmd("ips", "thrust", {"9"})).reason, "thrust level 9 needs 2100 W, 1690 W available");
+  EXPECT_EQ(sc.submit(cmd("ips", "thrust", {"9"})).reason,
+            "thrust level 9 needs 2100 W, 1690 W available");
   EXPECT_FALSE(sc.submit(cmd("ips", "thrust", {"7"})).accepted);  // 1700 W
   EXPECT_TRUE(sc.submit(cmd("ips", "thrust", {"6"})).accepted);   // 1500 W
 }
@@ -195,7 +199,8 @@ TEST(SpacecraftTest, OpenBusSwitchUnpowersItsDevice) {
   Spacecraft sc(test_spec());
   ASSERT_TRUE(sc.submit(cmd("power", "switch_off", {"camera_switch"})).accepted);
   EXPECT_EQ(sc.mode("camera"), "off");
-  EXPECT_EQ(sc.submit(cmd("camera", "power_on")).reason, "camera is unpowered (its bus switch is open)");
+  EXPECT_EQ(sc.submit(cmd("camera", "power_on")).reason,
+            "camera is unpowered (its bus switch is open)");
   EXPECT_EQ(*sc.reading("camera_switch_status"), 0.0);
   EXPECT_EQ(*sc.reading("camera_switch_voltage_a"), 0.0);
   EXPECT_EQ(sc.submit(cmd("power", "switch_on", {"heater"})).reason,
@@ -209,7 +214,8 @@ TEST(SpacecraftTest, OpenBusSwitchUnpowersItsDevice) {
 
 TEST(SpacecraftFaultTest, CameraStuckOnStaysImagingAfterItsPicture) {
   SpacecraftSpec spec = test_spec();
-  spec.faults = {{"micas", FaultKind::StuckOn, "camera", 0, true, std::nullopt, "camera take_image"}};
+  spec.faults = {
+      {"micas", FaultKind::StuckOn, "camera", 0, true, std::nullopt, "camera take_image"}};
   Spacecraft sc(spec);
   run(sc, 2);
   EXPECT_TRUE(sc.take_fault_events().empty());  // armed, waiting for the command
@@ -254,7 +260,8 @@ TEST(SpacecraftFaultTest, FailedElectronicsUnitIsCuredByAReset) {
 
 TEST(SpacecraftFaultTest, AFailureNoResetCuresStaysAndRejectsCommands) {
   Spacecraft sc(test_spec());
-  ASSERT_TRUE(sc.inject({"cam-dead", FaultKind::Failed, "camera", 0, false, std::nullopt, ""}).accepted);
+  ASSERT_TRUE(
+      sc.inject({"cam-dead", FaultKind::Failed, "camera", 0, false, std::nullopt, ""}).accepted);
   EXPECT_EQ(sc.mode("camera"), "failed");
   EXPECT_EQ(sc.submit(cmd("camera", "off")).reason, "camera has failed (reset it)");
   EXPECT_TRUE(sc.submit(cmd("camera", "reset")).accepted);
@@ -266,20 +273,23 @@ TEST(SpacecraftFaultTest, AFailureNoResetCuresStaysAndRejectsCommands) {
 
 TEST(SpacecraftFaultTest, FalseSensorReadsWrongWhileTheRedundantReadingsStayTrue) {
   Spacecraft sc(test_spec());
-  ASSERT_TRUE(sc.inject({"pwr", FaultKind::FalseSensor, "camera_switch_status", 0.0, true, std::nullopt, ""}).accepted);
+  ASSERT_TRUE(sc.inject({"pwr", FaultKind::FalseSensor, "camera_switch_status", 0.0, true,
+                         std::nullopt, ""})
+                  .accepted);
   run(sc, 3);
   const msg::SpacecraftTelemetry t = sc.telemetry();
-  EXPECT_EQ(reading(t, "camera_switch_status"), 0.0);  // says open
+  EXPECT_EQ(reading(t, "camera_switch_status"), 0.0);     // says open
   EXPECT_EQ(reading(t, "camera_switch_voltage_a"), 1.0);  // the bus behind it is live
   EXPECT_EQ(reading(t, "camera_switch_voltage_b"), 1.0);
-  EXPECT_EQ(report(t, "camera").mode, "ready");           // and the camera works
+  EXPECT_EQ(report(t, "camera").mode, "ready");  // and the camera works
   EXPECT_TRUE(sc.submit(cmd("camera", "take_image", {"star"})).accepted);
   EXPECT_DOUBLE_EQ(reading(t, "camera_power_w"), 10.0);
 }
 
 TEST(SpacecraftFaultTest, ThrusterStuckClosedStopsTurnsUntilAModeWithoutIt) {
   Spacecraft sc(test_spec());
-  ASSERT_TRUE(sc.inject({"tx", FaultKind::StuckClosed, "thruster_x", 0, true, std::nullopt, ""}).accepted);
+  ASSERT_TRUE(
+      sc.inject({"tx", FaultKind::StuckClosed, "thruster_x", 0, true, std::nullopt, ""}).accepted);
   EXPECT_EQ(sc.mode("thruster_x"), "stuck_closed");
   ASSERT_TRUE(sc.submit(cmd("adcs", "turn", {"asteroid"})).accepted);
   run(sc, 100);
@@ -295,7 +305,8 @@ TEST(SpacecraftFaultTest, ThrusterStuckClosedStopsTurnsUntilAModeWithoutIt) {
 
 TEST(SpacecraftFaultTest, IonEngineCommandsAreAcceptedButNeverConfirmed) {
   SpacecraftSpec spec = test_spec();
-  spec.faults = {{"ips-silent", FaultKind::NeverConfirmed, "ips", 0, true, std::nullopt, "ips thrust"}};
+  spec.faults = {
+      {"ips-silent", FaultKind::NeverConfirmed, "ips", 0, true, std::nullopt, "ips thrust"}};
   Spacecraft sc(spec);
   EXPECT_TRUE(sc.submit(cmd("ips", "thrust", {"3"}, "t1")).accepted);
   run(sc, 10);
@@ -323,15 +334,17 @@ TEST(SpacecraftFaultTest, FaultsThatDoNotFitTheSpacecraftAreRejected) {
   EXPECT_EQ(reason({"a", FaultKind::StuckOn, "adcs", 0, true, std::nullopt, ""}),
             "stuck_on fault 'a': subject must be camera or ips, not 'adcs'");
   EXPECT_EQ(reason({"b", FaultKind::StuckClosed, "camera", 0, true, std::nullopt, ""}),
-            "stuck_closed fault 'b': 'camera' is not a thruster (thrusters: thruster_x, thruster_y, thruster_z)");
+            "stuck_closed fault 'b': 'camera' is not a thruster (thrusters: thruster_x, "
+            "thruster_y, thruster_z)");
   EXPECT_EQ(reason({"c", FaultKind::FalseSensor, "moon_sensor", 0, true, std::nullopt, ""}),
             "false_sensor fault 'c': unknown reading 'moon_sensor'");
-  EXPECT_EQ(reason({"d", FaultKind::Failed, "warp", 0, true, std::nullopt, ""}).rfind(
-                "failed fault 'd': unknown device 'warp'", 0),
+  EXPECT_EQ(reason({"d", FaultKind::Failed, "warp", 0, true, std::nullopt, ""})
+                .rfind("failed fault 'd': unknown device 'warp'", 0),
             0u);
   EXPECT_EQ(reason({"", FaultKind::Failed, "lpe", 0, true, std::nullopt, ""}), "fault id is empty");
   ASSERT_TRUE(sc.inject({"e", FaultKind::Failed, "lpe", 0, true, std::nullopt, ""}).accepted);
-  EXPECT_EQ(reason({"e", FaultKind::Failed, "ips", 0, true, std::nullopt, ""}), "fault id 'e' is already in use");
+  EXPECT_EQ(reason({"e", FaultKind::Failed, "ips", 0, true, std::nullopt, ""}),
+            "fault id 'e' is already in use");
   SpacecraftSpec bad = test_spec();
   bad.faults = {{"f", FaultKind::StuckClosed, "thruster_q", 0, true, 1.0, ""}};
   EXPECT_THROW(Spacecraft{bad}, std::invalid_argument);
