@@ -12,6 +12,7 @@
 #include "common/msg/radio.hpp"
 #include "common/msg/truth.hpp"
 #include "common/msg/system.hpp"
+#include "common/msg/spacecraft.hpp"
 #include "idl/clock.h"
 #include "idl/courier.h"
 #include "idl/navigation.h"
@@ -22,6 +23,7 @@
 #include "idl/radio.h"
 #include "idl/truth.h"
 #include "idl/system.h"
+#include "idl/spacecraft.h"
 
 #define AUTONOMY_DDS_TYPE(VALUE, CTYPE)                                                  \
   template <>                                                                            \
@@ -85,6 +87,12 @@ AUTONOMY_DDS_TYPE(msg::CourierReply, autonomy_CourierReply)
 AUTONOMY_DDS_TYPE(msg::CourierJobStatus, autonomy_CourierJobStatus)
 AUTONOMY_DDS_TYPE(msg::CourierSchedule, autonomy_CourierSchedule)
 AUTONOMY_DDS_TYPE(msg::CourierReport, autonomy_CourierReport)
+// The spacecraft (idl/spacecraft.idl).
+AUTONOMY_DDS_TYPE(msg::SpacecraftCommand, autonomy_SpacecraftCommand)
+AUTONOMY_DDS_TYPE(msg::SpacecraftCommandStatus, autonomy_SpacecraftCommandStatus)
+AUTONOMY_DDS_TYPE(msg::SpacecraftTelemetry, autonomy_SpacecraftTelemetry)
+AUTONOMY_DDS_TYPE(msg::SpacecraftFaultInjection, autonomy_SpacecraftFaultInjection)
+AUTONOMY_DDS_TYPE(msg::SpacecraftFaultState, autonomy_SpacecraftFaultState)
 
 }  // namespace autonomy::dds
 

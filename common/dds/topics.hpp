@@ -52,6 +52,17 @@ inline constexpr TopicSpec<msg::CourierJobStatus> courier_job_status{"autonomy/c
                                                                      QosClass::State};
 inline constexpr TopicSpec<msg::CourierSchedule> courier_schedule{"autonomy/courier/schedule", QosClass::State};
 inline constexpr TopicSpec<msg::CourierReport> courier_report{"autonomy/courier/report", QosClass::Event};
+// The spacecraft (docs/spacecraft.md): device commands and their status, telemetry, faults.
+inline constexpr TopicSpec<msg::SpacecraftCommand> spacecraft_command{"autonomy/spacecraft/command",
+                                                                      QosClass::Command};
+inline constexpr TopicSpec<msg::SpacecraftCommandStatus> spacecraft_command_status{
+    "autonomy/spacecraft/command_status", QosClass::Reply};
+inline constexpr TopicSpec<msg::SpacecraftTelemetry> spacecraft_telemetry{"autonomy/spacecraft/telemetry",
+                                                                          QosClass::State};
+inline constexpr TopicSpec<msg::SpacecraftFaultInjection> spacecraft_fault_injection{
+    "autonomy/spacecraft/fault_injection", QosClass::Command};
+inline constexpr TopicSpec<msg::SpacecraftFaultState> truth_spacecraft_fault{"autonomy/truth/spacecraft_fault",
+                                                                             QosClass::State};
 
 // Calls visit(spec) for every topic of the catalogue: tools use it to find a topic's type by name.
 template <typename Visitor>
@@ -88,6 +99,11 @@ void for_each_topic(Visitor&& visit) {
   visit(courier_job_status);
   visit(courier_schedule);
   visit(courier_report);
+  visit(spacecraft_command);
+  visit(spacecraft_command_status);
+  visit(spacecraft_telemetry);
+  visit(spacecraft_fault_injection);
+  visit(truth_spacecraft_fault);
 }
 
 }  // namespace autonomy::dds::topics

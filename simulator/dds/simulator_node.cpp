@@ -5,6 +5,7 @@
 #include "simulator/dds/map_message.hpp"
 
 #include "simulator/dds/radio_setup.hpp"
+#include "simulator/dds/spacecraft_area.hpp"
 #include "simulator/report/run_svg.hpp"
 
 #include <spdlog/spdlog.h>
@@ -193,6 +194,11 @@ SimulatorNode::SimulatorNode(service::Service& service, Scenario scenario, Simul
                                         [this](auto s) { on_handover_requests(std::move(s)); });
   loop.every(kHousekeepingPeriod, [this] { on_timer(); });
   loop.every(kStatusPeriod, [this] { publish_status(); });
+  if (scenario_.spacecraft)
+    spacecraft_ = std::make_unique<SpacecraftArea>(
+        service.participant(), loop, *scenario_.spacecraft,
+        [this](const std::string& source, int64_t tick) { return lockstep() && barrier_.on_command(source, tick); },
+        [this] { advance_while_complete(); });
 
   open_tick();
   spdlog::info("world '{}' {}x{} m, {} obstacles, {} polygons, {} doors, {} robots, {} mode, step {} s", spec.name,
@@ -210,6 +216,9 @@ SimulatorNode::~SimulatorNode() {
     write_metrics();
     spdlog::info("stopped at tick {}: {} commands applied, {} rejected, {} participants dropped", tick_,
                  commands_applied_, commands_rejected_, participants_dropped_);
+    if (spacecraft_)
+      spdlog::info("spacecraft commands: {} accepted, {} rejected", spacecraft_->commands_accepted(),
+                   spacecraft_->commands_rejected());
     spdlog::info("team messages: {} delivered, dropped {} without route, {} lost, {} invalid", messages_delivered_,
                  messages_no_route_, messages_lost_, messages_invalid_);
   } catch (const std::exception& e) {
@@ -335,6 +344,7 @@ void SimulatorNode::advance() {
   }
   commands_by_tick_.erase(commands_by_tick_.begin(), commands_by_tick_.upper_bound(tick_));
   apply_commands(commands);
+  if (spacecraft_) spacecraft_->step(tick_, options_.settings.step_s);
   world_.step(options_.settings.step_s);
   barrier_.end_tick(tick_);
   ++tick_;
@@ -419,6 +429,7 @@ void SimulatorNode::open_tick() {
   update_office(robots);
   if (tick_ > 0) record_metrics(robots);
   const double now_s = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  if (spacecraft_) spacecraft_->publish(tick_, now_ns);
   barrier_.begin_tick(tick_, now_s);
   clock_writer_.write({tick_, now_ns, to_ns(options_.settings.step_s),
                        lockstep() ? msg::ClockMode::Lockstep : msg::ClockMode::Paced, options_.settings.warp});

@@ -34,6 +34,7 @@
 #include <cstdint>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <optional>
 #include <random>
 #include <utility>
@@ -41,6 +42,8 @@
 #include <vector>
 
 namespace autonomy::sim {
+
+class SpacecraftArea;  // simulator/dds/spacecraft_area.hpp
 
 struct SimulatorRunOptions {
   SimulationSettings settings;
@@ -194,6 +197,9 @@ class SimulatorNode {
   dds::Writer<msg::HandoverStatus> handover_status_writer_;
   dds::Writer<msg::ObjectState> object_truth_writer_;
   dds::Reader<msg::HandoverRequest> handover_request_reader_;
+
+  // The spacecraft, when the scenario has one (its topics, commands and telemetry).
+  std::unique_ptr<SpacecraftArea> spacecraft_;
 };
 
 }  // namespace autonomy::sim

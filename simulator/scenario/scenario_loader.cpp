@@ -7,6 +7,7 @@
 #include "simulator/core/shapes.hpp"
 #include "simulator/office/office_spec.hpp"
 #include "simulator/office/time_of_day.hpp"
+#include "simulator/scenario/spacecraft_section.hpp"
 
 #include "common/config/text_format.hpp"
 #include "common/grid/map_loader.hpp"
@@ -62,6 +63,8 @@ class ScenarioChecker {
     waypoints(file, root, out);
     radio(file, root, out);
     office(file, root, out);
+    if (file.has_spacecraft())
+      out.spacecraft = check_spacecraft_section(file.spacecraft(), root.nested("spacecraft"), source_, errors_);
     simulation(file.simulation(), root.nested("simulation"), out);
     out.world.seed = out.simulation.seed;
     return out;
@@ -83,11 +86,15 @@ class ScenarioChecker {
   }
 
   void world(const config::Scenario& file, const Locator& root, WorldSpec& out) {
-    if (!file.has_world()) {
+    if (!file.has_world() && !file.has_spacecraft()) {
       error(root.self(), "world is missing");
       return;
     }
-    const config::World& w = file.world();
+    // A spacecraft scenario needs no robot world: an empty square stands in for it.
+    config::World placeholder;
+    placeholder.set_width(1.0);
+    placeholder.set_height(1.0);
+    const config::World& w = file.has_world() ? file.world() : placeholder;
     const Locator at = root.nested("world");
     out.width = positive(true, w.width(), 0.0, "world: width", at.at("width"));
     out.height = positive(true, w.height(), 0.0, "world: height", at.at("height"));

@@ -7,6 +7,7 @@
 #include "simulator/scenario/scenario_content.hpp"
 #include "simulator/scenario/scenario_error.hpp"
 #include "simulator/scenario/simulation_settings.hpp"
+#include "simulator/spacecraft/spacecraft_spec.hpp"
 
 #include <optional>
 #include <string>
@@ -24,6 +25,8 @@ struct Scenario {
   // The office (people, objects, loading stations) when the file declares any, checked: its
   // places are the file's rooms (kind room, at the centre of their bounds) and places.
   std::optional<office::OfficeSpec> office;
+  // The spacecraft (Scenario.spacecraft) when the file declares one, checked.
+  std::optional<spacecraft::SpacecraftSpec> spacecraft;
 };
 
 struct [[nodiscard]] ScenarioLoadResult {

@@ -16,6 +16,7 @@
 #include "common/msg/radio.hpp"
 #include "common/msg/truth.hpp"
 #include "common/msg/system.hpp"
+#include "common/msg/spacecraft.hpp"
 
 namespace autonomy::json {
 
@@ -641,6 +642,186 @@ struct Fields<msg::CourierReport> {
     v.field("success", m.success);
     v.field("text", m.text);
     v.field("tick", m.tick);
+  }
+};
+
+// --- The spacecraft (idl/spacecraft.idl) ------------------------------------------------------
+
+template <>
+struct Fields<msg::SpacecraftCommand> {
+  static constexpr const char* name = "SpacecraftCommand";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("command_id", m.command_id);
+    v.field("source", m.source);
+    v.field("tick", m.tick);
+    v.field("device", m.device);
+    v.field("command", m.command);
+    v.field("arguments", m.arguments);
+  }
+};
+
+template <>
+struct Fields<msg::SpacecraftCommandStatus> {
+  static constexpr const char* name = "SpacecraftCommandStatus";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("command_id", m.command_id);
+    v.field("source", m.source);
+    v.field("device", m.device);
+    v.field("command", m.command);
+    v.field("accepted", m.accepted);
+    v.field("reason", m.reason);
+    v.field("tick", m.tick);
+    v.field("sim_time_ns", m.sim_time_ns);
+  }
+};
+
+template <>
+struct Fields<msg::DeviceReport> {
+  static constexpr const char* name = "DeviceReport";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("device", m.device);
+    v.field("mode", m.mode);
+    v.field("confirmed_command", m.confirmed_command);
+    v.field("confirmed_command_id", m.confirmed_command_id);
+    v.field("confirmed_tick", m.confirmed_tick);
+  }
+};
+
+template <>
+struct Fields<msg::SensorReading> {
+  static constexpr const char* name = "SensorReading";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("sensor", m.sensor);
+    v.field("value", m.value);
+  }
+};
+
+template <>
+struct Fields<msg::AttitudeTelemetry> {
+  static constexpr const char* name = "AttitudeTelemetry";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("qw", m.qw);
+    v.field("qx", m.qx);
+    v.field("qy", m.qy);
+    v.field("qz", m.qz);
+    v.field("pointing_target", m.pointing_target);
+    v.field("turn_target", m.turn_target);
+    v.field("control_mode", m.control_mode);
+    v.field("rate_deg_s", m.rate_deg_s);
+    v.field("remaining_deg", m.remaining_deg);
+  }
+};
+
+template <>
+struct Fields<msg::PropulsionTelemetry> {
+  static constexpr const char* name = "PropulsionTelemetry";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("thrust_level", m.thrust_level);
+    v.field("power_w", m.power_w);
+    v.field("thrust_time_s", m.thrust_time_s);
+  }
+};
+
+template <>
+struct Fields<msg::CameraTelemetry> {
+  static constexpr const char* name = "CameraTelemetry";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("power_w", m.power_w);
+    v.field("images_taken", m.images_taken);
+    v.field("images_on_target", m.images_on_target);
+    v.field("last_image_target", m.last_image_target);
+  }
+};
+
+template <>
+struct Fields<msg::PowerTelemetry> {
+  static constexpr const char* name = "PowerTelemetry";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("solar_array_w", m.solar_array_w);
+    v.field("load_w", m.load_w);
+    v.field("battery_soc", m.battery_soc);
+    v.field("battery_wh", m.battery_wh);
+  }
+};
+
+template <>
+struct Fields<msg::TelecomTelemetry> {
+  static constexpr const char* name = "TelecomTelemetry";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("ground_station", m.ground_station);
+    v.field("downlink_rate_kbps", m.downlink_rate_kbps);
+    v.field("downlinked_mb", m.downlinked_mb);
+  }
+};
+
+template <>
+struct Fields<msg::StorageTelemetry> {
+  static constexpr const char* name = "StorageTelemetry";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("used_mb", m.used_mb);
+    v.field("capacity_mb", m.capacity_mb);
+  }
+};
+
+template <>
+struct Fields<msg::SpacecraftTelemetry> {
+  static constexpr const char* name = "SpacecraftTelemetry";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.key("spacecraft", m.spacecraft);
+    v.field("tick", m.tick);
+    v.field("sim_time_ns", m.sim_time_ns);
+    v.field("devices", m.devices);
+    v.field("readings", m.readings);
+    v.field("attitude", m.attitude);
+    v.field("propulsion", m.propulsion);
+    v.field("camera", m.camera);
+    v.field("power", m.power);
+    v.field("telecom", m.telecom);
+    v.field("storage", m.storage);
+    v.field("commands_accepted", m.commands_accepted);
+    v.field("commands_rejected", m.commands_rejected);
+  }
+};
+
+template <>
+struct Fields<msg::SpacecraftFaultInjection> {
+  static constexpr const char* name = "SpacecraftFaultInjection";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("fault_id", m.fault_id);
+    v.field("source", m.source);
+    v.field("kind", m.kind);
+    v.field("subject", m.subject);
+    v.field("value", m.value);
+    v.field("reset_cures", m.reset_cures);
+    v.field("clear", m.clear);
+  }
+};
+
+template <>
+struct Fields<msg::SpacecraftFaultState> {
+  static constexpr const char* name = "SpacecraftFaultState";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.key("fault_id", m.fault_id);
+    v.field("kind", m.kind);
+    v.field("subject", m.subject);
+    v.field("value", m.value);
+    v.field("active", m.active);
+    v.field("trigger", m.trigger);
+    v.field("ended_by", m.ended_by);
+    v.field("since_ns", m.since_ns);
   }
 };
 

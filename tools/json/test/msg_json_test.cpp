@@ -191,5 +191,25 @@ TEST(MsgJsonErrors, NestedPaths) {
   EXPECT_EQ(error_for<msg::WorldMap>(R"({"obstacles":{}})"), "WorldMap.obstacles: expected an array, got an object");
 }
 
+
+TEST(MsgJson, SpacecraftTypesRoundTrip) {
+  msg::SpacecraftTelemetry t;
+  t.spacecraft = "ds1";
+  t.tick = 3;
+  t.devices = {{"adcs", "turning", "turn", "t-1", 2}};
+  t.readings = {{"battery_soc", 0.75}};
+  t.attitude.turn_target = "asteroid-1";
+  t.propulsion.thrust_level = 6;
+  t.camera.images_taken = 2;
+  t.telecom.ground_station = "dss-14";
+  t.storage.capacity_mb = 64;
+  expect_round_trip(t);
+  expect_round_trip(msg::SpacecraftCommand{"c-1", "executive", 4, "ips", "thrust", {"6"}});
+  expect_round_trip(msg::SpacecraftCommandStatus{"c-1", "executive", "ips", "thrust", false, "out of range", 4, 9});
+  expect_round_trip(msg::SpacecraftFaultInjection{"f", "test", "failed", "lpe", 0.0, true, false});
+  expect_round_trip(msg::SpacecraftFaultState{"f", "failed", "lpe", 0.0, true, "injected by test", "", 5});
+  EXPECT_EQ(key_json(t), (Json{{"spacecraft", "ds1"}}));
+}
+
 }  // namespace
 }  // namespace autonomy::json

@@ -1,0 +1,361 @@
+// Integration tests of the simulated spacecraft over DDS: the real simulator process with
+// deploy/scenarios/ds1.pbtxt, this test as a lockstep participant sending device commands on
+// autonomy/spacecraft/command and reading telemetry, command status and fault truth.
+//
+//   domain  test
+//   ------  -----------------------------------------------------------
+//    200    SpacecraftTest.LockstepCommandsAreConfirmedInTelemetry
+//    201    SpacecraftTest.BadCommandsAreRejectedWithTheirReasons
+//    202    SpacecraftTest.InjectedFaultsShowInTelemetryAndTruth
+//    203    SpacecraftTest.ScenarioFaultOnACommandInPacedTime
+//    204    SpacecraftTest.BadSpacecraftSectionStopsTheSimulatorWithItsPosition
+// (ctest names them integration.<suite>.<test>.)
+#include "tests/support/process_test.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+namespace autonomy::test {
+namespace {
+
+enum Domain : int {
+  kDomainConfirmed = 200,
+  kDomainRejected = 201,
+  kDomainInjected = 202,
+  kDomainPaced = 203,
+  kDomainBadFile = 204,
+};
+
+const std::string kDs1 = std::string(AUTONOMY_SOURCE_DIR) + "/deploy/scenarios/ds1.pbtxt";
+constexpr const char* kName = "test";  // this test's lockstep participant name
+
+// This test as a lockstep participant: acknowledges every tick, and sends the commands queued
+// since the last tick stamped with the new tick (as the executive will).
+class LockstepDriver {
+ public:
+  explicit LockstepDriver(const dds::Participant& p)
+      : clock_topic_(p, dds::topics::clock),
+        registration_topic_(p, dds::topics::lockstep_registration),
+        ack_topic_(p, dds::topics::tick_ack),
+        command_topic_(p, dds::topics::spacecraft_command),
+        clock_reader_(p, clock_topic_),
+        registration_writer_(p, registration_topic_),
+        ack_writer_(p, ack_topic_),
+        command_writer_(p, command_topic_) {}
+
+  ::testing::AssertionResult join() {
+    if (!command_writer_.wait_for_readers(1, kDeadline))
+      return ::testing::AssertionFailure() << "no reader of autonomy/spacecraft/command";
+    registration_writer_.write({kName, true});
+    return ::testing::AssertionSuccess();
+  }
+  void send(const std::string& id, const std::string& device, const std::string& command,
+            std::vector<std::string> arguments = {}) {
+    queued_.push_back({id, kName, 0, device, command, std::move(arguments)});
+  }
+  // Reacts to a new tick: the queued commands, then the ack. Returns the current tick.
+  std::optional<int64_t> poll() {
+    for (auto& s : clock_reader_.take()) {
+      if (!s.valid || (tick_ && s.value.tick <= *tick_)) continue;
+      tick_ = s.value.tick;
+      for (auto& c : queued_) {
+        c.tick = *tick_;
+        sent_at_[c.command_id] = *tick_;
+        command_writer_.write(c);
+      }
+      ack_writer_.write({kName, *tick_, static_cast<uint32_t>(queued_.size())});
+      queued_.clear();
+    }
+    return tick_;
+  }
+  int64_t sent_at(const std::string& id) const { return sent_at_.at(id); }
+  bool sent(const std::string& id) const { return sent_at_.count(id) > 0; }
+
+ private:
+  dds::Topic<msg::SimClock> clock_topic_;
+  dds::Topic<msg::LockstepRegistration> registration_topic_;
+  dds::Topic<msg::TickAck> ack_topic_;
+  dds::Topic<msg::SpacecraftCommand> command_topic_;
+  dds::Reader<msg::SimClock> clock_reader_;
+  dds::Writer<msg::LockstepRegistration> registration_writer_;
+  dds::Writer<msg::TickAck> ack_writer_;
+  dds::Writer<msg::SpacecraftCommand> command_writer_;
+  std::optional<int64_t> tick_;
+  std::vector<msg::SpacecraftCommand> queued_;
+  std::map<std::string, int64_t> sent_at_;
+};
+
+const msg::DeviceReport* device(const msg::SpacecraftTelemetry& t, const std::string& name) {
+  for (const auto& d : t.devices)
+    if (d.device == name) return &d;
+  return nullptr;
+}
+
+std::optional<double> reading(const msg::SpacecraftTelemetry& t, const std::string& sensor) {
+  for (const auto& r : t.readings)
+    if (r.sensor == sensor) return r.value;
+  return std::nullopt;
+}
+
+// The first telemetry sample (in tick order) that satisfies `pred`.
+std::optional<msg::SpacecraftTelemetry> first(
+    const Recorder<msg::SpacecraftTelemetry>& r,
+    const std::function<bool(const msg::SpacecraftTelemetry&)>& pred) {
+  auto all = r.matching(pred);
+  if (all.empty()) return std::nullopt;
+  return *std::min_element(all.begin(), all.end(),
+                           [](const auto& a, const auto& b) { return a.tick < b.tick; });
+}
+
+std::optional<msg::SpacecraftCommandStatus> status_of(
+    const Recorder<msg::SpacecraftCommandStatus>& r, const std::string& id) {
+  auto all = r.matching([&](const auto& s) { return s.command_id == id; });
+  if (all.empty()) return std::nullopt;
+  return all.front();
+}
+
+class SpacecraftTest : public ProcessTest {
+ protected:
+  void start_ds1(int domain, const std::string& scenario = kDs1,
+                 std::vector<std::string> extra = {}) {
+    join(domain);
+    std::vector<std::string> args{"--config", scenario, "--wait-for", kName};
+    args.insert(args.end(), extra.begin(), extra.end());
+    start_simulator(args);
+  }
+  // Polls the driver and the recorders until `condition` holds.
+  ::testing::AssertionResult run_until(const std::string& what, LockstepDriver& driver,
+                                       const std::function<bool()>& condition) {
+    return await(what, [&] {
+      driver.poll();
+      telemetry_->poll();
+      status_->poll();
+      return condition();
+    });
+  }
+  void record() {
+    telemetry_.emplace(participant(), dds::topics::spacecraft_telemetry);
+    status_.emplace(participant(), dds::topics::spacecraft_command_status);
+  }
+  std::optional<Recorder<msg::SpacecraftTelemetry>> telemetry_;
+  std::optional<Recorder<msg::SpacecraftCommandStatus>> status_;
+};
+
+TEST_F(SpacecraftTest, LockstepCommandsAreConfirmedInTelemetry) {
+  start_ds1(kDomainConfirmed);
+  record();
+  LockstepDriver driver(participant());
+  ASSERT_TRUE(driver.join());
+  ASSERT_TRUE(run_until("tick 0", driver, [&] { return driver.poll().has_value(); }));
+  driver.send("turn-1", "adcs", "turn", {"asteroid-1"});
+
+  // Confirmed at the tick it was sent for, seen in the next tick's telemetry, turning.
+  ASSERT_TRUE(run_until("turn-1 confirmed", driver, [&] {
+    return !!first(*telemetry_, [](const auto& t) {
+      return device(t, "adcs")->confirmed_command_id == "turn-1";
+    });
+  }));
+  const int64_t k0 = driver.sent_at("turn-1");
+  const auto confirmed = *first(*telemetry_, [](const auto& t) {
+    return device(t, "adcs")->confirmed_command_id == "turn-1";
+  });
+  EXPECT_EQ(confirmed.tick, k0 + 1);
+  EXPECT_EQ(device(confirmed, "adcs")->confirmed_tick, k0);
+  EXPECT_EQ(device(confirmed, "adcs")->mode, "turning");
+  EXPECT_EQ(confirmed.attitude.turn_target, "asteroid-1");
+  ASSERT_TRUE(status_of(*status_, "turn-1"));
+  EXPECT_TRUE(status_of(*status_, "turn-1")->accepted);
+  EXPECT_EQ(status_of(*status_, "turn-1")->tick, k0);
+
+  // 36.87 deg at 0.2 deg/s: 185 one-second steps.
+  ASSERT_TRUE(run_until("pointing at asteroid-1", driver, [&] {
+    return !!first(*telemetry_,
+                   [](const auto& t) { return t.attitude.pointing_target == "asteroid-1"; });
+  }));
+  const auto pointed =
+      *first(*telemetry_, [](const auto& t) { return t.attitude.pointing_target == "asteroid-1"; });
+  EXPECT_EQ(pointed.tick - k0, 185);
+  EXPECT_EQ(device(pointed, "adcs")->mode, "pointing");
+  EXPECT_LT(*reading(pointed, "pointing_error_deg"), 1e-6);
+
+  driver.send("img-1", "camera", "take_image", {"asteroid-1"});
+  ASSERT_TRUE(run_until("image on target", driver, [&] {
+    return !!first(*telemetry_, [](const auto& t) { return t.camera.images_on_target == 1; });
+  }));
+  const auto imaged =
+      *first(*telemetry_, [](const auto& t) { return t.camera.images_on_target == 1; });
+  EXPECT_EQ(imaged.tick - driver.sent_at("img-1"), 20);  // the exposure
+  EXPECT_DOUBLE_EQ(imaged.storage.used_mb, 5.0);         // 4 MB at the start + 1
+  EXPECT_EQ(device(imaged, "camera")->mode, "ready");
+  EXPECT_EQ(imaged.commands_rejected, 0u);
+}
+
+TEST_F(SpacecraftTest, BadCommandsAreRejectedWithTheirReasons) {
+  start_ds1(kDomainRejected);
+  record();
+  LockstepDriver driver(participant());
+  ASSERT_TRUE(driver.join());
+  ASSERT_TRUE(run_until("tick 0", driver, [&] { return driver.poll().has_value(); }));
+  driver.send("bad-device", "warp_drive", "engage");
+  driver.send("bad-target", "camera", "take_image", {"moon"});
+  driver.send("bad-level", "ips", "thrust", {"99"});
+  driver.send("bad-mode", "telecom", "downlink");  // no station in view at t = 0
+  driver.send("good", "ips", "thrust", {"5"});
+  ASSERT_TRUE(run_until("five statuses", driver, [&] { return status_->all().size() >= 5; }));
+  const auto reason = [&](const std::string& id) {
+    const auto s = status_of(*status_, id);
+    EXPECT_TRUE(s && !s->accepted) << id;
+    return s ? s->reason : "";
+  };
+  EXPECT_EQ(reason("bad-device")
+                .rfind("unknown device 'warp_drive' (devices: adcs, camera, ips, lpe,", 0),
+            0u);
+  EXPECT_EQ(reason("bad-target"), "unknown target 'moon'");
+  EXPECT_EQ(reason("bad-level"), "thrust level '99' is out of range 1..15");
+  EXPECT_EQ(reason("bad-mode"), "no ground station in view (next: dss-14 at 21600 s)");
+  ASSERT_TRUE(status_of(*status_, "good"));
+  EXPECT_TRUE(status_of(*status_, "good")->accepted);
+  ASSERT_TRUE(run_until("counts in telemetry", driver, [&] {
+    return !!first(*telemetry_, [](const auto& t) {
+      return t.commands_rejected == 4 && t.commands_accepted == 1;
+    });
+  }));
+  const auto t = *first(*telemetry_, [](const auto& t) { return t.commands_rejected == 4; });
+  EXPECT_EQ(device(t, "ips")->mode, "thrusting");
+  EXPECT_EQ(t.propulsion.thrust_level, 5u);
+}
+
+TEST_F(SpacecraftTest, InjectedFaultsShowInTelemetryAndTruth) {
+  start_ds1(kDomainInjected);
+  record();
+  Recorder<msg::SpacecraftFaultState> truth(participant(), dds::topics::truth_spacecraft_fault);
+  dds::Topic<msg::SpacecraftFaultInjection> inject_topic(participant(),
+                                                         dds::topics::spacecraft_fault_injection);
+  dds::Writer<msg::SpacecraftFaultInjection> inject(participant(), inject_topic);
+  LockstepDriver driver(participant());
+  ASSERT_TRUE(driver.join());
+  ASSERT_TRUE(inject.wait_for_readers(1, kDeadline));
+  ASSERT_TRUE(run_until("tick 0", driver, [&] { return driver.poll().has_value(); }));
+  inject.write({"tx", "test", "stuck_closed", "thruster_x", 0, true, false});
+  inject.write({"pwr", "test", "false_sensor", "camera_switch_status", 0, true, false});
+  inject.write({"lpe", "test", "failed", "lpe", 0, true, false});
+  inject.write({"boom", "test", "explode", "camera", 0, true, false});
+
+  ASSERT_TRUE(run_until("faults in telemetry", driver, [&] {
+    truth.poll();
+    return !!first(*telemetry_, [](const auto& t) {
+      return device(t, "thruster_x")->mode == "stuck_closed" &&
+             device(t, "lpe")->mode == "failed" && reading(t, "camera_switch_status") == 0.0;
+    });
+  }));
+  const auto t =
+      *first(*telemetry_, [](const auto& t) { return device(t, "lpe")->mode == "failed"; });
+  EXPECT_EQ(reading(t, "camera_switch_voltage_a"), 1.0);  // the redundant readings stay true
+  EXPECT_EQ(reading(t, "camera_switch_voltage_b"), 1.0);
+  EXPECT_EQ(device(t, "camera")->mode, "ready");
+  EXPECT_EQ(device(t, "thruster_y")->mode, "ok");
+  ASSERT_TRUE(status_of(*status_, "boom"));
+  EXPECT_FALSE(status_of(*status_, "boom")->accepted);
+  EXPECT_EQ(status_of(*status_, "boom")->reason,
+            "unknown fault kind 'explode' (stuck_on, failed, false_sensor, stuck_closed, "
+            "never_confirmed)");
+
+  // The failed unit refuses what passes through it until a reset cures it.
+  driver.send("cam-1", "camera", "off");
+  driver.send("reset-1", "lpe", "reset");
+  ASSERT_TRUE(run_until("lpe reset", driver, [&] {
+    truth.poll();
+    return !!first(*telemetry_, [](const auto& t) {
+      return device(t, "lpe")->confirmed_command_id == "reset-1";
+    });
+  }));
+  EXPECT_EQ(status_of(*status_, "cam-1")->reason,
+            "commands to camera pass through lpe, which has failed");
+  const auto reset = *first(*telemetry_, [](const auto& t) {
+    return device(t, "lpe")->confirmed_command_id == "reset-1";
+  });
+  EXPECT_EQ(device(reset, "lpe")->mode, "ok");
+  ASSERT_TRUE(await("fault truth", [&] {
+    truth.poll();
+    return !truth.matching([](const auto& f) { return f.fault_id == "lpe" && !f.active; }).empty();
+  }));
+  const auto ended =
+      truth.matching([](const auto& f) { return f.fault_id == "lpe" && !f.active; }).front();
+  EXPECT_EQ(ended.ended_by, "reset");
+  const auto tx = truth.matching([](const auto& f) { return f.fault_id == "tx"; });
+  ASSERT_FALSE(tx.empty());
+  EXPECT_TRUE(tx.front().active);
+  EXPECT_EQ(tx.front().trigger, "injected by test");
+}
+
+TEST_F(SpacecraftTest, ScenarioFaultOnACommandInPacedTime) {
+  join(kDomainPaced);
+  // ds1 with its ion-engine fault switched on, run paced at 50x by a sender outside lockstep.
+  std::string text = read_file(kDs1);
+  const std::string fault = "# faults { id: \"ips-unconfirmed\"";
+  const std::string clock =
+      "simulation { mode: LOCKSTEP step_s: 1.0 seed: 1999 ack_timeout_s: 5.0 }";
+  ASSERT_NE(text.find(fault), std::string::npos);
+  ASSERT_NE(text.find(clock), std::string::npos);
+  text.replace(text.find(fault), 2, "");
+  text.replace(text.find(clock), clock.size(), "simulation { mode: PACED step_s: 1.0 warp: 50 }");
+  const std::string file = dir().file("ds1-ips.pbtxt");
+  write_file(file, text);
+  start_simulator({"--config", file});
+  record();
+  Recorder<msg::SpacecraftFaultState> truth(participant(), dds::topics::truth_spacecraft_fault);
+  dds::Topic<msg::SpacecraftCommand> topic(participant(), dds::topics::spacecraft_command);
+  dds::Writer<msg::SpacecraftCommand> commands(participant(), topic);
+  ASSERT_TRUE(commands.wait_for_readers(1, kDeadline));
+  commands.write({"thrust-1", "tool", 0, "ips", "thrust", {"6"}});
+  ASSERT_TRUE(await("thrust-1 accepted", [&] {
+    status_->poll();
+    return status_of(*status_, "thrust-1").has_value();
+  }));
+  const auto accepted = *status_of(*status_, "thrust-1");
+  EXPECT_TRUE(accepted.accepted) << accepted.reason;
+  commands.write({"cam-1", "tool", 0, "camera", "off", {}});
+  // Twenty ticks later the engine still has not done it; the camera did.
+  ASSERT_TRUE(await("20 ticks after the thrust", [&] {
+    telemetry_->poll();
+    return !!first(*telemetry_, [&](const auto& t) { return t.tick >= accepted.tick + 20; });
+  }));
+  const auto later =
+      *first(*telemetry_, [&](const auto& t) { return t.tick >= accepted.tick + 20; });
+  EXPECT_EQ(device(later, "ips")->mode, "standby");
+  EXPECT_EQ(device(later, "ips")->confirmed_tick, -1);
+  EXPECT_EQ(device(later, "camera")->confirmed_command_id, "cam-1");
+  EXPECT_EQ(device(later, "camera")->mode, "off");
+  ASSERT_TRUE(await("fault truth", [&] {
+    truth.poll();
+    return !truth.all().empty();
+  }));
+  EXPECT_EQ(truth.all()[0].fault_id, "ips-unconfirmed");
+  EXPECT_EQ(truth.all()[0].trigger, "on ips thrust");
+  // Paced: the clock ran without anyone acknowledging it.
+  EXPECT_GE(later.tick, 20);
+}
+
+TEST_F(SpacecraftTest, BadSpacecraftSectionStopsTheSimulatorWithItsPosition) {
+  join(kDomainBadFile);
+  std::string text = read_file(kDs1);
+  const std::string target = "initial_target: \"thrust-attitude\"";
+  ASSERT_NE(text.find(target), std::string::npos);
+  text.replace(text.find(target), target.size(), "initial_target: \"pluto\"");
+  const std::string file = dir().file("bad-ds1.pbtxt");
+  write_file(file, text);
+  ChildProcess& sim = start_simulator({"--config", file}, false);
+  ASSERT_TRUE(await("simulator ended", [&] { return !sim.running(); }));
+  ASSERT_TRUE(sim.status()->exited);
+  EXPECT_NE(sim.status()->code, 0);
+  const std::string out = read_file(sim.log_file());
+  EXPECT_NE(out.find(file + ":25:5: attitude: initial_target 'pluto' is not a target"),
+            std::string::npos)
+      << out;
+}
+
+}  // namespace
+}  // namespace autonomy::test
