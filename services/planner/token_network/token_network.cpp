@@ -163,7 +163,9 @@ bool TokenNetwork::setup_token(TokenId id, const std::string& why) {
   for (const ParameterConstraintDef& c : pd.constraints) {
     std::vector<VariableId> vars;
     std::vector<std::int64_t> constants;
-    for (const TermRef& term : c.terms) {
+    const bool table = c.kind == pb::ParameterConstraint::TABLE;
+    for (std::size_t k = 0; k < (table ? std::size_t(c.arity) : c.terms.size()); ++k) {
+      const TermRef& term = c.terms[k];
       switch (term.kind) {
         case TermRef::Kind::kParameter:
           vars.push_back(tokens_[id].parameters[term.parameter]);
@@ -201,6 +203,16 @@ bool TokenNetwork::setup_token(TokenId id, const std::string& why) {
       case K::SUM_PRODUCT:
         cn_.add_constraint(make_sum_product(vars[0], vars[1], vars[2], vars[3]));
         break;
+      case K::TABLE: {
+        std::vector<std::vector<double>> tuples;
+        for (std::size_t i = std::size_t(c.arity); i + std::size_t(c.arity) <= c.terms.size();
+             i += std::size_t(c.arity)) {
+          tuples.emplace_back();
+          for (int k = 0; k < c.arity; ++k) tuples.back().push_back(c.terms[i + k].value);
+        }
+        cn_.add_constraint(make_table(vars, std::move(tuples)));
+        break;
+      }
       case K::MEMBER: {
         std::vector<std::int64_t> values;
         for (std::size_t i = 1; i < c.terms.size(); ++i)
