@@ -687,13 +687,22 @@ std::vector<Flaw> TokenNetwork::resource_flaws() const {
       auto start = [&](TokenId id) { return tn_.earliest(tokens_[id].start); };
       auto end = [&](TokenId id) { return tn_.earliest(tokens_[id].end); };
       if (res.kind == pb::Resource::REUSABLE) {
-        // Pairs first: exact under every dispatch of the flexible plan.
+        // Pairs first: exact under every dispatch of the flexible plan. Tokens of one
+        // timeline are ordered already; bounds settle most other pairs; the rest take a
+        // shortest-path search that stops beyond distance 0.
+        auto distance = [&](TimepointId from, TimepointId to) {
+          return tn_.shortest_distance(from, to, 0);
+        };
         for (std::size_t i = 0; i < uses.size(); ++i)
           for (std::size_t j = i + 1; j < uses.size(); ++j) {
             if (uses[i].amount + uses[j].amount <= res.capacity + 1e-9) continue;
             const Token &a = tokens_[uses[i].id], &b = tokens_[uses[j].id];
-            const bool apart = tn_.shortest_distance(b.start, a.end) <= 0 ||
-                               tn_.shortest_distance(a.start, b.end) <= 0;
+            if (a.timeline == b.timeline) continue;
+            if (tn_.latest(a.end) <= tn_.earliest(b.start) ||
+                tn_.latest(b.end) <= tn_.earliest(a.start))
+              continue;
+            const bool apart =
+                distance(b.start, a.end) <= 0 || distance(a.start, b.end) <= 0;
             if (apart) continue;
             Flaw f{Flaw::Kind::kResourceConflict, uses[i].id};
             f.involved = {uses[i].id, uses[j].id};
