@@ -282,12 +282,14 @@ std::vector<std::string> validate_plan(const DomainModel& model, const PlanningP
       } else {
         std::sort(uses.begin(), uses.end(),
                   [](const Use& a, const Use& b) { return a.end < b.end; });
+        // Changes at the same time happen together (a charge ending as a drive ends).
         double level = res.initial_level;
-        for (const Use& u : uses) {
-          level += u.amount;
+        for (std::size_t i = 0; i < uses.size();) {
+          const std::int64_t at = uses[i].end;
+          for (; i < uses.size() && uses[i].end == at; ++i) level += uses[i].amount;
           if (level < res.min_level - 1e-9 || level > res.max_level + 1e-9) {
             std::ostringstream out;
-            out << object.name << "." << res.name << ": level " << level << " at " << u.end
+            out << object.name << "." << res.name << ": level " << level << " at " << at
                 << " outside [" << res.min_level << ", " << res.max_level << "]";
             fail(out.str());
             break;
