@@ -71,7 +71,7 @@ bool minizinc_with_gecode() {
 struct Baseline {
   bool ran = false, proved = false;
   long makespan = -1;
-  double seconds = 0;       // the whole minizinc run (flattening included)
+  double seconds = 0;         // the whole minizinc run (flattening included)
   double solve_seconds = -1;  // Gecode's own solve time, when it reports it
 };
 
@@ -221,12 +221,14 @@ int main(int argc, char** argv) {
     }
     std::sort(times.begin(), times.end());
     const double median = times[times.size() / 2];
-    std::printf("%s (%zu goals): planned in %.3f s (median of %zu, min %.3f s), %zu tokens, "
-                "%zu decisions, %zu backtracks",
-                problem_name, goals, median, times.size(), times.front(), r.plan->tokens.size(),
-                r.statistics.decisions, r.statistics.backtracks);
+    std::printf(
+        "%s (%zu goals): planned in %.3f s (median of %zu, min %.3f s), %zu tokens, "
+        "%zu decisions, %zu backtracks",
+        problem_name, goals, median, times.size(), times.front(), r.plan->tokens.size(),
+        r.statistics.decisions, r.statistics.backtracks);
     if (std::string(model_name) == "ds1.model")
-      std::printf("; Remote Agent on board DS1 (1999): 11 min 25 s, %.0fx", kRemoteAgentSeconds / median);
+      std::printf("; Remote Agent on board DS1 (1999): 11 min 25 s, %.0fx",
+                  kRemoteAgentSeconds / median);
     std::printf("\n");
   }
 

@@ -164,7 +164,8 @@ class Table final : public Procedure {
     bool any = false;
     for (const std::vector<double>& t : tuples_) {
       bool supported = true;
-      for (std::size_t i = 0; i < k && supported; ++i) supported = n.domain(scope_[i]).contains(t[i]);
+      for (std::size_t i = 0; i < k && supported; ++i)
+        supported = n.domain(scope_[i]).contains(t[i]);
       if (!supported) continue;
       any = true;
       for (std::size_t i = 0; i < k; ++i) {

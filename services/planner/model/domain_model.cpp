@@ -279,7 +279,8 @@ std::optional<DomainModel> build_domain_model(const pb::Model& in, Diagnostics* 
                           "a value outside the type of " + def.parameters[col.parameter].name);
           }
       } else if ((c.kind() == pb::ParameterConstraint::MEMBER && c.terms_size() < 2) ||
-          (c.kind() != pb::ParameterConstraint::MEMBER && std::size_t(c.terms_size()) != need))
+                 (c.kind() != pb::ParameterConstraint::MEMBER &&
+                  std::size_t(c.terms_size()) != need))
         check.error(c.location(), "constraint has the wrong number of operands");
       else if (cd.terms[0].kind == TermRef::Kind::kConstant &&
                c.kind() == pb::ParameterConstraint::MEMBER)

@@ -701,8 +701,7 @@ std::vector<Flaw> TokenNetwork::resource_flaws() const {
             if (tn_.latest(a.end) <= tn_.earliest(b.start) ||
                 tn_.latest(b.end) <= tn_.earliest(a.start))
               continue;
-            const bool apart =
-                distance(b.start, a.end) <= 0 || distance(a.start, b.end) <= 0;
+            const bool apart = distance(b.start, a.end) <= 0 || distance(a.start, b.end) <= 0;
             if (apart) continue;
             Flaw f{Flaw::Kind::kResourceConflict, uses[i].id};
             f.involved = {uses[i].id, uses[j].id};

@@ -184,8 +184,8 @@ TEST(ShippedModels, TheDs1DayIsPlannedWithEveryOutcomeTheModelPromises) {
     }
     EXPECT_GE(peak, 16);
     std::printf("%s: DS1 day, %zu tokens, %zu decisions, %zu backtracks, %zu omitted\n",
-                engine.c_str(), plan.tokens.size(), r.statistics.decisions,
-                r.statistics.backtracks, plan.omitted_goals.size());
+                engine.c_str(), plan.tokens.size(), r.statistics.decisions, r.statistics.backtracks,
+                plan.omitted_goals.size());
   }
 }
 
@@ -207,7 +207,8 @@ TEST(ShippedModels, TheRoverSamplesWhereItStandsAndTransmitsInPassesOnItsBattery
     ASSERT_EQ(sends.size(), 3u) << engine;
     for (const PlanToken* s : samples) {
       bool there = false;
-      for (const PlanToken* a : places) there |= a->parameters[0] == s->parameters[0] && within(*s, *a);
+      for (const PlanToken* a : places)
+        there |= a->parameters[0] == s->parameters[0] && within(*s, *a);
       EXPECT_TRUE(there) << engine << ": sample at " << s->parameters[0];
       // Its results go home in a pass, after it.
       bool sent = false;
