@@ -519,14 +519,19 @@ bool TokenNetwork::settle() {
 // fixed point:
 //  - overload: every window [a, b] must hold the durations of the tokens entirely within it;
 //  - detectable precedence: when B cannot end before A's latest start, A precedes B, which is
-//    added to the temporal network (as the search would find out only by trying every slot).
+//    added to the temporal network (as the search would find out only by trying every slot);
+//  - edge finding on task intervals (Caseau and Laburthe 1995; Nuijten 1994): for the tokens
+//    Omega inside a window [est(a), lct(b)] and a token i outside it, when Omega and i cannot
+//    all fit before lct(b), i ends last, so every token of Omega precedes i; when they cannot
+//    all fit after est(a), i precedes them all. Each is added as precedences too.
+// Optional goals still free are left out: leaving them out must stay possible.
 bool TokenNetwork::exclusion_propagation() {
   for (int round = 0; round < 8; ++round) {
     std::vector<std::vector<TokenId>> by_timeline(timelines_.size());
     for (TokenId id = 0; id < tokens_.size(); ++id) {
       const Token& t = tokens_[id];
       if (t.state != Token::State::kFree && t.state != Token::State::kPlaced) continue;
-      if (t.min_duration <= 0) continue;
+      if (t.min_duration <= 0 || (t.optional && t.state == Token::State::kFree)) continue;
       bool decided = true;
       for (VariableId v : t.parameters) decided &= cn_.domain(v).is_singleton();
       if (decided) by_timeline[t.timeline].push_back(id);
@@ -565,6 +570,45 @@ bool TokenNetwork::exclusion_propagation() {
             return false;
           }
         }
+      }
+      // i before j, once (a known pair is not added twice; both placed: their slots order them).
+      auto precede = [&](std::size_t i, std::size_t j, const char* rule) {
+        const Token &a = tokens_[members[i]], &b = tokens_[members[j]];
+        if (a.state == Token::State::kPlaced && b.state == Token::State::kPlaced) return true;
+        auto key = std::make_pair(members[i], members[j]);
+        if (precedences_.count(key)) return true;
+        precedences_.insert(key);
+        on_undo([this, key] { precedences_.erase(key); });
+        added = true;
+        return add_temporal(a.end, b.start, 0, kInfinity,
+                            std::string(rule) + " on " + timelines_[a.timeline].name);
+      };
+      constexpr std::size_t kEdgeFindingLimit = 32;  // task intervals cost n^3 per timeline
+      if (members.size() <= kEdgeFindingLimit) {
+        const std::size_t n = members.size();
+        for (std::size_t a = 0; a < n; ++a)
+          for (std::size_t b = 0; b < n; ++b) {
+            if (w[a].est >= w[b].lct) continue;
+            std::uint32_t omega = 0;
+            Time p = 0;
+            for (std::size_t k = 0; k < n; ++k)
+              if (w[k].est >= w[a].est && w[k].lct <= w[b].lct) {
+                omega |= std::uint32_t{1} << k;
+                p += w[k].d;
+              }
+            if (omega == 0) continue;
+            for (std::size_t i = 0; i < n; ++i) {
+              if (omega & (std::uint32_t{1} << i)) continue;
+              const bool last = std::min(w[i].est, w[a].est) + p + w[i].d > w[b].lct;
+              const bool first = std::max(w[i].lct, w[b].lct) - p - w[i].d < w[a].est;
+              if (!last && !first) continue;
+              for (std::size_t k = 0; k < n; ++k) {
+                if (!(omega & (std::uint32_t{1} << k))) continue;
+                if (last && !precede(k, i, "edge finding")) return false;
+                if (first && !precede(i, k, "edge finding")) return false;
+              }
+            }
+          }
       }
       for (std::size_t i = 0; i < members.size(); ++i) {
         for (std::size_t j = 0; j < members.size(); ++j) {

@@ -276,9 +276,9 @@ INSTANTIATE_TEST_SUITE_P(Instances, JobShop,
                          ::testing::Values(JobShopCase{"ft06", 55, 20000, true},
                                            JobShopCase{"la05", 593, 20000, true},
                                            JobShopCase{"la01", 666, 20000, false},
-                                           JobShopCase{"la02", 655, 20000, false},
+                                           JobShopCase{"la02", 655, 20000, true},
                                            JobShopCase{"la03", 597, 20000, false},
-                                           JobShopCase{"la04", 590, 20000, false}),
+                                           JobShopCase{"la04", 590, 20000, true}),
                          [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace
