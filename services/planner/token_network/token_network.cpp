@@ -571,13 +571,14 @@ bool TokenNetwork::exclusion_propagation() {
           }
         }
       }
-      // i before j, once (a known pair is not added twice; both placed: their slots order them).
+      // i before j, once (a known pair is not added twice; both placed: their slots order
+      // them; bounds already apart: nothing to add).
       auto precede = [&](std::size_t i, std::size_t j, const char* rule) {
         const Token &a = tokens_[members[i]], &b = tokens_[members[j]];
         if (a.state == Token::State::kPlaced && b.state == Token::State::kPlaced) return true;
+        if (tn_.latest(a.end) <= tn_.earliest(b.start)) return true;
         auto key = std::make_pair(members[i], members[j]);
-        if (precedences_.count(key)) return true;
-        precedences_.insert(key);
+        if (!precedences_.insert(key).second) return true;
         on_undo([this, key] { precedences_.erase(key); });
         added = true;
         return add_temporal(a.end, b.start, 0, kInfinity,
@@ -586,28 +587,40 @@ bool TokenNetwork::exclusion_propagation() {
       constexpr std::size_t kEdgeFindingLimit = 32;  // task intervals cost n^3 per timeline
       if (members.size() <= kEdgeFindingLimit) {
         const std::size_t n = members.size();
-        for (std::size_t a = 0; a < n; ++a)
-          for (std::size_t b = 0; b < n; ++b) {
-            if (w[a].est >= w[b].lct) continue;
-            std::uint32_t omega = 0;
-            Time p = 0;
-            for (std::size_t k = 0; k < n; ++k)
-              if (w[k].est >= w[a].est && w[k].lct <= w[b].lct) {
-                omega |= std::uint32_t{1} << k;
-                p += w[k].d;
-              }
-            if (omega == 0) continue;
+        // Per token: the tokens that must end before it starts, and those it must precede.
+        std::vector<std::uint32_t> after(n, 0), before(n, 0);
+        // Omega grows as the est threshold goes down (tokens by est, latest first); a token i
+        // is pushed only when d(i) exceeds the slack lct(b) - est(a) - p(Omega), so windows
+        // with more slack than the longest token are skipped.
+        std::vector<std::size_t> by_est(n);
+        for (std::size_t k = 0; k < n; ++k) by_est[k] = k;
+        std::sort(by_est.begin(), by_est.end(),
+                  [&](std::size_t x, std::size_t y) { return w[x].est > w[y].est; });
+        Time longest = 0;
+        for (const Window& x : w) longest = std::max(longest, x.d);
+        for (std::size_t b = 0; b < n; ++b) {
+          std::uint32_t omega = 0;
+          Time p = 0;
+          for (std::size_t r = 0; r < n; ++r) {
+            const std::size_t k = by_est[r];
+            if (w[k].lct <= w[b].lct) {
+              omega |= std::uint32_t{1} << k;
+              p += w[k].d;
+            }
+            if (r + 1 < n && w[by_est[r + 1]].est == w[k].est) continue;  // ties: all of them
+            const Time est = w[k].est;
+            if (omega == 0 || est >= w[b].lct || w[b].lct - est - p >= longest) continue;
             for (std::size_t i = 0; i < n; ++i) {
               if (omega & (std::uint32_t{1} << i)) continue;
-              const bool last = std::min(w[i].est, w[a].est) + p + w[i].d > w[b].lct;
-              const bool first = std::max(w[i].lct, w[b].lct) - p - w[i].d < w[a].est;
-              if (!last && !first) continue;
-              for (std::size_t k = 0; k < n; ++k) {
-                if (!(omega & (std::uint32_t{1} << k))) continue;
-                if (last && !precede(k, i, "edge finding")) return false;
-                if (first && !precede(i, k, "edge finding")) return false;
-              }
+              if (std::min(w[i].est, est) + p + w[i].d > w[b].lct) after[i] |= omega;
+              if (std::max(w[i].lct, w[b].lct) - p - w[i].d < est) before[i] |= omega;
             }
+          }
+        }
+        for (std::size_t i = 0; i < n; ++i)
+          for (std::size_t k = 0; k < n; ++k) {
+            if ((after[i] >> k) & 1u && !precede(k, i, "edge finding")) return false;
+            if ((before[i] >> k) & 1u && !precede(i, k, "edge finding")) return false;
           }
       }
       for (std::size_t i = 0; i < members.size(); ++i) {
