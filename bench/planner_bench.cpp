@@ -122,6 +122,7 @@ int main(int argc, char** argv) {
   std::string examples = "services/planner/examples", jobshop_dir;
   std::string minizinc_model = "bench/jobshop.mzn";
   int jobshop_seconds = 30, repeats = 5;
+  std::vector<std::string> jobshop_engines{"chronological", "discrepancy"};
   app.add_option("--timepoints", timepoints);
   app.add_option("--added", added, "constraints timed on the incremental network");
   app.add_option("--baseline-added", baseline_added, "constraints timed with full recomputation");
@@ -129,6 +130,7 @@ int main(int argc, char** argv) {
   app.add_option("--jobshop-dir", jobshop_dir, "default: <examples-dir>/jobshop");
   app.add_option("--minizinc-model", minizinc_model, "the disjunctive job-shop model");
   app.add_option("--jobshop-seconds", jobshop_seconds, "time limit per instance and solver");
+  app.add_option("--jobshop-engines", jobshop_engines, "planner engines timed on job-shop");
   app.add_option("--repeats", repeats, "runs per model (the median is printed)");
   CLI11_PARSE(app, argc, argv);
   if (jobshop_dir.empty()) jobshop_dir = examples + "/jobshop";
@@ -252,16 +254,32 @@ int main(int argc, char** argv) {
     }
     auto model = build_domain_model(jobshop_model(*inst), &errors);
     auto problem = build_problem(*model, jobshop_problem(*inst), &errors);
-    PlanningOptions options;
-    const auto start = Clock::now();
-    options.termination.stop = [&] {
-      return Clock::now() - start > std::chrono::seconds(jobshop_seconds);
-    };
-    PlanResult r = make_plan(*model, *problem, options);
-    const double s = std::chrono::duration<double>(Clock::now() - start).count();
-    std::printf("%s: planner makespan %lld, %s, %.3f s, %zu decisions", name,
-                r.plan ? static_cast<long long>(r.plan->makespan) : -1LL, to_string(r.status), s,
-                r.statistics.decisions);
+    // Each engine to the proof (or the limit); the ratio is against the faster proof.
+    double best = -1;
+    bool best_proved = false;
+    for (const std::string& engine : jobshop_engines) {
+      PlanningOptions options;
+      options.engine = engine;
+      const auto start = Clock::now();
+      options.termination.stop = [&] {
+        return Clock::now() - start > std::chrono::seconds(jobshop_seconds);
+      };
+      PlanResult r = make_plan(*model, *problem, options);
+      const double s = std::chrono::duration<double>(Clock::now() - start).count();
+      if (r.plan && !validate_plan(*model, *problem, *r.plan).empty()) {
+        std::fprintf(stderr, "%s: invalid schedule from %s\n", name, engine.c_str());
+        return 3;
+      }
+      std::printf("%s%s %s: makespan %lld, %s, %.3f s, %zu decisions",
+                  engine == jobshop_engines.front() ? "" : " | ", name, engine.c_str(),
+                  r.plan ? static_cast<long long>(r.plan->makespan) : -1LL, to_string(r.status), s,
+                  r.statistics.decisions);
+      const bool proved = r.status == PlanStatus::kOptimal;
+      if (best < 0 || (proved && !best_proved) || (proved == best_proved && s < best)) {
+        best = s;
+        best_proved = proved;
+      }
+    }
     if (with_baseline) {
       Baseline b = run_minizinc(minizinc_model, *inst, name, jobshop_seconds);
       if (!b.ran) {
@@ -270,10 +288,9 @@ int main(int argc, char** argv) {
         std::printf(" | minizinc gecode makespan %ld, %s, %.3f s", b.makespan,
                     b.proved ? "optimal" : "not proved", b.seconds);
         if (b.solve_seconds >= 0) std::printf(" (solve %.3f s)", b.solve_seconds);
-        const bool both = b.proved && r.status == PlanStatus::kOptimal;
-        std::printf(" | ratio gecode/planner %.1fx", b.seconds / s);
-        if (b.solve_seconds >= 0) std::printf(" (solve alone %.2fx)", b.solve_seconds / s);
-        if (!both) std::printf(" (not both proved: times are limits)");
+        std::printf(" | ratio gecode/planner %.1fx", b.seconds / best);
+        if (b.solve_seconds >= 0) std::printf(" (solve alone %.2fx)", b.solve_seconds / best);
+        if (!(b.proved && best_proved)) std::printf(" (not both proved: times are limits)");
       }
     }
     std::printf("\n");
