@@ -272,9 +272,15 @@ std::optional<DomainModel> build_domain_model(const pb::Model& in, Diagnostics* 
             if (col.kind != TermRef::Kind::kParameter || v.kind != TermRef::Kind::kConstant)
               continue;
             const ParameterType& type = def.parameters[col.parameter].type;
-            if ((type.kind == ParameterType::Kind::kInteger ||
-                 type.kind == ParameterType::Kind::kReal) &&
-                (v.value < type.lb || v.value > type.ub))
+            const bool symbolic = type.kind == ParameterType::Kind::kEnumeration ||
+                                  type.kind == ParameterType::Kind::kObject;
+            if (symbolic && c.terms(i).has_number())
+              check.error(c.terms(i).location(), "a number where " +
+                                                     def.parameters[col.parameter].name +
+                                                     " takes a value of its type");
+            else if ((type.kind == ParameterType::Kind::kInteger ||
+                      type.kind == ParameterType::Kind::kReal) &&
+                     (v.value < type.lb || v.value > type.ub))
               check.error(c.terms(i).location(),
                           "a value outside the type of " + def.parameters[col.parameter].name);
           }
