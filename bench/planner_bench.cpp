@@ -1,14 +1,24 @@
-// Planner figures (issue 11): the temporal network's incremental propagation per added
-// constraint at 10,000 timepoints, against recomputing all bounds by Bellman-Ford (the same
-// network, the same run); and job-shop solve times of the chronological engine.
+// Planner figures (issue 11), each against a baseline measured in the same run:
+//  - the temporal network's incremental propagation per added constraint at 10,000
+//    timepoints, against recomputing all bounds by Bellman-Ford;
+//  - the DS1-like day (about 100 goals) and the rover, planned by the chronological engine,
+//    beside the Remote Agent's 11 min 25 s on board Deep Space One (May 1999);
+//  - job-shop ft06 and la01-la05 to a proof of optimality, against MiniZinc with Gecode on
+//    the standard disjunctive model (bench/jobshop.mzn; bench/install-minizinc.sh installs it;
+//    skipped, with how to install it, when minizinc is absent).
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "jobshop_instance.hpp"
+#include "plan_validator.hpp"
 #include "planner.hpp"
 #include "planner_language.hpp"
 #include "temporal_network.hpp"
@@ -39,17 +49,91 @@ void bellman_ford(std::size_t n, const std::vector<Edge>& edges, Time horizon,
   }
 }
 
+std::optional<std::string> run_command(const std::string& command) {
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return std::nullopt;
+  std::string out;
+  std::array<char, 4096> buffer{};
+  std::size_t n;
+  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) out.append(buffer.data(), n);
+  if (pclose(pipe) != 0) return std::nullopt;
+  return out;
+}
+
+bool minizinc_with_gecode() {
+  auto solvers = run_command("minizinc --solvers 2>/dev/null");
+  if (!solvers) return false;
+  std::string lower = *solvers;
+  std::transform(lower.begin(), lower.end(), lower.begin(), ::tolower);
+  return lower.find("gecode") != std::string::npos;
+}
+
+struct Baseline {
+  bool ran = false, proved = false;
+  long makespan = -1;
+  double seconds = 0;         // the whole minizinc run (flattening included)
+  double solve_seconds = -1;  // Gecode's own solve time, when it reports it
+};
+
+// One instance through `minizinc --solver gecode` with the data written from the parsed
+// instance (machines 1-based). "==========" ends the output when the search completed, i.e.
+// the last solution is proved optimal.
+Baseline run_minizinc(const std::string& model, const JobShopInstance& inst,
+                      const std::string& name, int seconds) {
+  Baseline b;
+  const auto data = std::filesystem::temp_directory_path() / ("planner_bench_" + name + ".dzn");
+  {
+    std::ofstream out(data);
+    out << "jobs = " << inst.jobs << ";\nmachines = " << inst.machines << ";\n";
+    for (const char* what : {"machine", "duration"}) {
+      out << what << " = [|";
+      for (int j = 0; j < inst.jobs; ++j) {
+        for (int k = 0; k < inst.machines; ++k) {
+          const auto [m, d] = inst.operations[j][k];
+          out << (k ? ", " : " ") << (what[0] == 'm' ? long(m + 1) : d);
+        }
+        out << " |";
+      }
+      out << "];\n";
+    }
+  }
+  const auto start = Clock::now();
+  auto out = run_command("minizinc --solver gecode --statistics --time-limit " +
+                         std::to_string(seconds * 1000) + " '" + model + "' '" + data.string() +
+                         "' 2>&1; true");  // a time-out is an answer too: read the output
+  b.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  std::filesystem::remove(data);
+  if (!out || out->find("makespan = ") == std::string::npos) return b;
+  b.ran = true;
+  b.proved = out->find("==========") != std::string::npos;
+  for (std::size_t at = out->find("makespan = "); at != std::string::npos;
+       at = out->find("makespan = ", at + 1))
+    b.makespan = std::stol(out->substr(at + 11));
+  if (auto at = out->find("solveTime="); at != std::string::npos)
+    b.solve_seconds = std::stod(out->substr(at + 10));
+  return b;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"Planner benchmarks"};
   std::size_t timepoints = 10000, added = 2000, baseline_added = 20;
-  std::string jobshop_dir = "services/planner/examples/jobshop";
+  std::string examples = "services/planner/examples", jobshop_dir;
+  std::string minizinc_model = "bench/jobshop.mzn";
+  int jobshop_seconds = 30, repeats = 5;
+  std::vector<std::string> jobshop_engines{"chronological", "discrepancy"};
   app.add_option("--timepoints", timepoints);
   app.add_option("--added", added, "constraints timed on the incremental network");
   app.add_option("--baseline-added", baseline_added, "constraints timed with full recomputation");
-  app.add_option("--jobshop-dir", jobshop_dir);
+  app.add_option("--examples-dir", examples, "the planner's examples (ds1.model, rover.model)");
+  app.add_option("--jobshop-dir", jobshop_dir, "default: <examples-dir>/jobshop");
+  app.add_option("--minizinc-model", minizinc_model, "the disjunctive job-shop model");
+  app.add_option("--jobshop-seconds", jobshop_seconds, "time limit per instance and solver");
+  app.add_option("--jobshop-engines", jobshop_engines, "planner engines timed on job-shop");
+  app.add_option("--repeats", repeats, "runs per model (the median is printed)");
   CLI11_PARSE(app, argc, argv);
+  if (jobshop_dir.empty()) jobshop_dir = examples + "/jobshop";
 
   const Time horizon = 100 * Time(timepoints);
   std::mt19937 rng(5);
@@ -107,24 +191,109 @@ int main(int argc, char** argv) {
       "full Bellman-Ford %.1f us, ratio %.0fx\n",
       timepoints, incremental_us, accepted, added, full_us, full_us / incremental_us);
 
+  // The shipped models, planned from their files; every plan validated (a benchmark that
+  // computes the wrong thing is void).
+  constexpr double kRemoteAgentSeconds = 11 * 60 + 25;  // one horizon on board DS1, May 1999
+  for (const auto& [model_name, problem_name] :
+       {std::pair{"ds1.model", "ds1-day.problem"}, std::pair{"rover.model", "rover.problem"}}) {
+    Diagnostics errors;
+    const std::string mf = examples + "/" + model_name, pf = examples + "/" + problem_name;
+    auto mt = read_text_file(mf, &errors);
+    auto pt = read_text_file(pf, &errors);
+    auto m = mt ? parse_model(*mt, mf, &errors) : std::nullopt;
+    auto model = m ? build_domain_model(*m, &errors) : std::nullopt;
+    auto p = (model && pt) ? parse_problem(*pt, pf, &errors) : std::nullopt;
+    auto problem = p ? build_problem(*model, *p, &errors) : std::nullopt;
+    if (!problem) {
+      std::fprintf(stderr, "%s", to_string(errors).c_str());
+      return 2;
+    }
+    std::size_t goals = 0;
+    for (const FactDef& f : problem->facts) goals += !f.initial;
+    std::vector<double> times;
+    PlanResult r;
+    for (int k = 0; k < std::max(repeats, 1); ++k) {
+      const auto start = Clock::now();
+      r = make_plan(*model, *problem, {});
+      times.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+    }
+    if (!r.plan || !validate_plan(*model, *problem, *r.plan).empty()) {
+      std::fprintf(stderr, "%s: no valid plan (%s)\n", problem_name, to_string(r.status));
+      return 3;
+    }
+    std::sort(times.begin(), times.end());
+    const double median = times[times.size() / 2];
+    std::printf(
+        "%s (%zu goals): planned in %.3f s (median of %zu, min %.3f s), %zu tokens, "
+        "%zu decisions, %zu backtracks",
+        problem_name, goals, median, times.size(), times.front(), r.plan->tokens.size(),
+        r.statistics.decisions, r.statistics.backtracks);
+    if (std::string(model_name) == "ds1.model")
+      std::printf("; Remote Agent on board DS1 (1999): 11 min 25 s, %.0fx",
+                  kRemoteAgentSeconds / median);
+    std::printf("\n");
+  }
+
+  const bool baseline = minizinc_with_gecode();
+  if (!baseline)
+    std::printf(
+        "job-shop baseline skipped: minizinc with Gecode not found (install it with "
+        "bench/install-minizinc.sh: Debian packages minizinc, flatzinc, libgecode49)\n");
+  else if (!std::filesystem::exists(minizinc_model))
+    std::printf("job-shop baseline skipped: no model at %s (--minizinc-model)\n",
+                minizinc_model.c_str());
+  const bool with_baseline = baseline && std::filesystem::exists(minizinc_model);
   for (const char* name : {"ft06", "la01", "la02", "la03", "la04", "la05"}) {
     Diagnostics errors;
-    auto text = read_text_file(jobshop_dir + "/" + name, &errors);
-    auto inst = text ? parse_jobshop(*text, name, &errors) : std::nullopt;
+    const std::string file = jobshop_dir + "/" + name;
+    auto text = read_text_file(file, &errors);
+    auto inst = text ? parse_jobshop(*text, file, &errors) : std::nullopt;
     if (!inst) {
       std::fprintf(stderr, "%s", to_string(errors).c_str());
       return 2;
     }
     auto model = build_domain_model(jobshop_model(*inst), &errors);
     auto problem = build_problem(*model, jobshop_problem(*inst), &errors);
-    PlanningOptions options;
-    const auto start = Clock::now();
-    options.termination.stop = [&] { return Clock::now() - start > std::chrono::seconds(30); };
-    PlanResult r = make_plan(*model, *problem, options);
-    const double s = std::chrono::duration<double>(Clock::now() - start).count();
-    std::printf("%s: makespan %lld, %s, %.3f s, %zu decisions\n", name,
-                r.plan ? static_cast<long long>(r.plan->makespan) : -1LL, to_string(r.status), s,
-                r.statistics.decisions);
+    // Each engine to the proof (or the limit); the ratio is against the faster proof.
+    double best = -1;
+    bool best_proved = false;
+    for (const std::string& engine : jobshop_engines) {
+      PlanningOptions options;
+      options.engine = engine;
+      const auto start = Clock::now();
+      options.termination.stop = [&] {
+        return Clock::now() - start > std::chrono::seconds(jobshop_seconds);
+      };
+      PlanResult r = make_plan(*model, *problem, options);
+      const double s = std::chrono::duration<double>(Clock::now() - start).count();
+      if (r.plan && !validate_plan(*model, *problem, *r.plan).empty()) {
+        std::fprintf(stderr, "%s: invalid schedule from %s\n", name, engine.c_str());
+        return 3;
+      }
+      std::printf("%s%s %s: makespan %lld, %s, %.3f s, %zu decisions",
+                  engine == jobshop_engines.front() ? "" : " | ", name, engine.c_str(),
+                  r.plan ? static_cast<long long>(r.plan->makespan) : -1LL, to_string(r.status), s,
+                  r.statistics.decisions);
+      const bool proved = r.status == PlanStatus::kOptimal;
+      if (best < 0 || (proved && !best_proved) || (proved == best_proved && s < best)) {
+        best = s;
+        best_proved = proved;
+      }
+    }
+    if (with_baseline) {
+      Baseline b = run_minizinc(minizinc_model, *inst, name, jobshop_seconds);
+      if (!b.ran) {
+        std::printf(" | minizinc gecode failed to run");
+      } else {
+        std::printf(" | minizinc gecode makespan %ld, %s, %.3f s", b.makespan,
+                    b.proved ? "optimal" : "not proved", b.seconds);
+        if (b.solve_seconds >= 0) std::printf(" (solve %.3f s)", b.solve_seconds);
+        std::printf(" | ratio gecode/planner %.1fx", b.seconds / best);
+        if (b.solve_seconds >= 0) std::printf(" (solve alone %.2fx)", b.solve_seconds / best);
+        if (!(b.proved && best_proved)) std::printf(" (not both proved: times are limits)");
+      }
+    }
+    std::printf("\n");
   }
   return 0;
 }

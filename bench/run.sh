@@ -33,7 +33,10 @@ if [[ ${#quick[@]} -gt 0 ]]; then "$build/bin/world_bench" --ticks 30; else "$bu
 "$build/bin/paced_sim_bench" --domain "$((domain + 10))" "${quick[@]}"
 "$repo/bench/experiment_bench.sh" "$build/bin" "$((domain + 20))" "${quick[@]}"
 "$build/bin/courier_bench" "${quick[@]}"
-"$build/bin/planner_bench" --jobshop-dir "$repo/services/planner/examples/jobshop"
+# planner_bench times MiniZinc + Gecode beside the planner when bench/install-minizinc.sh ran.
+if [[ ${#quick[@]} -gt 0 ]]; then planner_quick=(--jobshop-seconds 5 --repeats 1); else planner_quick=(); fi
+"$build/bin/planner_bench" --examples-dir "$repo/services/planner/examples" \
+  --minizinc-model "$repo/bench/jobshop.mzn" "${planner_quick[@]}"
 "$build/bin/executive_bench" "${quick[@]}"
 if [[ ${#quick[@]} -gt 0 ]]; then pairs=(--pairs 5); else pairs=(); fi
 # path_bench writes OMPL benchmark logs and a summary: into the build folder, not over docs/.

@@ -149,6 +149,46 @@ class Member final : public Procedure {
   Domain values_;
 };
 
+// The allowed tuples listed (an extensional constraint: the turn angle between two targets,
+// say). Generalised arc consistency: a tuple is supported while each of its values is in its
+// variable's domain; each variable keeps the values (sets) or the hull (intervals) of the
+// supported tuples.
+class Table final : public Procedure {
+ public:
+  Table(std::vector<VariableId> scope, std::vector<std::vector<double>> tuples)
+      : Procedure(std::move(scope)), tuples_(std::move(tuples)) {}
+  bool propagate(ConstraintNetwork& n) override {
+    const std::size_t k = scope_.size();
+    std::vector<std::vector<std::int64_t>> values(k);
+    std::vector<double> lo(k, HUGE_VAL), hi(k, -HUGE_VAL);
+    bool any = false;
+    for (const std::vector<double>& t : tuples_) {
+      bool supported = true;
+      for (std::size_t i = 0; i < k && supported; ++i)
+        supported = n.domain(scope_[i]).contains(t[i]);
+      if (!supported) continue;
+      any = true;
+      for (std::size_t i = 0; i < k; ++i) {
+        lo[i] = std::min(lo[i], t[i]);
+        hi[i] = std::max(hi[i], t[i]);
+        if (n.domain(scope_[i]).is_set()) values[i].push_back(std::int64_t(t[i]));
+      }
+    }
+    if (!any) return n.narrow_bounds(scope_[0], 1, 0);  // empties it: nothing is allowed
+    for (std::size_t i = 0; i < k; ++i) {
+      const bool ok = n.domain(scope_[i]).is_set()
+                          ? n.narrow(scope_[i], Domain::values(std::move(values[i])))
+                          : n.narrow_bounds(scope_[i], lo[i], hi[i]);
+      if (!ok) return false;
+    }
+    return true;
+  }
+  std::string name() const override { return "table"; }
+
+ private:
+  std::vector<std::vector<double>> tuples_;
+};
+
 }  // namespace
 
 std::unique_ptr<ConstraintProcedure> make_equal(VariableId a, VariableId b) {
@@ -171,6 +211,11 @@ std::unique_ptr<ConstraintProcedure> make_sum_product(VariableId s, VariableId r
 }
 std::unique_ptr<ConstraintProcedure> make_member(VariableId x, std::vector<std::int64_t> values) {
   return std::make_unique<Member>(x, std::move(values));
+}
+
+std::unique_ptr<ConstraintProcedure> make_table(std::vector<VariableId> vars,
+                                                std::vector<std::vector<double>> tuples) {
+  return std::make_unique<Table>(std::move(vars), std::move(tuples));
 }
 
 }  // namespace autonomy::planner

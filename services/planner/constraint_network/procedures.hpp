@@ -23,5 +23,8 @@ std::unique_ptr<ConstraintProcedure> make_sum_product(VariableId s, VariableId r
                                                       VariableId e);
 // x is one of values
 std::unique_ptr<ConstraintProcedure> make_member(VariableId x, std::vector<std::int64_t> values);
+// (vars...) is one of the tuples (each tuple has one value per variable)
+std::unique_ptr<ConstraintProcedure> make_table(std::vector<VariableId> vars,
+                                                std::vector<std::vector<double>> tuples);
 
 }  // namespace autonomy::planner

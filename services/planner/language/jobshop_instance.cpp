@@ -13,6 +13,7 @@ std::string jobshop_label(int job, int operation) {
 std::optional<JobShopInstance> parse_jobshop(std::string_view text, const std::string& file,
                                              Diagnostics* errors) {
   JobShopInstance inst;
+  inst.file = file;
   std::istringstream in{std::string(text)};
   std::string line;
   unsigned number = 0;
@@ -51,6 +52,7 @@ std::optional<JobShopInstance> parse_jobshop(std::string_view text, const std::s
                   std::to_string(ops.size()) + " operations, expected " +
                   std::to_string(inst.machines));
     inst.operations.push_back(std::move(ops));
+    inst.job_lines.push_back(number);
   }
   if (!header) return fail("empty instance");
   if (int(inst.operations.size()) != inst.jobs)
@@ -103,6 +105,11 @@ pb::Problem jobshop_problem(const JobShopInstance& inst) {
       g->add_arguments()->set_number(k);
       g->mutable_duration()->set_lb(duration);
       g->mutable_duration()->set_ub(duration);
+      if (std::size_t(j) < inst.job_lines.size()) {
+        g->mutable_location()->set_file(inst.file);
+        g->mutable_location()->set_line(inst.job_lines[j]);
+        g->mutable_location()->set_column(1);
+      }
       if (k > 0) {
         pb::FactRelation* r = p.add_relations();
         r->set_from(jobshop_label(j, k - 1));
@@ -110,6 +117,7 @@ pb::Problem jobshop_problem(const JobShopInstance& inst) {
         r->mutable_relation()->set_kind(pb::TemporalRelation::BEFORE);
         r->mutable_relation()->mutable_bounds()->set_lb(0);
         r->mutable_relation()->mutable_bounds()->set_ub(kNoBound);
+        if (std::size_t(j) < inst.job_lines.size()) *r->mutable_location() = g->location();
       }
     }
   }

@@ -18,6 +18,9 @@ struct JobShopInstance {
   int jobs = 0, machines = 0;
   // operations[j] = (machine, duration) in job order
   std::vector<std::vector<std::pair<int, long>>> operations;
+  // Where each job's line is, so conflicts name it: the file and one line number per job.
+  std::string file;
+  std::vector<unsigned> job_lines;
 };
 
 std::optional<JobShopInstance> parse_jobshop(std::string_view text, const std::string& file,

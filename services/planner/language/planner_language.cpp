@@ -332,6 +332,26 @@ class Parser {
 
   void parameter_constraint(pb::ParameterConstraint* c) {
     *c->mutable_location() = here();
+    if (accept_punct("(")) {  // (x, y, ...) in {(a, b, ...), ...}
+      c->set_kind(pb::ParameterConstraint::TABLE);
+      do {
+        *c->add_terms() = term();
+      } while (accept_punct(","));
+      expect_punct(")");
+      c->set_arity(std::uint32_t(c->terms_size()));
+      expect_word("in");
+      expect_punct("{");
+      do {
+        expect_punct("(");
+        for (std::uint32_t i = 0; i < c->arity(); ++i) {
+          if (i) expect_punct(",");
+          *c->add_terms() = term();
+        }
+        expect_punct(")");
+      } while (accept_punct(","));
+      expect_punct("}");
+      return;
+    }
     pb::Term first = term();
     if (accept_word("in")) {
       c->set_kind(pb::ParameterConstraint::MEMBER);

@@ -208,7 +208,7 @@ std::optional<DomainModel> build_domain_model(const pb::Model& in, Diagnostics* 
     if (def.min_duration > def.max_duration)
       check.error(p.location(), "predicate " + p.name() + ": duration lb > ub");
     for (const pb::ParameterConstraint& c : p.constraints()) {
-      ParameterConstraintDef cd{c.kind(), {}};
+      ParameterConstraintDef cd{c.kind(), {}, int(c.arity())};
       const ParameterType* typed = nullptr;  // the first parameter operand's type, for symbols
       for (const pb::Term& t : c.terms()) {
         if (t.has_parameter()) {
@@ -227,9 +227,23 @@ std::optional<DomainModel> build_domain_model(const pb::Model& in, Diagnostics* 
           cd.terms.push_back({TermRef::Kind::kConstant, -1, t.number()});
         }
       }
+      const bool table = c.kind() == pb::ParameterConstraint::TABLE;
+      const int arity = table ? int(c.arity()) : 0;
       for (int i = 0; i < c.terms_size(); ++i) {
         TermRef& r = cd.terms[i];
         const pb::Term& t = c.terms(i);
+        if (table) {
+          // A table's column is typed by its own variable; its scope names variables only.
+          typed = nullptr;
+          const int column = arity > 0 ? i % arity : 0;
+          if (i < arity) {
+            if (r.kind == TermRef::Kind::kConstant)
+              check.error(t.location(), "a table's columns are parameters or 'duration'");
+            continue;
+          }
+          if (column < int(cd.terms.size()) && cd.terms[column].kind == TermRef::Kind::kParameter)
+            typed = &def.parameters[cd.terms[column].parameter].type;
+        }
         if (r.kind == TermRef::Kind::kConstant && (r.parameter == -2 || t.has_symbol())) {
           std::string name = t.has_parameter() ? t.parameter() : t.symbol();
           r.parameter = -1;
@@ -248,8 +262,31 @@ std::optional<DomainModel> build_domain_model(const pb::Model& in, Diagnostics* 
         }
       }
       std::size_t need = c.kind() == pb::ParameterConstraint::SUM_PRODUCT ? 4 : 2;
-      if ((c.kind() == pb::ParameterConstraint::MEMBER && c.terms_size() < 2) ||
-          (c.kind() != pb::ParameterConstraint::MEMBER && std::size_t(c.terms_size()) != need))
+      if (table) {
+        if (arity < 1 || c.terms_size() <= arity || c.terms_size() % arity != 0)
+          check.error(c.location(), "a table needs its columns and whole tuples");
+        else
+          for (int i = arity; i < c.terms_size(); ++i) {
+            const TermRef& col = cd.terms[i % arity];
+            const TermRef& v = cd.terms[i];
+            if (col.kind != TermRef::Kind::kParameter || v.kind != TermRef::Kind::kConstant)
+              continue;
+            const ParameterType& type = def.parameters[col.parameter].type;
+            const bool symbolic = type.kind == ParameterType::Kind::kEnumeration ||
+                                  type.kind == ParameterType::Kind::kObject;
+            if (symbolic && c.terms(i).has_number())
+              check.error(c.terms(i).location(), "a number where " +
+                                                     def.parameters[col.parameter].name +
+                                                     " takes a value of its type");
+            else if ((type.kind == ParameterType::Kind::kInteger ||
+                      type.kind == ParameterType::Kind::kReal) &&
+                     (v.value < type.lb || v.value > type.ub))
+              check.error(c.terms(i).location(),
+                          "a value outside the type of " + def.parameters[col.parameter].name);
+          }
+      } else if ((c.kind() == pb::ParameterConstraint::MEMBER && c.terms_size() < 2) ||
+                 (c.kind() != pb::ParameterConstraint::MEMBER &&
+                  std::size_t(c.terms_size()) != need))
         check.error(c.location(), "constraint has the wrong number of operands");
       else if (cd.terms[0].kind == TermRef::Kind::kConstant &&
                c.kind() == pb::ParameterConstraint::MEMBER)

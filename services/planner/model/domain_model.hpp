@@ -38,6 +38,7 @@ struct TermRef {
 struct ParameterConstraintDef {
   pb::ParameterConstraint::Kind kind;
   std::vector<TermRef> terms;
+  int arity = 0;  // TABLE: the first `arity` terms are the columns, then the tuples' values
 };
 
 struct EffectDef {

@@ -1,5 +1,6 @@
 #include "flexible_plan.hpp"
 
+#include <algorithm>
 #include <map>
 
 #include "token_network.hpp"
@@ -69,6 +70,12 @@ FlexiblePlan extract_plan(const TokenNetwork& net) {
       const FactDef& f = problem.facts[t.fact];
       origin = std::string(f.initial ? "initial" : "goal") + (f.label.empty() ? "" : " " + f.label);
       if (pt.fact < 0) pt.fact = t.fact;
+      if (std::find(pt.facts.begin(), pt.facts.end(), t.fact) == pt.facts.end()) {
+        if (t.fact == pt.fact)
+          pt.facts.insert(pt.facts.begin(), t.fact);
+        else
+          pt.facts.push_back(t.fact);
+      }
     } else if (t.master != kNoToken && index.count(representative(t.master))) {
       origin = std::string(relation_name(t.relation)) + " of token " +
                std::to_string(index[representative(t.master)]);

@@ -19,8 +19,9 @@ struct PlanToken {
   std::vector<std::string> parameters;                      // values, sets or intervals, as text
   std::vector<std::pair<double, double>> parameter_bounds;  // lo, hi (enumeration indices)
   std::int64_t start_lb = 0, start_ub = 0, end_lb = 0, end_ub = 0, duration_lb = 0, duration_ub = 0;
-  std::string origin;  // "initial <label>", "goal <label>" or "<relation> of token <id>"
-  int fact = -1;       // the problem fact it achieves, or -1
+  std::string origin;      // "initial <label>", "goal <label>" or "<relation> of token <id>"
+  int fact = -1;           // the problem fact it achieves, or -1
+  std::vector<int> facts;  // every fact it achieves (goals merged into one token), fact first
   std::string timeline() const { return object + "." + attribute; }
 };
 

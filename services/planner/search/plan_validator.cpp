@@ -136,6 +136,16 @@ std::vector<std::string> validate_plan(const DomainModel& model, const PlanningP
         case K::MEMBER:
           ok = std::find(x.begin() + 1, x.end(), x[0]) != x.end();
           break;
+        case K::TABLE: {
+          const std::size_t k = std::size_t(std::max(c.arity, 1));
+          ok = false;
+          for (std::size_t i = k; i + k <= x.size() && !ok; i += k) {
+            bool row = true;
+            for (std::size_t j = 0; j < k; ++j) row &= std::abs(x[i + j] - x[j]) < 1e-6;
+            ok = row;
+          }
+          break;
+        }
         default:
           break;
       }
@@ -202,8 +212,10 @@ std::vector<std::string> validate_plan(const DomainModel& model, const PlanningP
   }
   // Goals and initial values: the token claiming each, its values and bounds; then relations.
   std::map<int, const PlanToken*> achiever;
-  for (const PlanToken& t : plan.tokens)
+  for (const PlanToken& t : plan.tokens) {
     if (t.fact >= 0) achiever[t.fact] = &t;
+    for (int f : t.facts) achiever.emplace(f, &t);  // goals merged into one token
+  }
   for (std::size_t f = 0; f < problem.facts.size(); ++f) {
     const FactDef& fact = problem.facts[f];
     const std::string name =
@@ -270,12 +282,14 @@ std::vector<std::string> validate_plan(const DomainModel& model, const PlanningP
       } else {
         std::sort(uses.begin(), uses.end(),
                   [](const Use& a, const Use& b) { return a.end < b.end; });
+        // Changes at the same time happen together (a charge ending as a drive ends).
         double level = res.initial_level;
-        for (const Use& u : uses) {
-          level += u.amount;
+        for (std::size_t i = 0; i < uses.size();) {
+          const std::int64_t at = uses[i].end;
+          for (; i < uses.size() && uses[i].end == at; ++i) level += uses[i].amount;
           if (level < res.min_level - 1e-9 || level > res.max_level + 1e-9) {
             std::ostringstream out;
-            out << object.name << "." << res.name << ": level " << level << " at " << u.end
+            out << object.name << "." << res.name << ": level " << level << " at " << at
                 << " outside [" << res.min_level << ", " << res.max_level << "]";
             fail(out.str());
             break;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <deque>
+#include <functional>
+#include <queue>
 
 namespace autonomy::planner {
 
@@ -314,7 +316,49 @@ std::vector<TemporalConstraintId> TemporalNetwork::negative_cycle() const {
   return cycle;
 }
 
-Time TemporalNetwork::shortest_distance(TimepointId from, TimepointId to) const {
+Time TemporalNetwork::shortest_distance(TimepointId from, TimepointId to, Time cutoff) const {
+  const std::size_t n = latest_.size();
+  // Potentials need finite latest times; without a horizon, the label-correcting search.
+  if (horizon_ >= kInfinity) return shortest_distances(from)[to];
+  for (TimepointId t : {from, to})
+    if (latest_[t] >= kInfinity || latest_[t] <= -kInfinity) return shortest_distances(from)[to];
+  // Reduced distance r(y) = d(from, y) + latest(from) - latest(y) >= 0.
+  auto reduced = [&](TimepointId x, TimepointId y, Time w) { return w + latest_[x] - latest_[y]; };
+  const Time reduced_cutoff =
+      cutoff >= kInfinity ? kInfinity : cutoff + latest_[from] - latest_[to];
+  std::vector<Time> dist(n, kInfinity);
+  std::vector<char> done(n, 0);
+  using Entry = std::pair<Time, TimepointId>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
+  dist[from] = 0;
+  heap.push({0, from});
+  auto relax = [&](TimepointId x, TimepointId y, Time w) {
+    const Time r = reduced(x, y, w);
+    if (r < 0) return false;  // stale potentials: not expected, answered the slow way
+    const Time v = dist[x] + r;
+    if (v < dist[y]) {
+      dist[y] = v;
+      heap.push({v, y});
+    }
+    return true;
+  };
+  while (!heap.empty()) {
+    auto [d, x] = heap.top();
+    heap.pop();
+    if (done[x]) continue;
+    if (x == to) return d - latest_[from] + latest_[to];
+    if (d > reduced_cutoff) return cutoff + 1;
+    done[x] = 1;
+    for (std::size_t e : out_[x])
+      if (!relax(x, edges_[e].to, edges_[e].weight)) return shortest_distances(from)[to];
+    if (x != origin()) relax(x, origin(), 0);
+    if (x == origin())
+      for (TimepointId t = 1; t < n; ++t) relax(x, t, horizon_);
+  }
+  return kInfinity;
+}
+
+std::vector<Time> TemporalNetwork::shortest_distances(TimepointId from) const {
   std::vector<Time> dist(earliest_.size(), kInfinity);
   std::vector<char> queued(earliest_.size(), 0);
   std::deque<TimepointId> queue{from};
@@ -338,7 +382,7 @@ Time TemporalNetwork::shortest_distance(TimepointId from, TimepointId to) const 
     if (x == origin() && horizon_ < kInfinity)
       for (TimepointId t = 1; t < earliest_.size(); ++t) relax(t, dist[x] + horizon_);
   }
-  return dist[to];
+  return dist;
 }
 
 }  // namespace autonomy::planner

@@ -68,7 +68,12 @@ class TemporalNetwork {
 
   // Exact shortest path from -> to (ub of to - from in the minimal network), by a
   // single-source search; kInfinity when unconstrained.
-  Time shortest_distance(TimepointId from, TimepointId to) const;
+  // Dijkstra on edge weights made non-negative by the latest times (exact shortest paths from
+  // the origin, so w(x, y) + latest(x) - latest(y) >= 0); with a cutoff it stops once every
+  // path left is longer, and then returns some value above the cutoff.
+  Time shortest_distance(TimepointId from, TimepointId to, Time cutoff = kInfinity) const;
+  // The same from one timepoint to every timepoint (one search for many questions).
+  std::vector<Time> shortest_distances(TimepointId from) const;
 
   struct Constraint {
     TimepointId from, to;

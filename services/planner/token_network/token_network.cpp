@@ -163,7 +163,9 @@ bool TokenNetwork::setup_token(TokenId id, const std::string& why) {
   for (const ParameterConstraintDef& c : pd.constraints) {
     std::vector<VariableId> vars;
     std::vector<std::int64_t> constants;
-    for (const TermRef& term : c.terms) {
+    const bool table = c.kind == pb::ParameterConstraint::TABLE;
+    for (std::size_t k = 0; k < (table ? std::size_t(c.arity) : c.terms.size()); ++k) {
+      const TermRef& term = c.terms[k];
       switch (term.kind) {
         case TermRef::Kind::kParameter:
           vars.push_back(tokens_[id].parameters[term.parameter]);
@@ -201,6 +203,16 @@ bool TokenNetwork::setup_token(TokenId id, const std::string& why) {
       case K::SUM_PRODUCT:
         cn_.add_constraint(make_sum_product(vars[0], vars[1], vars[2], vars[3]));
         break;
+      case K::TABLE: {
+        std::vector<std::vector<double>> tuples;
+        for (std::size_t i = std::size_t(c.arity); i + std::size_t(c.arity) <= c.terms.size();
+             i += std::size_t(c.arity)) {
+          tuples.emplace_back();
+          for (int k = 0; k < c.arity; ++k) tuples.back().push_back(c.terms[i + k].value);
+        }
+        cn_.add_constraint(make_table(vars, std::move(tuples)));
+        break;
+      }
       case K::MEMBER: {
         std::vector<std::int64_t> values;
         for (std::size_t i = 1; i < c.terms.size(); ++i)
@@ -507,14 +519,19 @@ bool TokenNetwork::settle() {
 // fixed point:
 //  - overload: every window [a, b] must hold the durations of the tokens entirely within it;
 //  - detectable precedence: when B cannot end before A's latest start, A precedes B, which is
-//    added to the temporal network (as the search would find out only by trying every slot).
+//    added to the temporal network (as the search would find out only by trying every slot);
+//  - edge finding on task intervals (Caseau and Laburthe 1995; Nuijten 1994): for the tokens
+//    Omega inside a window [est(a), lct(b)] and a token i outside it, when Omega and i cannot
+//    all fit before lct(b), i ends last, so every token of Omega precedes i; when they cannot
+//    all fit after est(a), i precedes them all. Each is added as precedences too.
+// Optional goals still free are left out: leaving them out must stay possible.
 bool TokenNetwork::exclusion_propagation() {
   for (int round = 0; round < 8; ++round) {
     std::vector<std::vector<TokenId>> by_timeline(timelines_.size());
     for (TokenId id = 0; id < tokens_.size(); ++id) {
       const Token& t = tokens_[id];
       if (t.state != Token::State::kFree && t.state != Token::State::kPlaced) continue;
-      if (t.min_duration <= 0) continue;
+      if (t.min_duration <= 0 || (t.optional && t.state == Token::State::kFree)) continue;
       bool decided = true;
       for (VariableId v : t.parameters) decided &= cn_.domain(v).is_singleton();
       if (decided) by_timeline[t.timeline].push_back(id);
@@ -553,6 +570,58 @@ bool TokenNetwork::exclusion_propagation() {
             return false;
           }
         }
+      }
+      // i before j, once (a known pair is not added twice; both placed: their slots order
+      // them; bounds already apart: nothing to add).
+      auto precede = [&](std::size_t i, std::size_t j, const char* rule) {
+        const Token &a = tokens_[members[i]], &b = tokens_[members[j]];
+        if (a.state == Token::State::kPlaced && b.state == Token::State::kPlaced) return true;
+        if (tn_.latest(a.end) <= tn_.earliest(b.start)) return true;
+        auto key = std::make_pair(members[i], members[j]);
+        if (!precedences_.insert(key).second) return true;
+        on_undo([this, key] { precedences_.erase(key); });
+        added = true;
+        return add_temporal(a.end, b.start, 0, kInfinity,
+                            std::string(rule) + " on " + timelines_[a.timeline].name);
+      };
+      constexpr std::size_t kEdgeFindingLimit = 32;  // task intervals cost n^3 per timeline
+      if (members.size() <= kEdgeFindingLimit) {
+        const std::size_t n = members.size();
+        // Per token: the tokens that must end before it starts, and those it must precede.
+        std::vector<std::uint32_t> after(n, 0), before(n, 0);
+        // Omega grows as the est threshold goes down (tokens by est, latest first); a token i
+        // is pushed only when d(i) exceeds the slack lct(b) - est(a) - p(Omega), so windows
+        // with more slack than the longest token are skipped.
+        std::vector<std::size_t> by_est(n);
+        for (std::size_t k = 0; k < n; ++k) by_est[k] = k;
+        std::sort(by_est.begin(), by_est.end(),
+                  [&](std::size_t x, std::size_t y) { return w[x].est > w[y].est; });
+        Time longest = 0;
+        for (const Window& x : w) longest = std::max(longest, x.d);
+        for (std::size_t b = 0; b < n; ++b) {
+          std::uint32_t omega = 0;
+          Time p = 0;
+          for (std::size_t r = 0; r < n; ++r) {
+            const std::size_t k = by_est[r];
+            if (w[k].lct <= w[b].lct) {
+              omega |= std::uint32_t{1} << k;
+              p += w[k].d;
+            }
+            if (r + 1 < n && w[by_est[r + 1]].est == w[k].est) continue;  // ties: all of them
+            const Time est = w[k].est;
+            if (omega == 0 || est >= w[b].lct || w[b].lct - est - p >= longest) continue;
+            for (std::size_t i = 0; i < n; ++i) {
+              if (omega & (std::uint32_t{1} << i)) continue;
+              if (std::min(w[i].est, est) + p + w[i].d > w[b].lct) after[i] |= omega;
+              if (std::max(w[i].lct, w[b].lct) - p - w[i].d < est) before[i] |= omega;
+            }
+          }
+        }
+        for (std::size_t i = 0; i < n; ++i)
+          for (std::size_t k = 0; k < n; ++k) {
+            if ((after[i] >> k) & 1u && !precede(k, i, "edge finding")) return false;
+            if ((before[i] >> k) & 1u && !precede(i, k, "edge finding")) return false;
+          }
       }
       for (std::size_t i = 0; i < members.size(); ++i) {
         for (std::size_t j = 0; j < members.size(); ++j) {
@@ -675,13 +744,21 @@ std::vector<Flaw> TokenNetwork::resource_flaws() const {
       auto start = [&](TokenId id) { return tn_.earliest(tokens_[id].start); };
       auto end = [&](TokenId id) { return tn_.earliest(tokens_[id].end); };
       if (res.kind == pb::Resource::REUSABLE) {
-        // Pairs first: exact under every dispatch of the flexible plan.
+        // Pairs first: exact under every dispatch of the flexible plan. Tokens of one
+        // timeline are ordered already; bounds settle most other pairs; the rest take a
+        // shortest-path search that stops beyond distance 0.
+        auto distance = [&](TimepointId from, TimepointId to) {
+          return tn_.shortest_distance(from, to, 0);
+        };
         for (std::size_t i = 0; i < uses.size(); ++i)
           for (std::size_t j = i + 1; j < uses.size(); ++j) {
             if (uses[i].amount + uses[j].amount <= res.capacity + 1e-9) continue;
             const Token &a = tokens_[uses[i].id], &b = tokens_[uses[j].id];
-            const bool apart = tn_.shortest_distance(b.start, a.end) <= 0 ||
-                               tn_.shortest_distance(a.start, b.end) <= 0;
+            if (a.timeline == b.timeline) continue;
+            if (tn_.latest(a.end) <= tn_.earliest(b.start) ||
+                tn_.latest(b.end) <= tn_.earliest(a.start))
+              continue;
+            const bool apart = distance(b.start, a.end) <= 0 || distance(a.start, b.end) <= 0;
             if (apart) continue;
             Flaw f{Flaw::Kind::kResourceConflict, uses[i].id};
             f.involved = {uses[i].id, uses[j].id};

@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
   app.add_option("--problem", problem_file, "problem file (planner language)");
   app.add_option("--jobshop", jobshop_file,
                  "an OR-Library job-shop instance instead of model + problem");
-  app.add_option("--engine", engine, "search engine: chronological or discrepancy");
+  app.add_option("--engine", engine, "search engine: chronological, discrepancy or sampling");
   app.add_option("--seconds", seconds, "time budget (0: none)");
   app.add_option("--max-decisions", max_decisions, "decision budget (0: none)");
   app.add_option("--svg", svg_file, "write a Gantt chart of the plan here");

@@ -107,6 +107,14 @@ TEST(ConstraintProcedures, NeverRemoveAnAllowedValue) {
          return make_member(v[0], {-1, 2, 3});
        },
        [](auto& x) { return x[0] == -1 || x[0] == 2 || x[0] == 3; }},
+      {"table", 3,
+       [](auto& v) {
+         return make_table({v[0], v[1], v[2]}, {{0, 1, 4}, {1, 0, 4}, {2, -1, 3}, {-3, 2, 0}});
+       },
+       [](auto& x) {
+         return (x[0] == 0 && x[1] == 1 && x[2] == 4) || (x[0] == 1 && x[1] == 0 && x[2] == 4) ||
+                (x[0] == 2 && x[1] == -1 && x[2] == 3) || (x[0] == -3 && x[1] == 2 && x[2] == 0);
+       }},
   };
   std::mt19937 rng(11);
   std::uniform_int_distribution<int> value(-3, 4), count(1, 4), coin(0, 1);

@@ -95,6 +95,13 @@ TEST(PlannerLanguage, MistakesAreReportedAtFileLineColumn) {
       {"predicate c() duration [5, 2]\n", 4, 1, "duration lb > ub"},
       {"class C { attribute p = a $ }\n", 4, 27, "unexpected character"},
       {"predicate c(y: int[0, 2]) where y == z\n", 4, 38, "neither a parameter"},
+      {"predicate c(y: int[0, 2], z: int[0, 9]) where (y, z) in {(1, 2), (3, 4)}\n", 4, 67,
+       "outside the type of y"},
+      {"predicate c(y: int[0, 2]) where (y, 5) in {(1, 2)}\n", 4, 37, "columns are parameters"},
+      {"predicate c(y: int[0, 2], z: int[0, 9]) where (y, z) in {(1, 2, 3)}\n", 4, 63, "expected"},
+      {"predicate c(y: int[0, 2]) where (y) in {(moon)}\n", 4, 42, "neither a parameter"},
+      {"enum E { u, v }\npredicate c(e: E, y: int[0, 2]) where (e, y) in {(u, 1), (1, 2)}\n", 5, 59,
+       "a number where e"},
   };
   for (const BadCase& c : cases) {
     Diagnostics errors;

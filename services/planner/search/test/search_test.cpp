@@ -272,13 +272,33 @@ TEST_P(JobShop, SchedulesAreValidAndNoBetterThanTheOptimum) {
       r.statistics.decisions, r.statistics.backtracks, improvements.size());
 }
 
+// Limited discrepancy search finds good schedules early, and its last, unlimited probe keeps
+// it complete: la01 proved optimal within 40000 decisions (plain backtracking takes 46000).
+TEST(JobShopEngines, LimitedDiscrepancyProvesLa01) {
+  Diagnostics errors;
+  const std::string file = std::string(PLANNER_EXAMPLES_DIR "/jobshop/la01");
+  auto inst = parse_jobshop(*read_text_file(file, &errors), file, &errors);
+  ASSERT_TRUE(inst) << to_string(errors);
+  auto model = build_domain_model(jobshop_model(*inst), &errors);
+  auto problem = build_problem(*model, jobshop_problem(*inst), &errors);
+  ASSERT_TRUE(model && problem) << to_string(errors);
+  PlanningOptions options;
+  options.engine = "discrepancy";
+  options.termination.max_decisions = 40000;
+  PlanResult r = make_plan(*model, *problem, options);
+  ASSERT_TRUE(r.plan);
+  EXPECT_EQ(validate_plan(*model, *problem, *r.plan), std::vector<std::string>{});
+  EXPECT_EQ(r.status, PlanStatus::kOptimal);
+  EXPECT_EQ(r.plan->makespan, 666);
+}
+
 INSTANTIATE_TEST_SUITE_P(Instances, JobShop,
                          ::testing::Values(JobShopCase{"ft06", 55, 20000, true},
                                            JobShopCase{"la05", 593, 20000, true},
                                            JobShopCase{"la01", 666, 20000, false},
-                                           JobShopCase{"la02", 655, 20000, false},
+                                           JobShopCase{"la02", 655, 20000, true},
                                            JobShopCase{"la03", 597, 20000, false},
-                                           JobShopCase{"la04", 590, 20000, false}),
+                                           JobShopCase{"la04", 590, 20000, true}),
                          [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace

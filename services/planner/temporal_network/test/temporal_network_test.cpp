@@ -169,8 +169,17 @@ TEST(TemporalNetwork, AgreesWithFloydWarshallOnRandomNetworks) {
         EXPECT_EQ(tn.latest(t), d[0][t]) << "round " << round << " t" << t;
         EXPECT_EQ(tn.earliest(t), -d[t][0]) << "round " << round << " t" << t;
       }
-      TimepointId x = pick(rng), y = pick(rng);
-      EXPECT_EQ(tn.shortest_distance(x, y), d[x][y]);
+      for (TimepointId x = 0; x < tn.timepoint_count(); ++x)
+        for (TimepointId y = 0; y < tn.timepoint_count(); ++y) {
+          ASSERT_EQ(tn.shortest_distance(x, y), d[x][y]) << "round " << round;
+          ASSERT_EQ(tn.shortest_distances(x)[y], d[x][y]);
+          // With a cutoff: exact at or below it, above it otherwise.
+          const Time cutoff = lb(rng);
+          if (d[x][y] <= cutoff)
+            ASSERT_EQ(tn.shortest_distance(x, y, cutoff), d[x][y]);
+          else
+            ASSERT_GT(tn.shortest_distance(x, y, cutoff), cutoff);
+        }
     }
   }
   EXPECT_GT(rejected, 10);
