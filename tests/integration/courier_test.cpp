@@ -141,12 +141,12 @@ class CourierTest : public ProcessTest {
     c.to = to;
     command_writer_->write(c);
   }
-  // Two parcels in the east (stations at for them) and the blue letter in the
-  // west: job-1 and job-2 east, job-3 west.
+  // Two parcels in the east (stations at for them, 5.5 m apart) and the blue
+  // letter in the west: job-1 and job-2 east, job-3 west.
   void send_fleet_jobs() {
     ASSERT_TRUE(await_ready(*beats_, *courier_));
     deliver("e1", "parcel-e1", "a119-desk", "a112-desk");
-    deliver("e2", "parcel-e2", "a117-desk", "mail-tray");
+    deliver("e2", "parcel-e2", "a117-desk", "a119-desk");
     deliver("w1", "letter-3", "meeting-table", "librarian-desk");
     ASSERT_TRUE(await("three commands answered", [&] {
       poll();
@@ -500,7 +500,7 @@ TEST_F(CourierTest, ARobotAttachedWhileJobsRunGetsWork) {
   }
   EXPECT_TRUE(explained) << allocations;
   EXPECT_TRUE(object_tick("parcel-e1", "", "a112-desk"));
-  EXPECT_TRUE(object_tick("parcel-e2", "", "mail-tray"));
+  EXPECT_TRUE(object_tick("parcel-e2", "", "a119-desk"));
   EXPECT_TRUE(object_tick("letter-3", "", "librarian-desk"));
 }
 
