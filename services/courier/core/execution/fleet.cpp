@@ -44,7 +44,8 @@ void CourierExecutive::add_robot(const std::string& id, int capacity) {
   }
   robots_[id] = std::move(r);
   event(ExecutionEvent::Kind::robot_joined,
-        id + (back ? " is back in the fleet" : " joined the fleet") + " (capacity " + std::to_string(std::max(1, capacity)) + ")");
+        id + (back ? " is back in the fleet" : " joined the fleet") + " (capacity " +
+            std::to_string(std::max(1, capacity)) + ")");
   for (auto& [job_id, job] : jobs_) {
     if (job.state != JobState::stranded || job.robot != id) continue;
     job.state = JobState::queued;
@@ -114,8 +115,8 @@ void CourierExecutive::remove_robot(const std::string& id, const std::string& wh
       std::string what = job.object.id + " stranded aboard " + id;
       if (handing_over) {
         const HandoverOrder& h = r.handover->order;
-        what = job.object.id + (h.load ? " may be aboard " : " may still be aboard ") + id + " (its " +
-               (h.load ? "load" : "unload") + " at " + h.place + " was not answered)";
+        what = job.object.id + (h.load ? " may be aboard " : " may still be aboard ") + id +
+               " (its " + (h.load ? "load" : "unload") + " at " + h.place + " was not answered)";
       }
       job.state = JobState::stranded;
       job.phase = JobPhase::none;
@@ -131,8 +132,10 @@ void CourierExecutive::remove_robot(const std::string& id, const std::string& wh
       job.phase = JobPhase::none;
       job.estimated_completion_s.reset();
       job.allocation.clear();
-      if (job.state != JobState::opportunistic) job.reason = "reallocated: " + id + " left (" + why + ") at " + clock_text(now_s);
-      event(ExecutionEvent::Kind::reallocated, "job " + job_id + " reallocated: " + id + " left (" + why + ")");
+      if (job.state != JobState::opportunistic)
+        job.reason = "reallocated: " + id + " left (" + why + ") at " + clock_text(now_s);
+      event(ExecutionEvent::Kind::reallocated,
+            "job " + job_id + " reallocated: " + id + " left (" + why + ")");
       changed(job);
     }
   }

@@ -10,13 +10,15 @@ FleetRoster::FleetRoster(std::set<std::string> declared, double lost_after_s)
     : declared_(std::move(declared)), lost_after_s_(lost_after_s) {}
 
 std::vector<RosterChange> FleetRoster::on_heartbeat(const std::string& robot, BeatKind kind,
-                                                    const std::vector<std::string>& capabilities, double now_s) {
+                                                    const std::vector<std::string>& capabilities,
+                                                    double now_s) {
   std::vector<RosterChange> out;
   const bool is_member = member(robot);
   switch (kind) {
     case BeatKind::ready: {
-      const bool courier = declared_.count(robot) != 0 ||
-                           std::find(capabilities.begin(), capabilities.end(), kCourierCapability) != capabilities.end();
+      const bool courier =
+          declared_.count(robot) != 0 || std::find(capabilities.begin(), capabilities.end(),
+                                                   kCourierCapability) != capabilities.end();
       if (is_member || courier) last_heard_[robot] = now_s;
       if (!is_member && courier) out.push_back({robot, true, ""});
       return out;
@@ -40,7 +42,9 @@ std::vector<RosterChange> FleetRoster::expire(double now_s) {
   for (auto it = last_heard_.begin(); it != last_heard_.end();) {
     if (now_s - it->second > lost_after_s_) {
       out.push_back({it->first, false,
-                     "heartbeat lost: none for " + std::to_string(static_cast<long>(std::lround(now_s - it->second))) + " s"});
+                     "heartbeat lost: none for " +
+                         std::to_string(static_cast<long>(std::lround(now_s - it->second))) +
+                         " s"});
       it = last_heard_.erase(it);
     } else {
       ++it;

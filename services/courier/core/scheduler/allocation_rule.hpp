@@ -21,9 +21,9 @@ namespace autonomy::courier::scheduling {
 
 struct AllocationReason {
   int job = -1;
-  int courier = -1;            // where the schedule put it
-  int alternative = -1;        // the best other courier, -1 when no other can do it
-  double completion_s = 0.0;   // on `courier`
+  int courier = -1;           // where the schedule put it
+  int alternative = -1;       // the best other courier, -1 when no other can do it
+  double completion_s = 0.0;  // on `courier`
   std::optional<double> alternative_completion_s;  // on `alternative`, after the best insertion
   Objective fleet_difference;  // fleet objective with the move minus the schedule's (per term)
   std::string text;            // "assigned to rhino2: 3 min earlier than rhino1"
@@ -33,7 +33,8 @@ constexpr int kMaxInsertionTries = 400;
 
 // One entry per job the schedule does; empty when the problem has one courier or the schedule is
 // not ok. Jobs aboard a courier say so ("aboard rhino1": no choice).
-std::vector<AllocationReason> explain_allocation(const SchedulingProblem& problem, const JobSchedule& schedule);
+std::vector<AllocationReason> explain_allocation(const SchedulingProblem& problem,
+                                                 const JobSchedule& schedule);
 
 // "40 s", "3 min", "1 h 05 min" for a positive duration.
 std::string duration_text(double seconds);

@@ -46,7 +46,8 @@ class FleetScheduler : public ScheduleSource {
             if (plan.routes[id].size() < plan.routes[robot].size()) robot = id;
         }
       }
-      if (j.aboard.empty()) plan.routes[robot].push_back({j.id, true, j.pickup, "", t[robot] += 60, t[robot]});
+      if (j.aboard.empty())
+        plan.routes[robot].push_back({j.id, true, j.pickup, "", t[robot] += 60, t[robot]});
       plan.routes[robot].push_back({j.id, false, j.destination, "", t[robot] += 60, t[robot]});
       plan.completion_s[j.id] = t[robot];
       plan.allocation[j.id] = "assigned to " + robot + ": test";
@@ -57,7 +58,8 @@ class FleetScheduler : public ScheduleSource {
   std::map<std::string, std::string> prefer;
 };
 
-Job delivery(const std::string& id, const std::string& object, const std::string& from, const std::string& to) {
+Job delivery(const std::string& id, const std::string& object, const std::string& from,
+             const std::string& to) {
   Job j;
   j.id = id;
   j.command_id = "c-" + id;
@@ -124,7 +126,8 @@ TEST_F(FleetTest, ARobotJoiningWhileJobsRunGetsWorkAtTheNextReschedule) {
   ASSERT_EQ(scheduler_.requests.back().robots.size(), 2u);
   EXPECT_EQ(scheduler_.requests.back().robots[1].capacity, 2);
   ASSERT_EQ(goals_.count("rhino2"), 1u);
-  EXPECT_NE(goals_["rhino2"].goal_id.find("librarian-desk"), std::string::npos) << goals_["rhino2"].goal_id;
+  EXPECT_NE(goals_["rhino2"].goal_id.find("librarian-desk"), std::string::npos)
+      << goals_["rhino2"].goal_id;
   EXPECT_EQ(exec_.job("job-2")->robot, "rhino2");
   EXPECT_EQ(exec_.job("job-2")->allocation, "assigned to rhino2: test");
   ASSERT_EQ(texts(ExecutionEvent::Kind::robot_joined).size(), 2u);
@@ -143,7 +146,7 @@ TEST_F(FleetTest, ALostRobotsQueuedJobsGoToTheOtherAndItsObjectIsStrandedWhereIt
   step();
   reach("rhino2", 4.0, 10.7);  // at the meeting table
   ASSERT_EQ(handovers_.count("rhino2"), 1u);
-  complete("rhino2");            // the red letter is aboard rhino2
+  complete("rhino2");  // the red letter is aboard rhino2
   ASSERT_EQ(exec_.job("job-1")->object_carrier, "rhino2");
   exec_.on_pose("rhino2", 19.2, 3.1);  // on its way, near the A-114 desk
 
@@ -154,7 +157,8 @@ TEST_F(FleetTest, ALostRobotsQueuedJobsGoToTheOtherAndItsObjectIsStrandedWhereIt
   EXPECT_EQ(stranded->state, JobState::stranded);
   EXPECT_EQ(stranded->robot, "rhino2");
   EXPECT_EQ(stranded->reason,
-            "red stranded aboard rhino2, last seen at (19.2, 3.1) near a114-desk in A-114 at 09:00:47: heartbeat lost");
+            "red stranded aboard rhino2, last seen at (19.2, 3.1) near a114-desk in A-114 at "
+            "09:00:47: heartbeat lost");
   ASSERT_EQ(texts(ExecutionEvent::Kind::stranded).size(), 1u);
   EXPECT_EQ(texts(ExecutionEvent::Kind::stranded)[0], "job job-1: " + stranded->reason);
   ASSERT_EQ(texts(ExecutionEvent::Kind::robot_left).size(), 1u);
@@ -162,11 +166,13 @@ TEST_F(FleetTest, ALostRobotsQueuedJobsGoToTheOtherAndItsObjectIsStrandedWhereIt
   for (const PlanJob& j : scheduler_.requests.back().jobs) EXPECT_NE(j.id, "job-1");
   ASSERT_EQ(scheduler_.requests.back().robots.size(), 1u);
   EXPECT_EQ(exec_.job("job-2")->robot, "rhino");
-  EXPECT_NE(exec_.job("job-2")->allocation.find("(reallocated: rhino2 left (heartbeat lost) at 09:00:47)"),
+  EXPECT_NE(exec_.job("job-2")->allocation.find(
+                "(reallocated: rhino2 left (heartbeat lost) at 09:00:47)"),
             std::string::npos)
       << exec_.job("job-2")->allocation;
   ASSERT_EQ(texts(ExecutionEvent::Kind::reallocated).size(), 1u);
-  EXPECT_EQ(texts(ExecutionEvent::Kind::reallocated)[0], "job job-2 reallocated: rhino2 left (heartbeat lost)");
+  EXPECT_EQ(texts(ExecutionEvent::Kind::reallocated)[0],
+            "job job-2 reallocated: rhino2 left (heartbeat lost)");
   EXPECT_EQ(exec_.robot_ids(), std::vector<std::string>{"rhino"});
 
   // rhino2 comes back (its behavior restarted): the letter's job goes on, on rhino2.
@@ -176,9 +182,11 @@ TEST_F(FleetTest, ALostRobotsQueuedJobsGoToTheOtherAndItsObjectIsStrandedWhereIt
   EXPECT_EQ(exec_.job("job-1")->state, JobState::queued);
   step();
   ASSERT_EQ(texts(ExecutionEvent::Kind::resumed).size(), 1u);
-  EXPECT_EQ(texts(ExecutionEvent::Kind::robot_joined).back(), "rhino2 is back in the fleet (capacity 3)");
+  EXPECT_EQ(texts(ExecutionEvent::Kind::robot_joined).back(),
+            "rhino2 is back in the fleet (capacity 3)");
   ASSERT_EQ(goals_.count("rhino2"), 1u);
-  EXPECT_NE(goals_["rhino2"].goal_id.find("michael-desk"), std::string::npos) << goals_["rhino2"].goal_id;
+  EXPECT_NE(goals_["rhino2"].goal_id.find("michael-desk"), std::string::npos)
+      << goals_["rhino2"].goal_id;
   EXPECT_EQ(exec_.job("job-1")->state, JobState::underway);
 }
 
@@ -193,7 +201,8 @@ TEST_F(FleetTest, AHandoverUnansweredWhenTheRobotWasLostIsAskedAgainWithItsIdWhe
   exec_.remove_robot("rhino", "stopped", now_);
   step();
   EXPECT_EQ(exec_.job("job-1")->state, JobState::stranded);
-  EXPECT_NE(exec_.job("job-1")->reason.find("red may be aboard rhino (its load at meeting-table was not answered)"),
+  EXPECT_NE(exec_.job("job-1")->reason.find(
+                "red may be aboard rhino (its load at meeting-table was not answered)"),
             std::string::npos)
       << exec_.job("job-1")->reason;
   handovers_.clear();

@@ -37,8 +37,8 @@ TEST(AllocationRule, NamesTheTimeGainedAgainstTheOtherCourier) {
 }
 
 TEST(AllocationRule, SaysWhatTheOthersWouldLoseWhenTheJobAloneWouldNotBeLater) {
-  SchedulingProblem p = two_couriers(1);  // r1 in the hall, r2 at the A-111 table
-  p.jobs.push_back(job("a", 1, 0, "red"));    // both from A-111 to the hall
+  SchedulingProblem p = two_couriers(1);    // r1 in the hall, r2 at the A-111 table
+  p.jobs.push_back(job("a", 1, 0, "red"));  // both from A-111 to the hall
   p.jobs.push_back(job("b", 1, 0, "green"));
   auto engine = make_scheduler_engine("exact");
   const JobSchedule s = engine->solve(p, {});
@@ -49,7 +49,8 @@ TEST(AllocationRule, SaysWhatTheOthersWouldLoseWhenTheJobAloneWouldNotBeLater) {
   ASSERT_NE(reasons[0].courier, reasons[1].courier);
   const AllocationReason& on_r1 = reasons[0].courier == 0 ? reasons[0] : reasons[1];
   // On r2 it would ride along: done at 25 s instead of 30, the other job 10 s later.
-  EXPECT_EQ(on_r1.text, "assigned to r1: r2 would be 5 s earlier but the others done 10 s later in total");
+  EXPECT_EQ(on_r1.text,
+            "assigned to r1: r2 would be 5 s earlier but the others done 10 s later in total");
   EXPECT_EQ(on_r1.fleet_difference.late_jobs, 0);
   EXPECT_DOUBLE_EQ(on_r1.fleet_difference.completion_s, 5.0);
   EXPECT_DOUBLE_EQ(on_r1.fleet_difference.travel_s, -20.0);
