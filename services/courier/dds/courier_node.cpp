@@ -62,6 +62,7 @@ CourierNode::CourierNode(service::Service& service, CourierNodeOptions options)
       state_topic_(service.participant(), dds::topics::robot_state),
       door_topic_(service.participant(), dds::topics::door_observation),
       goal_topic_(service.participant(), dds::topics::nav_goal),
+      cancel_topic_(service.participant(), dds::topics::nav_cancel),
       goal_status_topic_(service.participant(), dds::topics::goal_status),
       handover_request_topic_(service.participant(), dds::topics::handover_request),
       handover_status_topic_(service.participant(), dds::topics::handover_status),
@@ -77,6 +78,7 @@ CourierNode::CourierNode(service::Service& service, CourierNodeOptions options)
       schedule_writer_(service.participant(), schedule_topic_),
       report_writer_(service.participant(), report_topic_),
       goal_writer_(service.participant(), goal_topic_),
+      cancel_writer_(service.participant(), cancel_topic_),
       handover_writer_(service.participant(), handover_request_topic_),
       lockstep_(service.participant(), service.loop(), "courier/" + service.options().instance,
                 [this](const msg::SimClock& c) { on_tick(c); }) {
@@ -267,6 +269,7 @@ void CourierNode::carry_out(Orders orders, int64_t tick) {
     handover_writer_.write({h.request_id, "courier", h.robot, h.load ? msg::HandoverKind::Load : msg::HandoverKind::Unload,
                             h.place, h.object_id});
   }
+  for (const auto& c : orders.cancels) cancel_writer_.write({c.robot, c.goal_id, c.reason});
   for (const auto& g : orders.goals) goal_writer_.write({g.robot, g.goal_id, g.x, g.y, g.tolerance_m, ""});
   for (const auto& note : orders.schedules) {
     msg::CourierSchedule s;

@@ -78,6 +78,7 @@ class CourierNode {
   dds::Topic<msg::RobotState> state_topic_;
   dds::Topic<msg::DoorObservation> door_topic_;
   dds::Topic<msg::NavGoal> goal_topic_;
+  dds::Topic<msg::NavCancel> cancel_topic_;
   dds::Topic<msg::GoalStatus> goal_status_topic_;
   dds::Topic<msg::HandoverRequest> handover_request_topic_;
   dds::Topic<msg::HandoverStatus> handover_status_topic_;
@@ -93,6 +94,7 @@ class CourierNode {
   dds::Writer<msg::CourierSchedule> schedule_writer_;
   dds::Writer<msg::CourierReport> report_writer_;
   dds::Writer<msg::NavGoal> goal_writer_;
+  dds::Writer<msg::NavCancel> cancel_writer_;
   dds::Writer<msg::HandoverRequest> handover_writer_;
   service::LockstepClient lockstep_;
 };

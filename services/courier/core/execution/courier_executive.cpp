@@ -70,6 +70,7 @@ const char* to_string(ExecutionEvent::Kind k) {
     case ExecutionEvent::Kind::reallocated: return "reallocated";
     case ExecutionEvent::Kind::stranded: return "stranded";
     case ExecutionEvent::Kind::resumed: return "resumed";
+    case ExecutionEvent::Kind::goal_cancelled: return "goal_cancelled";
   }
   return "?";
 }
@@ -639,6 +640,15 @@ void CourierExecutive::dispatch(Robot& robot, double now_s) {
       break;
     }
   if (!next) {
+    if (!robot.goal_id.empty()) {
+      // The place it drives to is no longer needed (its job went to another robot, or ended):
+      // it stops rather than drive on into a room another robot may be bound for.
+      const std::string reason = "nothing left for " + robot.id + " at " + robot.goal_place;
+      orders_.cancels.push_back({robot.id, robot.goal_id, reason});
+      event(ExecutionEvent::Kind::goal_cancelled, "goal " + robot.goal_id + " cancelled: " + reason + " (" + clock_text(now_s) + ")");
+      robot.goal_id.clear();
+      robot.goal_place.clear();
+    }
     idle_policy(robot, now_s);
     return;
   }

@@ -51,6 +51,14 @@ struct NavGoalOrder {
   double tolerance_m = 0.0;
 };
 
+// A navigation goal of ours that is no longer needed (its job went to another robot): the robot
+// stops instead of driving on into a room another robot is bound for.
+struct GoalCancelOrder {
+  std::string robot;
+  std::string goal_id;
+  std::string reason;
+};
+
 struct HandoverOrder {
   std::string robot;
   std::string request_id;
@@ -82,7 +90,7 @@ struct ExecutionEvent {
   enum class Kind {
     accepted, revised, heading, loaded, unloaded, door_closed, door_opened, goal_blocked, goal_ended,
     handover_failed, handover_refused, failed_over, opportunity_taken, opportunity_declined, returning, finished,
-    schedule_failed, robot_joined, robot_left, reallocated, stranded, resumed
+    schedule_failed, robot_joined, robot_left, reallocated, stranded, resumed, goal_cancelled
   };
   Kind kind;
   std::string text;
@@ -95,12 +103,13 @@ struct Orders {
   std::vector<std::string> changed_jobs;
   std::vector<HandoverOrder> handovers;
   std::vector<NavGoalOrder> goals;
+  std::vector<GoalCancelOrder> cancels;
   std::vector<ScheduleNote> schedules;
   std::vector<ReportNote> reports;
   std::vector<ExecutionEvent> events;  // what happened, in order (logs, tests, pictures)
   bool empty() const {
-    return changed_jobs.empty() && handovers.empty() && goals.empty() && schedules.empty() && reports.empty() &&
-           events.empty();
+    return changed_jobs.empty() && handovers.empty() && goals.empty() && cancels.empty() && schedules.empty() &&
+           reports.empty() && events.empty();
   }
 };
 

@@ -134,6 +134,34 @@ TEST_F(FleetTest, ARobotJoiningWhileJobsRunGetsWorkAtTheNextReschedule) {
   EXPECT_EQ(texts(ExecutionEvent::Kind::robot_joined)[1], "rhino2 joined the fleet (capacity 2)");
 }
 
+TEST_F(FleetTest, ARobotWhoseJobWentToAnotherStopsInsteadOfDrivingOn) {
+  exec_.add_robot("rhino", 3);
+  exec_.add_robot("rhino2", 3);
+  exec_.on_pose("rhino", 1.5, 8.0);
+  exec_.on_pose("rhino2", 30.0, 8.0);
+  scheduler_.prefer = {{"job-1", "rhino"}, {"job-2", "rhino2"}};
+  exec_.add_job(delivery("job-1", "red", "meeting-table", "michael-desk"), now_);
+  exec_.add_job(delivery("job-2", "green", "librarian-desk", "a114-desk"), now_);
+  step();
+  ASSERT_EQ(goals_.count("rhino2"), 1u);
+  const std::string goal = goals_["rhino2"].goal_id;
+  exec_.on_goal("rhino2", goal, GoalOutcome::active, "", now_);
+  // A reschedule gives the green book to rhino: rhino2's drive west is no longer needed.
+  scheduler_.prefer["job-2"] = "rhino";
+  now_ += 10;
+  exec_.add_job(delivery("job-3", "blue", "meeting-table", "a114-desk"), now_);
+  scheduler_.prefer["job-3"] = "rhino";
+  const Orders o = step();
+  ASSERT_EQ(o.cancels.size(), 1u);
+  EXPECT_EQ(o.cancels[0].robot, "rhino2");
+  EXPECT_EQ(o.cancels[0].goal_id, goal);
+  EXPECT_EQ(o.cancels[0].reason, "nothing left for rhino2 at librarian-desk");
+  EXPECT_EQ(exec_.job("job-2")->robot, "rhino");
+  // Its cancelled goal's status changes nothing.
+  exec_.on_goal("rhino2", goal, GoalOutcome::cancelled, "cancelled", now_);
+  EXPECT_TRUE(step().cancels.empty());
+}
+
 TEST_F(FleetTest, ALostRobotsQueuedJobsGoToTheOtherAndItsObjectIsStrandedWhereItWasLastSeen) {
   exec_.add_robot("rhino", 3);
   exec_.add_robot("rhino2", 3);
