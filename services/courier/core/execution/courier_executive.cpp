@@ -216,6 +216,13 @@ void CourierExecutive::on_goal(const std::string& robot, const std::string& goal
       return;
     case GoalOutcome::blocked: {
       const std::string place = r.goal_place;
+      if (place == kHomePlace) {
+        // The way home is blocked (another robot in it): stay a while, then try again.
+        r.goal_id.clear();
+        r.goal_place.clear();
+        r.hold_until_s = now_s + settings_.home_retry_s;
+        return;
+      }
       r.goal_id.clear();
       r.goal_place.clear();
       event(ExecutionEvent::Kind::goal_blocked, "goal to " + place + " blocked for " + robot + ": " + reason);
@@ -640,16 +647,9 @@ void CourierExecutive::dispatch(Robot& robot, double now_s) {
       break;
     }
   if (!next) {
-    if (!robot.goal_id.empty()) {
-      // The place it drives to is no longer needed (its job went to another robot, or ended):
-      // it stops rather than drive on into a room another robot may be bound for.
-      const std::string reason = "nothing left for " + robot.id + " at " + robot.goal_place;
-      orders_.cancels.push_back({robot.id, robot.goal_id, reason});
-      event(ExecutionEvent::Kind::goal_cancelled, "goal " + robot.goal_id + " cancelled: " + reason + " (" + clock_text(now_s) + ")");
-      robot.goal_id.clear();
-      robot.goal_place.clear();
-    }
     idle_policy(robot, now_s);
+    // A return just started is planned and dispatched in this tick's second round.
+    if (!reschedule_needed_) park(robot, now_s);
     return;
   }
   Job& job = jobs_.at(next->job_id);

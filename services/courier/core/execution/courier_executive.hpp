@@ -39,10 +39,14 @@ struct ExecutiveSettings {
   int max_blocked_goals = 2;         // a place unreachable this often, no door to blame: its job fails
   int max_attempts = 3;              // refused goals, failed or refused handovers of one step
   double goal_tolerance_m = 0.35;    // for navigation goals to places (within the place's radius)
+  double home_retry_s = 30.0;        // an idle robot whose way home was blocked tries again after this
   // Part of every goal and request id, so that ids never repeat across runs of the service (a
   // simulator answers a repeated request id with its old answer). The node uses the journal's run.
   std::string id_tag = "r1";
 };
+
+// The goal place of a robot driving home (where it joined the fleet); no place of the floor.
+inline constexpr char kHomePlace[] = "@home";
 
 struct NavGoalOrder {
   std::string robot;
@@ -51,8 +55,8 @@ struct NavGoalOrder {
   double tolerance_m = 0.0;
 };
 
-// A navigation goal of ours that is no longer needed (its job went to another robot): the robot
-// stops instead of driving on into a room another robot is bound for.
+// A navigation goal of ours that is no longer needed (its job went to another robot or ended): the
+// robot stops instead of driving on into a room another robot may be bound for.
 struct GoalCancelOrder {
   std::string robot;
   std::string goal_id;
@@ -182,6 +186,10 @@ class CourierExecutive {
     int request_seq = 0;
     std::map<std::string, int> blocked;  // place -> blocked goals without a door to blame
     std::map<std::string, int> refused;  // place -> refused or preempted goals in a row
+    // Where it joined the fleet (its first pose): with several robots, an idle one goes back
+    // there, out of the others' way (a robot stopped in the hallway blocks a doorway).
+    bool home_known = false;
+    double home_x = 0.0, home_y = 0.0;
   };
 
   void reschedule(double now_s);
@@ -190,6 +198,8 @@ class CourierExecutive {
   void opportunity_check(double now_s);
   void dispatch(Robot& robot, double now_s);
   void idle_policy(Robot& robot, double now_s);
+  // Nothing to do: home (several robots) or stop (cancel a goal no longer needed). fleet.cpp.
+  void park(Robot& robot, double now_s);
   void send_goal(Robot& robot, const std::string& place, double now_s);
   void send_handover(Robot& robot, const PlanStop& stop, double now_s);
   bool at(const Robot& robot, const std::string& place) const;

@@ -74,6 +74,38 @@ void CourierExecutive::on_pose(const std::string& robot, double x, double y) {
   it->second.x = x;
   it->second.y = y;
   it->second.pose_known = true;
+  if (!it->second.home_known) {
+    it->second.home_known = true;
+    it->second.home_x = x;
+    it->second.home_y = y;
+  }
+}
+
+void CourierExecutive::park(Robot& robot, double now_s) {
+  constexpr double kAtHomeM = 1.0;
+  const bool away = robot.home_known && std::hypot(robot.x - robot.home_x, robot.y - robot.home_y) > kAtHomeM;
+  if (robots_.size() > 1 && away) {
+    if (robot.goal_place == kHomePlace) return;  // on its way
+    robot.goal_id = robot.id + "/home/" + settings_.id_tag + "." + std::to_string(++robot.goal_seq);
+    robot.goal_place = kHomePlace;
+    robot.goal_sent_s = now_s;
+    robot.goal_answered = false;
+    robot.at_place.clear();
+    orders_.goals.push_back({robot.id, robot.goal_id, robot.home_x, robot.home_y, settings_.goal_tolerance_m});
+    char where[64];
+    std::snprintf(where, sizeof where, "(%.1f, %.1f)", robot.home_x, robot.home_y);
+    event(ExecutionEvent::Kind::heading,
+          robot.id + " heads home to " + where + ", out of the way: nothing for it now (" + clock_text(now_s) + ")");
+    return;
+  }
+  if (robot.goal_id.empty() || robot.goal_place == kHomePlace) return;
+  // The place it drives to is no longer needed (its job went to another robot, or ended).
+  const std::string reason = "nothing left for " + robot.id + " at " + robot.goal_place;
+  orders_.cancels.push_back({robot.id, robot.goal_id, reason});
+  event(ExecutionEvent::Kind::goal_cancelled,
+        "goal " + robot.goal_id + " cancelled: " + reason + " (" + clock_text(now_s) + ")");
+  robot.goal_id.clear();
+  robot.goal_place.clear();
 }
 
 std::string CourierExecutive::last_seen(const Robot& robot) const {

@@ -134,7 +134,7 @@ TEST_F(FleetTest, ARobotJoiningWhileJobsRunGetsWorkAtTheNextReschedule) {
   EXPECT_EQ(texts(ExecutionEvent::Kind::robot_joined)[1], "rhino2 joined the fleet (capacity 2)");
 }
 
-TEST_F(FleetTest, ARobotWhoseJobWentToAnotherStopsInsteadOfDrivingOn) {
+TEST_F(FleetTest, ARobotWhoseJobWentToAnotherGoesHomeOutOfTheWay) {
   exec_.add_robot("rhino", 3);
   exec_.add_robot("rhino2", 3);
   exec_.on_pose("rhino", 1.5, 8.0);
@@ -151,15 +151,38 @@ TEST_F(FleetTest, ARobotWhoseJobWentToAnotherStopsInsteadOfDrivingOn) {
   now_ += 10;
   exec_.add_job(delivery("job-3", "blue", "meeting-table", "a114-desk"), now_);
   scheduler_.prefer["job-3"] = "rhino";
+  exec_.on_pose("rhino2", 20.0, 7.5);  // half way, in the hallway
+  const Orders o = step();
+  EXPECT_EQ(exec_.job("job-2")->robot, "rhino");
+  // Not stopped where it is (in the others' way) but sent back to where it joined.
+  ASSERT_EQ(o.goals.size(), 1u);
+  EXPECT_EQ(o.goals[0].robot, "rhino2");
+  EXPECT_NE(o.goals[0].goal_id, goal);
+  EXPECT_NE(o.goals[0].goal_id.find("rhino2/home/"), std::string::npos);
+  EXPECT_DOUBLE_EQ(o.goals[0].x, 30.0);
+  EXPECT_DOUBLE_EQ(o.goals[0].y, 8.0);
+  EXPECT_TRUE(o.cancels.empty());
+  // Home: nothing more for it; the old goal's status changes nothing.
+  exec_.on_goal("rhino2", goal, GoalOutcome::preempted, "preempted", now_);
+  exec_.on_pose("rhino2", 30.0, 8.0);
+  exec_.on_goal("rhino2", o.goals[0].goal_id, GoalOutcome::reached, "", now_);
+  const Orders after = step();
+  for (const auto& g : after.goals) EXPECT_NE(g.robot, "rhino2");
+  EXPECT_TRUE(after.cancels.empty());
+}
+
+TEST_F(FleetTest, AloneARobotWhoseJobEndedStopsInsteadOfDrivingOn) {
+  exec_.add_robot("rhino", 3);
+  exec_.on_pose("rhino", 1.5, 8.0);
+  exec_.add_job(delivery("job-1", "red", "meeting-table", "michael-desk"), now_);
+  step();
+  const std::string goal = goals_.at("rhino").goal_id;
+  exec_.on_goal("rhino", goal, GoalOutcome::active, "", now_);
+  EXPECT_FALSE(exec_.cancel("job-1", "not needed", now_));
   const Orders o = step();
   ASSERT_EQ(o.cancels.size(), 1u);
-  EXPECT_EQ(o.cancels[0].robot, "rhino2");
   EXPECT_EQ(o.cancels[0].goal_id, goal);
-  EXPECT_EQ(o.cancels[0].reason, "nothing left for rhino2 at librarian-desk");
-  EXPECT_EQ(exec_.job("job-2")->robot, "rhino");
-  // Its cancelled goal's status changes nothing.
-  exec_.on_goal("rhino2", goal, GoalOutcome::cancelled, "cancelled", now_);
-  EXPECT_TRUE(step().cancels.empty());
+  EXPECT_EQ(o.cancels[0].reason, "nothing left for rhino at meeting-table");
 }
 
 TEST_F(FleetTest, ALostRobotsQueuedJobsGoToTheOtherAndItsObjectIsStrandedWhereItWasLastSeen) {
