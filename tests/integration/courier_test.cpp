@@ -91,7 +91,12 @@ class CourierTest : public ProcessTest {
   }
   // The world waits at tick 0 while the test is a lockstep participant that never acknowledges.
   void hold_world() { registration_writer_->write({"test/commands", true}); }
-  void release_world() { registration_writer_->write({"test/commands", false}); }
+  // The world starts only while every --wait-for participant is registered: rhino's behavior must
+  // have registered before the test leaves (it registers before it says ready).
+  void release_world() {
+    if (behavior_) EXPECT_TRUE(await_ready(*beats_, *behavior_));
+    registration_writer_->write({"test/commands", false});
+  }
   // While registered, the test steps the world itself: it acknowledges tick after tick until
   // `condition` holds after one, and then stops acknowledging, so the world waits right there.
   ::testing::AssertionResult step_until(const std::string& what, const std::function<bool()>& condition) {
