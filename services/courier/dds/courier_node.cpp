@@ -170,7 +170,10 @@ CourierNode::CourierNode(service::Service& service, CourierNodeOptions options)
   });
   loop.on_samples<msg::Heartbeat>(heartbeat_reader_, [this](auto samples) { on_heartbeats(std::move(samples)); });
   // A killed process sends nothing more: its heartbeat goes silent (and, a lease later, its writer).
+  // Heartbeats that came while a long tick ran are taken first, so a busy courier never takes its
+  // own delay for a robot's silence.
   loop.every(std::chrono::milliseconds(250), [this] {
+    on_heartbeats(heartbeat_reader_.take());
     apply(roster_->expire(std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count()));
   });
   lockstep_.register_participant();
