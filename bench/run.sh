@@ -20,7 +20,7 @@ if [[ "${1:-}" == "--quick" ]]; then quick=(--quick); fi
 
 cmake -S "$repo" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 ninja -C "$build" dds_layer_bench lockstep_bench field_bench radio_bench world_bench paced_sim_bench simulator behavior experiment_runner \
-  courier_bench planner_bench path_bench executive_bench
+  courier_bench courier_fleet_bench planner_bench path_bench executive_bench
 
 echo "load average: $(cut -d' ' -f1-3 /proc/loadavg), $(nproc) cores, CYCLONEDDS_URI=$CYCLONEDDS_URI"
 "$build/bin/dds_layer_bench" --domain "$domain" "${quick[@]}"
@@ -33,6 +33,7 @@ if [[ ${#quick[@]} -gt 0 ]]; then "$build/bin/world_bench" --ticks 30; else "$bu
 "$build/bin/paced_sim_bench" --domain "$((domain + 10))" "${quick[@]}"
 "$repo/bench/experiment_bench.sh" "$build/bin" "$((domain + 20))" "${quick[@]}"
 "$build/bin/courier_bench" "${quick[@]}"
+if [[ ${#quick[@]} -gt 0 ]]; then "$build/bin/courier_fleet_bench" --instances 2 --budget-ms 500; else "$build/bin/courier_fleet_bench"; fi
 # planner_bench times MiniZinc + Gecode beside the planner when bench/install-minizinc.sh ran.
 if [[ ${#quick[@]} -gt 0 ]]; then planner_quick=(--jobshop-seconds 5 --repeats 1); else planner_quick=(); fi
 "$build/bin/planner_bench" --examples-dir "$repo/services/planner/examples" \

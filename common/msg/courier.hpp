@@ -40,7 +40,7 @@ struct CourierReply {
   int64_t tick = 0;
 };
 
-enum class JobState { Queued, Underway, Opportunistic, Completed, Failed, Cancelled };
+enum class JobState { Queued, Underway, Opportunistic, Completed, Failed, Cancelled, Stranded };
 
 struct CourierJobStatus {
   std::string job_id;
@@ -56,6 +56,7 @@ struct CourierJobStatus {
   std::string deadline;
   std::string estimated_completion;
   std::string reason;
+  std::string allocation;
   int64_t tick = 0;
 };
 

@@ -67,6 +67,7 @@ const char* to_string(JobState s) {
     case JobState::Completed: return "completed";
     case JobState::Failed: return "failed";
     case JobState::Cancelled: return "cancelled";
+    case JobState::Stranded: return "stranded";
   }
   return "?";
 }

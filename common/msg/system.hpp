@@ -2,6 +2,7 @@
 // C++ value types of idl/system.idl. Services use these; the generated C types stay in common/dds.
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace autonomy::msg {
 
@@ -15,6 +16,7 @@ struct Heartbeat {
   ServiceState state = ServiceState::Starting;
   double uptime_s = 0.0;
   uint32_t period_ms = 0;
+  std::vector<std::string> capabilities;  // "courier", ...
 };
 
 const char* to_string(ServiceState s);

@@ -2,6 +2,8 @@
 
 #include <unistd.h>
 
+#include <utility>
+
 namespace autonomy::service {
 
 std::string host_name() {
@@ -41,6 +43,12 @@ HeartbeatPublisher::~HeartbeatPublisher() {
 void HeartbeatPublisher::set_state(msg::ServiceState state) {
   if (beat_.state == state) return;
   beat_.state = state;
+  publish();
+}
+
+void HeartbeatPublisher::set_capabilities(std::vector<std::string> capabilities) {
+  if (beat_.capabilities == capabilities) return;
+  beat_.capabilities = std::move(capabilities);
   publish();
 }
 

@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <string>
+#include <vector>
 
 namespace autonomy::service {
 
@@ -21,6 +22,8 @@ class HeartbeatPublisher {
 
   // Publishes at once when the state changes, so readiness is seen without waiting a period.
   void set_state(msg::ServiceState state);
+  // What this process offers beyond its service ("courier"); published at once when it changes.
+  void set_capabilities(std::vector<std::string> capabilities);
   void publish();
   std::chrono::milliseconds period() const { return period_; }
 

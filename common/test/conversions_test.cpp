@@ -198,7 +198,8 @@ TEST(ConversionsTest, CourierTypesRoundTrip) {
     expect_round_trip(test::make_courier_report(v));
   }
   for (const msg::JobState state : {msg::JobState::Queued, msg::JobState::Underway, msg::JobState::Opportunistic,
-                                    msg::JobState::Completed, msg::JobState::Failed, msg::JobState::Cancelled}) {
+                                    msg::JobState::Completed, msg::JobState::Failed, msg::JobState::Cancelled,
+                                    msg::JobState::Stranded}) {
     msg::CourierJobStatus m;
     m.state = state;
     EXPECT_EQ(round_trip(m).state, state) << msg::to_string(state);

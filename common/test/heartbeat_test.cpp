@@ -77,10 +77,20 @@ TEST_F(HeartbeatTest, StateChangeIsPublishedAtOnceAndStopDisposes) {
   std::this_thread::sleep_for(30ms);
   EXPECT_TRUE(reader.take().empty());
 
+  // Capabilities (a behavior that is a courier): published at once, and carried by later beats.
+  hb.set_capabilities({"courier"});
+  got = take_at_least(reader, 1);
+  ASSERT_EQ(got.size(), 1u);
+  EXPECT_EQ(got[0].value.capabilities, std::vector<std::string>{"courier"});
+  hb.set_capabilities({"courier"});
+  std::this_thread::sleep_for(30ms);
+  EXPECT_TRUE(reader.take().empty());
+
   hb.set_state(msg::ServiceState::Stopping);
   got = take_at_least(reader, 1);
   ASSERT_EQ(got.size(), 1u);
   EXPECT_EQ(got[0].value.state, msg::ServiceState::Stopping);
+  EXPECT_EQ(got[0].value.capabilities, std::vector<std::string>{"courier"});
 
   // A clean stop: destroying the publisher disposes the instance, so readers see it disposed
   // (not lost after the lease), with both key fields.

@@ -43,6 +43,7 @@ inline msg::Heartbeat make_heartbeat(Variant v) {
   m.state = msg::ServiceState::Stopping;
   m.uptime_s = 12.75;
   m.period_ms = 333;
+  if (v == Variant::Full) m.capabilities = {"courier", kUtf8C};
   return m;
 }
 
@@ -388,6 +389,7 @@ inline msg::CourierJobStatus make_courier_job_status(Variant v) {
   m.deadline = s(v, "10:30:00");
   m.estimated_completion = s(v, "10:14:05");
   m.reason = s(v, kUtf8B);
+  m.allocation = s(v, "assigned to rhino2: 3 min earlier than rhino1");
   m.tick = 88;
   return m;
 }
@@ -418,7 +420,8 @@ inline msg::CourierReport make_courier_report(Variant v) {
 }
 
 inline auto fields(const msg::Heartbeat& m) {
-  return std::make_tuple(m.service, m.instance, m.host, m.pid, static_cast<int>(m.state), m.uptime_s, m.period_ms);
+  return std::make_tuple(m.service, m.instance, m.host, m.pid, static_cast<int>(m.state), m.uptime_s, m.period_ms,
+                         m.capabilities);
 }
 inline auto fields(const msg::SimClock& m) {
   return std::make_tuple(m.tick, m.sim_time_ns, m.step_ns, static_cast<int>(m.mode), m.warp);
@@ -518,7 +521,7 @@ inline auto fields(const msg::CourierReply& m) {
 inline auto fields(const msg::CourierJobStatus& m) {
   return std::make_tuple(m.job_id, m.command_id, static_cast<int>(m.state), m.phase, m.robot_id, m.object_id,
                          m.object_kind, m.object_colour, m.from, m.to, m.deadline, m.estimated_completion, m.reason,
-                         m.tick);
+                         m.allocation, m.tick);
 }
 inline auto fields(const msg::CourierSchedule& m) {
   std::vector<std::tuple<std::string, std::string, std::string, std::string, double, double>> stops;

@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   std::string plans_file;
   std::string layers_file;
   std::string mission_file;
+  std::vector<std::string> capabilities;
   return service::run_service(
       argc, argv, "behavior", "Behavior controller for one robot: goals in, velocity commands out",
       service::InstanceFlag::Robot,
@@ -51,6 +52,12 @@ int main(int argc, char** argv) {
                        "Seconds a radio link must stay up before a mission counts the teammate as back")
             ->check(CLI::NonNegativeNumber)
             ->capture_default_str();
+        app.add_option("--capability", capabilities,
+                       "Announce this capability in the heartbeat (repeatable), e.g. courier: the courier "
+                       "service then takes the robot into its fleet")
+            ->check(CLI::Validator(
+                [](std::string& s) { return s.empty() || s.size() > 64 ? std::string("1..64 characters") : std::string(); },
+                "NAME"));
         auto* mission = app.add_option("--mission", mission_file,
                                        "Run this mission (idl/mission.proto text) instead of taking goals");
         // A mission builds its own plans from its plan sets and takes no goals: these would be ignored.
@@ -59,6 +66,7 @@ int main(int argc, char** argv) {
       },
       [&](service::Service& service) {
         options.robot_id = service.options().instance;
+        service.set_capabilities(capabilities);
         if (!start.empty()) options.start = geometry::Pose2{start[0], start[1], start.size() > 2 ? start[2] : 0.0};
         if (!goal.empty())
           options.initial_goal = msg::NavGoal{options.robot_id, "cli-goal", goal[0], goal[1], 0.0, goal_constraints};

@@ -19,8 +19,13 @@ int main(int argc, char** argv) {
       [&](CLI::App& app) {
         app.footer("--config names the scenario whose office the couriers work in (e.g. "
                    "deploy/scenarios/office.pbtxt); its robots of kind \"courier\" are driven unless "
-                   "--robot names others.");
+                   "--robot names others, each once its behavior process is ready. A robot whose behavior runs "
+                   "with --capability courier joins the fleet too; one whose heartbeat is lost leaves it.");
         app.add_option("--robot", robots, "A courier robot to drive (repeatable; default: the scenario's couriers)");
+        app.add_option("--robot-lost-after", options.robot_lost_after_s,
+                       "Seconds without a heartbeat from a robot's behavior before its jobs go to the others")
+            ->check(CLI::Range(0.5, 600.0))
+            ->capture_default_str();
         app.add_option("--journal", options.journal_path,
                        "SQLite journal of commands and jobs (default: <log-dir>/courier-<instance>.db)");
         app.add_option("--events", options.events_path,
@@ -43,6 +48,7 @@ int main(int argc, char** argv) {
         auto loaded = courier::load_courier_office(config);
         if (!loaded.ok()) throw std::runtime_error(loaded.error);
         options.office = std::move(*loaded.office);
+        options.attach_defaults = options.office.attach_defaults;
         if (robots.empty()) {
           options.robots = options.office.robots;
         } else {

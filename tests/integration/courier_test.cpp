@@ -8,7 +8,11 @@
 // and the test leaves lockstep only once both commands are accepted: every run starts with the
 // jobs known at simulated time 0, so A-120's scripted times fall where the paper has them.
 //
-// One DDS domain per test (ctest runs them in parallel); this file uses 160-169 only:
+// The fleet: a second courier, rhino2, attached at run time by starting its behavior with
+// --capability courier (it is not in the scenario); one joining while jobs run, one killed with
+// SIGKILL right after it loaded a parcel.
+//
+// One DDS domain per test (ctest runs them in parallel); this file uses 160-169 and 190-195 only:
 //
 //   domain  test
 //   ------  -----------------------------------------------
@@ -19,12 +23,15 @@
 //    164    CourierTest.KilledMidDeliveryTheRestartedCourierFinishesFromItsJournal
 //    165    CourierTest.BadCommandsAreRejectedWithReasonsAndTheServiceGoesOn
 //    166    CourierTest.TheCliSendsListsAndCancels
+//    190    CourierTest.ARobotAttachedWhileJobsRunGetsWork
+//    191    CourierTest.ARobotKilledMidDeliveryHasItsJobsReallocatedAndItsParcelReportedStranded
 #include "tests/support/process_test.hpp"
 
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <csignal>
 #include <set>
 #include <sstream>
@@ -57,12 +64,15 @@ constexpr auto kRun = 120s;
 
 class CourierTest : public ProcessTest {
  protected:
-  void start_world(const std::string& scenario_text) {
+  void start_world(const std::string& scenario_text, std::vector<std::string> wait_for_too = {}) {
     scenario_ = dir().file("office.pbtxt");
     write_file(scenario_, scenario_text);
     journal_ = dir().file("courier.db");
-    start_simulator({"--config", scenario_, "--mode", "lockstep", "--wait-for", "behavior/rhino", "--wait-for",
-                     "courier/main", "--wait-for", "test/commands", "--trajectory", dir().file("trajectory.csv")});
+    std::vector<std::string> args = {"--config", scenario_, "--mode", "lockstep", "--wait-for", "behavior/rhino",
+                                     "--wait-for", "courier/main", "--wait-for", "test/commands", "--trajectory",
+                                     dir().file("trajectory.csv")};
+    for (const auto& name : wait_for_too) args.insert(args.end(), {"--wait-for", name});
+    start_simulator(args);
     behavior_ = &start_behavior("rhino", {"--config", scenario_});
     courier_ = &start_courier();
   }
@@ -81,7 +91,12 @@ class CourierTest : public ProcessTest {
   }
   // The world waits at tick 0 while the test is a lockstep participant that never acknowledges.
   void hold_world() { registration_writer_->write({"test/commands", true}); }
-  void release_world() { registration_writer_->write({"test/commands", false}); }
+  // The world starts only while every --wait-for participant is registered: rhino's behavior must
+  // have registered before the test leaves (it registers before it says ready).
+  void release_world() {
+    if (behavior_) EXPECT_TRUE(await_ready(*beats_, *behavior_));
+    registration_writer_->write({"test/commands", false});
+  }
   // While registered, the test steps the world itself: it acknowledges tick after tick until
   // `condition` holds after one, and then stops acknowledging, so the world waits right there.
   ::testing::AssertionResult step_until(const std::string& what, const std::function<bool()>& condition) {
@@ -114,6 +129,50 @@ class CourierTest : public ProcessTest {
     for (const auto& s : jobs_->all())
       if (s.job_id == job && s.state == state) return s;
     return std::nullopt;
+  }
+  // rhino2, not in the scenario: attached at the east end of the hallway with the courier capability.
+  ChildProcess& start_rhino2() {
+    return start_behavior("rhino2", {"--config", scenario_, "--start", "38.5", "8", "3.1416", "--capability", "courier"});
+  }
+  // Structured deliveries of object ids (the fleet tests' three jobs).
+  void deliver(const std::string& id, const std::string& object, const std::string& from, const std::string& to) {
+    ASSERT_TRUE(command_writer_->wait_for_readers(1, kDeadline));
+    msg::CourierCommand c;
+    c.command_id = id;
+    c.requester = "test";
+    c.kind = msg::CourierCommandKind::Deliver;
+    c.object_id = object;
+    c.from = from;
+    c.to = to;
+    command_writer_->write(c);
+  }
+  // Two parcels in the east (stations at for them, 5.5 m apart) and the blue
+  // letter in the west: job-1 and job-2 east, job-3 west.
+  void send_fleet_jobs() {
+    ASSERT_TRUE(await_ready(*beats_, *courier_));
+    deliver("e1", "parcel-e1", "a119-desk", "a112-desk");
+    deliver("e2", "parcel-e2", "a117-desk", "a119-desk");
+    deliver("w1", "letter-3", "meeting-table", "librarian-desk");
+    ASSERT_TRUE(await("three commands answered", [&] {
+      poll();
+      return replies_->all().size() >= 3;
+    }));
+    for (const auto& r : replies_->all()) ASSERT_TRUE(r.accepted) << r.command_id << ": " << r.reason << " " << r.detail;
+  }
+  static std::string fleet_extra() {
+    return "objects { id: \"parcel-e1\" kind: \"parcel\" colour: \"grey\" place: \"a119-desk\" }\n"
+           "objects { id: \"parcel-e2\" kind: \"parcel\" colour: \"black\" place: \"a117-desk\" }\n"
+           "loading_stations { place: \"a119-desk\" handover_time { fixed_s: 5 } }\n"
+           "loading_stations { place: \"a117-desk\" handover_time { fixed_s: 5 } }\n";
+  }
+  ::testing::AssertionResult jobs_finished(const std::vector<std::string>& ids, const std::string& what) {
+    auto result = await(what, [&] {
+      poll();
+      return std::all_of(ids.begin(), ids.end(), [&](const std::string& id) { return finished(id); });
+    }, 2 * kRun);
+    if (!result)
+      for (const auto& id : ids) result << "\n" << id << job_story(id);
+    return result;
   }
   ::testing::AssertionResult both_jobs_finished(const std::string& what) {
     auto result = await(what, [&] {
@@ -404,6 +463,99 @@ TEST_F(CourierTest, TheCliSendsListsAndCancels) {
   EXPECT_EQ(listed, 0) << jobs_out;
   EXPECT_NE(jobs_out.find("job-1"), std::string::npos) << jobs_out;
   EXPECT_NE(jobs_out.find("cancelled"), std::string::npos) << jobs_out;
+}
+
+TEST_F(CourierTest, ARobotAttachedWhileJobsRunGetsWork) {
+  setup_observers(190);
+  start_world(office_scenario("", fleet_extra()));
+  send_fleet_jobs();
+  // rhino alone takes all three; the world goes on until it has loaded its first object.
+  ASSERT_TRUE(step_until("rhino loads something", [&] {
+    for (const auto& o : objects_->all())
+      if (o.carrier == "rhino") return true;
+    return false;
+  }));
+  for (const char* job : {"job-1", "job-2", "job-3"}) EXPECT_FALSE(finished(job)) << job << job_story(job);
+  for (const auto& s : jobs_->all()) EXPECT_NE(s.robot_id, "rhino2") << s.job_id;
+  // rhino2 attaches while the jobs run; the world steps on (the test acknowledging) until its
+  // behavior says ready, then runs free.
+  ChildProcess& rhino2 = start_rhino2();
+  ASSERT_TRUE(step_until("rhino2's behavior ready", [&] {
+    beats_->poll();
+    return !beats_->matching([&](const msg::Heartbeat& h) {
+                   return h.pid == rhino2.pid() && h.state == msg::ServiceState::Ready;
+                 })
+                .empty();
+  }));
+  EXPECT_FALSE(beats_->matching([&](const msg::Heartbeat& h) { return h.pid == rhino2.pid(); })
+                   .back()
+                   .capabilities.empty());
+  release_world();
+  ASSERT_TRUE(jobs_finished({"job-1", "job-2", "job-3"}, "the three jobs finished"));
+  for (const char* job : {"job-1", "job-2", "job-3"}) EXPECT_TRUE(job_in(job, msg::JobState::Completed)) << job << job_story(job);
+  // rhino2 got work: an east parcel went aboard it, and its job said why rhino2.
+  bool carried = false;
+  for (const auto& o : objects_->all()) carried |= o.carrier == "rhino2";
+  EXPECT_TRUE(carried);
+  bool explained = false;
+  std::string allocations;
+  for (const auto& s : jobs_->all()) {
+    if (!s.allocation.empty()) allocations += s.job_id + ": " + s.allocation + "\n";
+    explained |= s.robot_id == "rhino2" && s.allocation.rfind("assigned to rhino2: ", 0) == 0;
+  }
+  EXPECT_TRUE(explained) << allocations;
+  EXPECT_TRUE(object_tick("parcel-e1", "", "a112-desk"));
+  EXPECT_TRUE(object_tick("parcel-e2", "", "a119-desk"));
+  EXPECT_TRUE(object_tick("letter-3", "", "librarian-desk"));
+}
+
+TEST_F(CourierTest, ARobotKilledMidDeliveryHasItsJobsReallocatedAndItsParcelReportedStranded) {
+  setup_observers(191);
+  start_world(office_scenario("", fleet_extra()), {"behavior/rhino2"});
+  ChildProcess& rhino2 = start_rhino2();
+  send_fleet_jobs();
+  ASSERT_TRUE(await_ready(*beats_, rhino2));
+  // Both east parcels are rhino2's (it starts beside them), the letter rhino's. Step until rhino2
+  // has loaded one of them, and kill its behavior right there.
+  std::string aboard;
+  ASSERT_TRUE(step_until("rhino2 loads a parcel", [&] {
+    for (const auto& o : objects_->all())
+      if (o.carrier == "rhino2") aboard = o.object_id;
+    return !aboard.empty();
+  }));
+  const std::string other = aboard == "parcel-e1" ? "parcel-e2" : "parcel-e1";
+  const std::string stranded_job = aboard == "parcel-e1" ? "job-1" : "job-2";
+  const std::string other_job = aboard == "parcel-e1" ? "job-2" : "job-1";
+  EXPECT_FALSE(object_tick(other, "rhino2", "")) << "both parcels aboard at once: nothing left to reallocate";
+  bool other_was_rhino2s = false;
+  for (const auto& s : jobs_->all()) other_was_rhino2s |= s.job_id == other_job && s.robot_id == "rhino2";
+  EXPECT_TRUE(other_was_rhino2s) << job_story(other_job);
+  stop_watching(rhino2);
+  rhino2.signal(SIGKILL);
+  ASSERT_TRUE(rhino2.wait_for_exit(10s));
+  release_world();
+
+  // The parcel aboard: reported stranded with where rhino2 was last seen, and not forgotten.
+  ASSERT_TRUE(await("the parcel reported stranded", [&] {
+    poll();
+    return job_in(stranded_job, msg::JobState::Stranded).has_value();
+  }, kRun)) << job_story(stranded_job);
+  const auto stranded = job_in(stranded_job, msg::JobState::Stranded);
+  EXPECT_NE(stranded->reason.find(aboard + " stranded aboard rhino2, last seen at ("), std::string::npos)
+      << stranded->reason;
+  EXPECT_NE(stranded->reason.find("heartbeat lost"), std::string::npos) << stranded->reason;
+  EXPECT_EQ(stranded->robot_id, "rhino2");
+  // The other parcel's job went to rhino, which delivers it along with its own letter.
+  ASSERT_TRUE(jobs_finished({other_job, "job-3"}, "the other jobs finished"));
+  EXPECT_TRUE(job_in(other_job, msg::JobState::Completed)) << job_story(other_job);
+  EXPECT_TRUE(job_in("job-3", msg::JobState::Completed)) << job_story("job-3");
+  EXPECT_TRUE(object_tick(other, "rhino", ""));
+  EXPECT_FALSE(finished(stranded_job)) << job_story(stranded_job);
+  // The courier's own account: rhino2 left, the queued job reallocated, the parcel stranded.
+  std::set<std::string> kinds;
+  for (const auto& [kind, line] : events()) kinds.insert(kind);
+  for (const char* kind : {"robot_joined", "robot_left", "reallocated", "stranded"})
+    EXPECT_TRUE(kinds.count(kind)) << kind;
 }
 
 }  // namespace

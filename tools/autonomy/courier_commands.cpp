@@ -102,9 +102,11 @@ int list_jobs(const CommandOptions& o, Context& ctx) {
                 "OBJECT", "TO", "DEADLINE", "ETA", "REASON");
   print_line(line);
   for (const auto& [id, j] : jobs) {
+    // With several couriers, why this robot follows the reason.
+    const std::string why = j.allocation.empty() ? j.reason : j.reason.empty() ? j.allocation : j.reason + "; " + j.allocation;
     std::snprintf(line, sizeof line, "%-8s %-13s %-15s %-7s %-14s %-16s %-8s %-9s %s", id.c_str(),
                   msg::to_string(j.state), j.phase.c_str(), j.robot_id.c_str(), j.object_id.c_str(), j.to.c_str(),
-                  j.deadline.c_str(), j.estimated_completion.c_str(), j.reason.c_str());
+                  j.deadline.c_str(), j.estimated_completion.c_str(), why.c_str());
     print_line(line);
   }
   return kExitOk;

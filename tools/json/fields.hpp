@@ -64,7 +64,8 @@ struct EnumValues<msg::CourierCommandKind> {
 template <>
 struct EnumValues<msg::JobState> {
   static constexpr std::array values{msg::JobState::Queued,    msg::JobState::Underway, msg::JobState::Opportunistic,
-                                     msg::JobState::Completed, msg::JobState::Failed,   msg::JobState::Cancelled};
+                                     msg::JobState::Completed, msg::JobState::Failed,   msg::JobState::Cancelled,
+                                     msg::JobState::Stranded};
 };
 
 // visit(v, m) calls v.key(name, member) for key fields and v.field(name, member) for the others;
@@ -84,6 +85,7 @@ struct Fields<msg::Heartbeat> {
     v.field("state", m.state);
     v.field("uptime_s", m.uptime_s);
     v.field("period_ms", m.period_ms);
+    v.field("capabilities", m.capabilities);
   }
 };
 
@@ -598,6 +600,7 @@ struct Fields<msg::CourierJobStatus> {
     v.field("deadline", m.deadline);
     v.field("estimated_completion", m.estimated_completion);
     v.field("reason", m.reason);
+    v.field("allocation", m.allocation);
     v.field("tick", m.tick);
   }
 };

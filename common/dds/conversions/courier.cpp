@@ -84,6 +84,7 @@ void DdsType<msg::CourierJobStatus>::to_c(const msg::CourierJobStatus& v, C& out
   out.deadline = c_str(v.deadline);
   out.estimated_completion = c_str(v.estimated_completion);
   out.reason = c_str(v.reason);
+  out.allocation = c_str(v.allocation);
   out.tick = v.tick;
 }
 
@@ -102,6 +103,7 @@ msg::CourierJobStatus DdsType<msg::CourierJobStatus>::from_c(const C& in) {
   v.deadline = from_c_str(in.deadline);
   v.estimated_completion = from_c_str(in.estimated_completion);
   v.reason = from_c_str(in.reason);
+  v.allocation = from_c_str(in.allocation);
   v.tick = in.tick;
   return v;
 }

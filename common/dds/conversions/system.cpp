@@ -2,7 +2,7 @@
 
 namespace autonomy::dds {
 
-void DdsType<msg::Heartbeat>::to_c(const msg::Heartbeat& v, C& out, Arena&) {
+void DdsType<msg::Heartbeat>::to_c(const msg::Heartbeat& v, C& out, Arena& arena) {
   out.service = c_str(v.service);
   out.instance = c_str(v.instance);
   out.host = c_str(v.host);
@@ -10,6 +10,7 @@ void DdsType<msg::Heartbeat>::to_c(const msg::Heartbeat& v, C& out, Arena&) {
   out.state = static_cast<autonomy_ServiceState>(v.state);
   out.uptime_s = v.uptime_s;
   out.period_ms = v.period_ms;
+  out.capabilities = to_c_strings(v.capabilities, arena);
 }
 
 msg::Heartbeat DdsType<msg::Heartbeat>::from_c(const C& in) {
@@ -21,6 +22,7 @@ msg::Heartbeat DdsType<msg::Heartbeat>::from_c(const C& in) {
   v.state = static_cast<msg::ServiceState>(in.state);
   v.uptime_s = in.uptime_s;
   v.period_ms = in.period_ms;
+  v.capabilities = from_c_strings(in.capabilities);
   return v;
 }
 

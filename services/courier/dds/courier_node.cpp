@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
+#include <set>
 #include <stdexcept>
 
 namespace autonomy::courier {
@@ -43,6 +44,7 @@ msg::JobState to_msg(JobState s) {
     case JobState::completed: return msg::JobState::Completed;
     case JobState::failed: return msg::JobState::Failed;
     case JobState::cancelled: return msg::JobState::Cancelled;
+    case JobState::stranded: return msg::JobState::Stranded;
   }
   return msg::JobState::Queued;
 }
@@ -60,6 +62,7 @@ CourierNode::CourierNode(service::Service& service, CourierNodeOptions options)
       state_topic_(service.participant(), dds::topics::robot_state),
       door_topic_(service.participant(), dds::topics::door_observation),
       goal_topic_(service.participant(), dds::topics::nav_goal),
+      cancel_topic_(service.participant(), dds::topics::nav_cancel),
       goal_status_topic_(service.participant(), dds::topics::goal_status),
       handover_request_topic_(service.participant(), dds::topics::handover_request),
       handover_status_topic_(service.participant(), dds::topics::handover_status),
@@ -68,17 +71,20 @@ CourierNode::CourierNode(service::Service& service, CourierNodeOptions options)
       door_reader_(service.participant(), door_topic_),
       goal_status_reader_(service.participant(), goal_status_topic_),
       handover_status_reader_(service.participant(), handover_status_topic_),
+      heartbeat_topic_(service.participant(), dds::topics::heartbeat),
+      heartbeat_reader_(service.participant(), heartbeat_topic_),
       reply_writer_(service.participant(), reply_topic_),
       job_writer_(service.participant(), job_topic_),
       schedule_writer_(service.participant(), schedule_topic_),
       report_writer_(service.participant(), report_topic_),
       goal_writer_(service.participant(), goal_topic_),
+      cancel_writer_(service.participant(), cancel_topic_),
       handover_writer_(service.participant(), handover_request_topic_),
       lockstep_(service.participant(), service.loop(), "courier/" + service.options().instance,
                 [this](const msg::SimClock& c) { on_tick(c); }) {
-  if (options_.robots.empty()) throw std::runtime_error("no courier robots: the scenario has none of kind courier");
-  double speed = 1e9;
-  double radius = 0.0;
+  // Travel times for the slowest and widest robot that may join.
+  double speed = options_.attach_defaults.max_speed_mps;
+  double radius = options_.attach_defaults.radius_m;
   for (const auto& r : options_.robots) {
     speed = std::min(speed, r.max_speed_mps);
     radius = std::max(radius, r.radius_m);
@@ -100,7 +106,9 @@ CourierNode::CourierNode(service::Service& service, CourierNodeOptions options)
   ExecutiveSettings executive_settings;
   executive_settings.id_tag = "r" + std::to_string(journal_->run());
   executive_ = std::make_unique<CourierExecutive>(options_.office.floor, *scheduler_, executive_settings);
-  for (const auto& r : options_.robots) executive_->add_robot(r.id, r.capacity);
+  std::set<std::string> declared;
+  for (const auto& r : options_.robots) declared.insert(r.id);
+  roster_ = std::make_unique<FleetRoster>(declared, options_.robot_lost_after_s);
   const Journal::Contents journalled = journal_->load();
   int unfinished = 0;
   for (const Job& job : journalled.jobs) {
@@ -134,9 +142,9 @@ CourierNode::CourierNode(service::Service& service, CourierNodeOptions options)
   });
   loop.on_samples<msg::RobotState>(state_reader_, [this](auto samples) {
     for (const auto& s : samples) {
-      if (!s.valid || !executive_->has_robot(s.value.robot_id)) continue;
-      executive_->on_pose(s.value.robot_id, s.value.x, s.value.y);
-      poses_[s.value.robot_id] = {s.value.x, s.value.y};
+      if (!s.valid) continue;
+      poses_[s.value.robot_id] = {s.value.x, s.value.y};  // a robot that joins later starts from it
+      if (executive_->has_robot(s.value.robot_id)) executive_->on_pose(s.value.robot_id, s.value.x, s.value.y);
     }
   });
   loop.on_samples<msg::DoorObservation>(door_reader_, [this](auto samples) {
@@ -160,10 +168,54 @@ CourierNode::CourierNode(service::Service& service, CourierNodeOptions options)
       executive_->on_handover(h.request_id, outcome_of(h.state), h.reason, h.detail, now_day_s());
     }
   });
+  loop.on_samples<msg::Heartbeat>(heartbeat_reader_, [this](auto samples) { on_heartbeats(std::move(samples)); });
+  // A killed process sends nothing more: its heartbeat goes silent (and, a lease later, its writer).
+  // Heartbeats that came while a long tick ran are taken first, so a busy courier never takes its
+  // own delay for a robot's silence.
+  loop.every(std::chrono::milliseconds(250), [this] {
+    on_heartbeats(heartbeat_reader_.take());
+    apply(roster_->expire(std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count()));
+  });
   lockstep_.register_participant();
   service_.set_ready();
-  spdlog::info("courier ready: {} robots, engine {}, journal {}", options_.robots.size(), options_.engine,
-               options_.journal_path);
+  spdlog::info("courier ready: {} robots declared, others join with the courier capability, engine {}, journal {}",
+               options_.robots.size(), options_.engine, options_.journal_path);
+}
+
+const CourierRobotSpec& CourierNode::spec_of(const std::string& robot) const {
+  for (const auto& r : options_.robots)
+    if (r.id == robot) return r;
+  return options_.attach_defaults;
+}
+
+void CourierNode::on_heartbeats(std::vector<dds::Sample<msg::Heartbeat>> samples) {
+  const double now = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+  for (const auto& s : samples) {
+    if (s.value.service != "behavior") continue;
+    BeatKind kind = BeatKind::ready;
+    if (!s.valid || s.instance_state != dds::InstanceState::Alive)
+      kind = s.instance_state == dds::InstanceState::NoWriters ? BeatKind::no_writers : BeatKind::disposed;
+    else if (s.value.state == msg::ServiceState::Stopping)
+      kind = BeatKind::stopping;
+    else if (s.value.state == msg::ServiceState::Starting)
+      kind = BeatKind::starting;
+    apply(roster_->on_heartbeat(s.value.instance, kind, s.valid ? s.value.capabilities : std::vector<std::string>{}, now));
+  }
+}
+
+void CourierNode::apply(const std::vector<RosterChange>& changes) {
+  for (const RosterChange& c : changes) {
+    if (c.joined) {
+      const CourierRobotSpec& spec = spec_of(c.robot);
+      spdlog::info("{} joins the fleet (capacity {})", c.robot, spec.capacity);
+      executive_->add_robot(c.robot, spec.capacity);
+      if (const auto pose = poses_.find(c.robot); pose != poses_.end())
+        executive_->on_pose(c.robot, pose->second.first, pose->second.second);
+    } else {
+      spdlog::warn("{} leaves the fleet: {}", c.robot, c.why);
+      executive_->remove_robot(c.robot, c.why, now_day_s());
+    }
+  }
 }
 
 double CourierNode::now_sim_s() const { return lockstep_.clock().now_s(); }
@@ -191,6 +243,7 @@ msg::CourierJobStatus CourierNode::status_of(const Job& job, int64_t tick) const
   s.deadline = job.deadline_s ? clock_text(*job.deadline_s) : "";
   s.estimated_completion = job.estimated_completion_s ? clock_text(*job.estimated_completion_s) : "";
   s.reason = job.reason;
+  s.allocation = job.allocation;
   s.tick = tick;
   return s;
 }
@@ -219,6 +272,7 @@ void CourierNode::carry_out(Orders orders, int64_t tick) {
     handover_writer_.write({h.request_id, "courier", h.robot, h.load ? msg::HandoverKind::Load : msg::HandoverKind::Unload,
                             h.place, h.object_id});
   }
+  for (const auto& c : orders.cancels) cancel_writer_.write({c.robot, c.goal_id, c.reason});
   for (const auto& g : orders.goals) goal_writer_.write({g.robot, g.goal_id, g.x, g.y, g.tolerance_m, ""});
   for (const auto& note : orders.schedules) {
     msg::CourierSchedule s;

@@ -4,15 +4,19 @@
 // requests out, job states, schedules and reports published. A lockstep participant: on every
 // tick it steps the executive once with what arrived, carries out the orders (journal first, then
 // the wire), and acknowledges the tick. It never reads autonomy/truth/*.
+// The fleet follows the behavior processes' heartbeats (FleetRoster): a courier robot joins when
+// its behavior is ready and leaves when it stops or its heartbeat is lost.
 #include "common/dds/reader.hpp"
 #include "common/dds/topics.hpp"
 #include "common/dds/writer.hpp"
 #include "common/service/lockstep_client.hpp"
 #include "common/service/service.hpp"
+#include "services/courier/core/execution/fleet_roster.hpp"
 #include "services/courier/dds/command_desk.hpp"
 #include "services/courier/dds/office_file.hpp"
 #include "services/courier/journal/journal.hpp"
 
+#include <chrono>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -23,7 +27,12 @@ namespace autonomy::courier {
 
 struct CourierNodeOptions {
   CourierOffice office;
-  std::vector<CourierRobotSpec> robots;  // the couriers it drives
+  // Couriers declared (the scenario's robots of kind courier, or --robot): each joins the fleet
+  // when its behavior's heartbeat says ready. Robots whose behavior announces the courier
+  // capability join too, with attach_defaults' capacity unless declared.
+  std::vector<CourierRobotSpec> robots;
+  CourierRobotSpec attach_defaults;
+  double robot_lost_after_s = 5.0;  // wall-clock seconds without a heartbeat: the robot is lost
   std::string journal_path;
   std::string events_path;  // JSON lines of what happened, for pictures; "" = none
   std::string engine = "exact";  // for small job sets; "large" takes over above exact_max_jobs
@@ -42,6 +51,10 @@ class CourierNode {
   msg::CourierJobStatus status_of(const Job& job, int64_t tick) const;
   double now_sim_s() const;
   double now_day_s() const;
+  // Heartbeats of behavior processes: robots join and leave the executive's fleet.
+  void on_heartbeats(std::vector<dds::Sample<msg::Heartbeat>> samples);
+  void apply(const std::vector<RosterChange>& changes);
+  const CourierRobotSpec& spec_of(const std::string& robot) const;
 
   service::Service& service_;
   CourierNodeOptions options_;
@@ -51,7 +64,9 @@ class CourierNode {
   std::unique_ptr<CommandDesk> desk_;
   std::ofstream events_file_;
   std::vector<std::pair<std::string, std::string>> answers_;  // handover answers since the last tick
-  std::map<std::string, std::pair<double, double>> poses_;  // latest of each courier robot
+  std::map<std::string, std::pair<double, double>> poses_;  // latest of every robot (members or not)
+  std::unique_ptr<FleetRoster> roster_;
+  std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
   int64_t tick_ = 0;
   bool have_clock_ = false;
 
@@ -63,6 +78,7 @@ class CourierNode {
   dds::Topic<msg::RobotState> state_topic_;
   dds::Topic<msg::DoorObservation> door_topic_;
   dds::Topic<msg::NavGoal> goal_topic_;
+  dds::Topic<msg::NavCancel> cancel_topic_;
   dds::Topic<msg::GoalStatus> goal_status_topic_;
   dds::Topic<msg::HandoverRequest> handover_request_topic_;
   dds::Topic<msg::HandoverStatus> handover_status_topic_;
@@ -71,11 +87,14 @@ class CourierNode {
   dds::Reader<msg::DoorObservation> door_reader_;
   dds::Reader<msg::GoalStatus> goal_status_reader_;
   dds::Reader<msg::HandoverStatus> handover_status_reader_;
+  dds::Topic<msg::Heartbeat> heartbeat_topic_;
+  dds::Reader<msg::Heartbeat> heartbeat_reader_;
   dds::Writer<msg::CourierReply> reply_writer_;
   dds::Writer<msg::CourierJobStatus> job_writer_;
   dds::Writer<msg::CourierSchedule> schedule_writer_;
   dds::Writer<msg::CourierReport> report_writer_;
   dds::Writer<msg::NavGoal> goal_writer_;
+  dds::Writer<msg::NavCancel> cancel_writer_;
   dds::Writer<msg::HandoverRequest> handover_writer_;
   service::LockstepClient lockstep_;
 };

@@ -1,6 +1,7 @@
 #include "services/courier/core/bridge/engine_schedule_source.hpp"
 
 #include "services/behavior/core/door_knowledge.hpp"
+#include "services/courier/core/scheduler/allocation_rule.hpp"
 #include "services/courier/core/scheduler/scheduler_engine.hpp"
 #include "services/courier/core/scheduler/wall_clock_budget.hpp"
 
@@ -73,7 +74,7 @@ double cost_from(const behavior::CostToGoField& field, double x, double y) {
 
 }  // namespace
 
-Plan EngineScheduleSource::plan(const PlanRequest& request) {
+sched::SchedulingProblem EngineScheduleSource::problem_for(const PlanRequest& request) {
   const Fields& fields = fields_for(request.closed_doors);
   const size_t places = place_names_.size();
   sched::SchedulingProblem problem;
@@ -175,9 +176,23 @@ Plan EngineScheduleSource::plan(const PlanRequest& request) {
     }
   }
 
+  return problem;
+}
+
+std::string EngineScheduleSource::engine_for(const sched::SchedulingProblem& problem) const {
+  if (settings_.engine != "exact") return settings_.engine;
   const int open_jobs = static_cast<int>(problem.jobs.size());
-  const std::string engine_name =
-      settings_.engine == "exact" && open_jobs > settings_.exact_max_jobs ? "large" : settings_.engine;
+  if (open_jobs > settings_.exact_max_jobs) return "large";
+  // The exact engine enumerates every assignment of the waiting jobs to the couriers.
+  double assignments = 1.0;
+  for (const auto& job : problem.jobs)
+    if (job.status == sched::JobStatus::kWaitingForPickup) assignments *= static_cast<double>(problem.couriers.size());
+  return assignments <= 16384.0 ? "exact" : "large";
+}
+
+Plan EngineScheduleSource::plan(const PlanRequest& request) {
+  const sched::SchedulingProblem problem = problem_for(request);
+  const std::string engine_name = engine_for(problem);
   auto engine = sched::make_scheduler_engine(engine_name);
   const auto budget =
       sched::wall_clock_budget(std::chrono::microseconds(static_cast<long long>(settings_.budget_ms * 1000.0)));
@@ -209,6 +224,8 @@ Plan EngineScheduleSource::plan(const PlanRequest& request) {
     }
   }
   for (const auto& o : schedule.outcomes) plan.completion_s[problem.jobs[static_cast<size_t>(o.job)].id] = o.completion_s;
+  for (const auto& why : sched::explain_allocation(problem, schedule))
+    plan.allocation[problem.jobs[static_cast<size_t>(why.job)].id] = why.text;
   return plan;
 }
 

@@ -6,12 +6,14 @@
 // handover times from the office knowledge, runs the exact engine on small job sets and the
 // large-scale one above that, each within a time budget, and turns the JobSchedule back into
 // routes. A job whose place cannot be reached comes back unschedulable with the door to blame.
+// With several robots each job comes back with the allocation rule's words (allocation_rule.hpp).
 #include "services/behavior/core/cost_to_go_field.hpp"
 #include "services/behavior/core/occupancy_grid.hpp"
 #include "services/behavior/core/world_map.hpp"
 #include "services/courier/core/execution/floor.hpp"
 #include "services/courier/core/execution/schedule_source.hpp"
 #include "services/courier/core/knowledge/office_knowledge.hpp"
+#include "services/courier/core/scheduler/scheduling_problem.hpp"
 
 #include <map>
 #include <memory>
@@ -39,6 +41,12 @@ class EngineScheduleSource : public ScheduleSource {
   ~EngineScheduleSource() override;
 
   Plan plan(const PlanRequest& request) override;
+
+  // The scheduling problem plan() solves for `request` (benchmarks run other allocations on it).
+  scheduling::SchedulingProblem problem_for(const PlanRequest& request);
+  // The engine plan() uses: `engine` below exact_max_jobs open jobs and while the couriers'
+  // assignments can be enumerated (couriers^jobs <= 2^14), else "large".
+  std::string engine_for(const scheduling::SchedulingProblem& problem) const;
 
   // Seconds from place a to place b with the given doors closed (+inf: no way); for tests.
   double travel_s(const std::string& from, const std::string& to, const std::set<std::string>& closed_doors);

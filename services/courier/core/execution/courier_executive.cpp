@@ -32,13 +32,6 @@ bool CourierExecutive::exhausted(std::map<std::string, int>& counts, const std::
   return ++counts[key] >= settings_.max_attempts;
 }
 
-void CourierExecutive::add_robot(const std::string& id, int capacity) {
-  Robot& r = robots_[id];
-  r.id = id;
-  r.capacity = std::max(1, capacity);
-  reschedule_needed_ = true;
-}
-
 const Job* CourierExecutive::job(const std::string& id) const {
   const auto it = jobs_.find(id);
   return it == jobs_.end() ? nullptr : &it->second;
@@ -72,6 +65,12 @@ const char* to_string(ExecutionEvent::Kind k) {
     case ExecutionEvent::Kind::returning: return "returning";
     case ExecutionEvent::Kind::finished: return "finished";
     case ExecutionEvent::Kind::schedule_failed: return "schedule_failed";
+    case ExecutionEvent::Kind::robot_joined: return "robot_joined";
+    case ExecutionEvent::Kind::robot_left: return "robot_left";
+    case ExecutionEvent::Kind::reallocated: return "reallocated";
+    case ExecutionEvent::Kind::stranded: return "stranded";
+    case ExecutionEvent::Kind::resumed: return "resumed";
+    case ExecutionEvent::Kind::goal_cancelled: return "goal_cancelled";
   }
   return "?";
 }
@@ -100,13 +99,6 @@ void CourierExecutive::restore_job(Job job) {
   reschedule_needed_ = true;
 }
 
-void CourierExecutive::restore_pending_handover(const HandoverOrder& order) {
-  const auto it = robots_.find(order.robot);
-  if (it == robots_.end()) return;
-  // sent_at 0: the first step sends it again at once.
-  it->second.handover = PendingHandover{order, -1e18, false};
-}
-
 std::optional<std::string> CourierExecutive::cancel(const std::string& job_id, const std::string& reason,
                                                     double now_s) {
   const auto it = jobs_.find(job_id);
@@ -115,6 +107,12 @@ std::optional<std::string> CourierExecutive::cancel(const std::string& job_id, c
   if (job.finished()) return "job " + job_id + " is already " + to_string(job.state);
   if (!job.return_to.empty()) return "job " + job_id + " is already returning its object to " + job.return_to;
   const std::string why = reason.empty() ? std::string("cancelled") : "cancelled: " + reason;
+  if (job.state == JobState::stranded) {
+    // Its robot is gone: nothing can be returned now, and the job says where the object is.
+    finish(job, JobState::cancelled, why + "; " + job.reason, now_s);
+    reschedule_needed_ = true;
+    return std::nullopt;
+  }
   const HandoverOrder* in_flight = handover_in_flight(job_id);
   if (in_flight && !in_flight->load && in_flight->place == job.destination)
     return "job " + job_id + " is being handed over at " + job.destination + " now: too late to cancel";
@@ -160,54 +158,6 @@ std::optional<std::string> CourierExecutive::revise(const std::string& job_id,
   return std::nullopt;
 }
 
-void CourierExecutive::on_pose(const std::string& robot, double x, double y) {
-  const auto it = robots_.find(robot);
-  if (it == robots_.end() || !std::isfinite(x) || !std::isfinite(y)) return;
-  if (!it->second.pose_known) reschedule_needed_ = true;  // it can be planned for from now on
-  it->second.x = x;
-  it->second.y = y;
-  it->second.pose_known = true;
-}
-
-std::optional<std::string> CourierExecutive::closed_door_for(const std::string& place) const {
-  const auto door = floor_.door_to(place);
-  if (door && !doors_.believed_open(*door)) return door;
-  return std::nullopt;
-}
-
-std::string CourierExecutive::closed_reason(const std::string& door) const {
-  const auto view = doors_.view(door);
-  return door + " closed at " + clock_text(view ? view->seen_at_s : 0.0);
-}
-
-void CourierExecutive::on_door(const std::string& robot, const std::string& door_id, double angle_rad,
-                               double now_s) {
-  if (!robots_.count(robot)) return;             // only our own robots' eyes
-  if (!floor_.doors.count(door_id)) return;       // not a door of our floor
-  const DoorChange change = doors_.observe(door_id, angle_rad, now_s, robot);
-  if (change == DoorChange::none) return;
-  if (change == DoorChange::closed) {
-    event(ExecutionEvent::Kind::door_closed, door_id + " seen closed by " + robot + " at " + clock_text(now_s));
-    // A broken assumption: each open job whose next step lies behind this door fails over to the
-    // opportunistic primaries, and the rest is rescheduled in this same tick.
-    for (auto& [id, job] : jobs_) {
-      if (job.finished() || job.state == JobState::opportunistic) continue;
-      const NextStep step = next_step(job);
-      const std::string& place = step == NextStep::load ? job.object_place : job.target_place();
-      if (step != NextStep::none && floor_.door_to(place) == door_id) {
-        if (!job.return_to.empty()) continue;  // a return finds another place in reschedule()
-        make_opportunistic(job, closed_reason(door_id), now_s);
-      }
-    }
-    reschedule_needed_ = true;
-  } else {
-    event(ExecutionEvent::Kind::door_opened, door_id + " seen open by " + robot + " at " + clock_text(now_s));
-    for (const auto& [id, job] : jobs_)
-      if (job.state == JobState::opportunistic) opportunity_pending_ = true;
-    reschedule_needed_ = true;
-  }
-}
-
 void CourierExecutive::on_goal(const std::string& robot, const std::string& goal_id, GoalOutcome outcome,
                                const std::string& reason, double now_s) {
   const auto it = robots_.find(robot);
@@ -227,6 +177,13 @@ void CourierExecutive::on_goal(const std::string& robot, const std::string& goal
       return;
     case GoalOutcome::blocked: {
       const std::string place = r.goal_place;
+      if (place == kHomePlace) {
+        // The way home is blocked (another robot in it): stay a while, then try again.
+        r.goal_id.clear();
+        r.goal_place.clear();
+        r.hold_until_s = now_s + settings_.home_retry_s;
+        return;
+      }
       r.goal_id.clear();
       r.goal_place.clear();
       event(ExecutionEvent::Kind::goal_blocked, "goal to " + place + " blocked for " + robot + ": " + reason);
@@ -391,7 +348,7 @@ void CourierExecutive::give_up_on(const std::string& place, const std::string& r
   for (auto& [id, job] : jobs_) {
     const NextStep step = next_step(job);
     const std::string& p = step == NextStep::load ? job.object_place : job.target_place();
-    if (step == NextStep::none || p != place || handover_in_flight(id)) continue;
+    if (step == NextStep::none || p != place || handover_in_flight(id) || job.state == JobState::stranded) continue;
     if (job.aboard() && job.return_to.empty())
       start_return(job, JobState::failed, reason, now_s);
     else if (job.aboard())
@@ -405,7 +362,8 @@ void CourierExecutive::give_up_on(const std::string& place, const std::string& r
 
 void CourierExecutive::settle(double now_s) {
   for (auto& [id, job] : jobs_) {
-    if (job.finished() || next_step(job) != NextStep::none || handover_in_flight(id)) continue;
+    if (job.finished() || job.state == JobState::stranded || next_step(job) != NextStep::none || handover_in_flight(id))
+      continue;
     if (!job.return_to.empty())
       finish(job, job.end_state_after_return, job.reason_after_return(), now_s);
     else if (job.object_place == job.destination)
@@ -460,7 +418,7 @@ PlanRequest CourierExecutive::request_for(double now_s, const std::vector<std::s
     if (!door.open) req.closed_doors.insert(id);
   for (const auto& [id, job] : jobs_) {
     const bool extra = std::find(extra_jobs.begin(), extra_jobs.end(), id) != extra_jobs.end();
-    if (job.finished() || (job.state == JobState::opportunistic && !extra)) continue;
+    if (job.finished() || job.state == JobState::stranded || (job.state == JobState::opportunistic && !extra)) continue;
     if (next_step(job) == NextStep::none) continue;
     // A job aboard a robot that cannot be planned for yet waits for that robot's pose.
     if (job.aboard()) {
@@ -491,9 +449,18 @@ void CourierExecutive::adopt(const Plan& plan, double now_s) {
       const auto completion = plan.completion_s.find(job.id);
       const std::optional<double> eta =
           completion == plan.completion_s.end() ? std::nullopt : std::optional<double>(completion->second);
-      if (job.robot != id || job.estimated_completion_s != eta) {
+      // Why this robot: the scheduler's words with several robots; a job taken over from a robot
+      // that left says so until its next step starts.
+      const auto why = plan.allocation.find(job.id);
+      std::string allocation = why != plan.allocation.end() ? why->second : std::string();
+      if (job.reason.rfind("reallocated: ", 0) == 0) {
+        if (allocation.empty()) allocation = "assigned to " + id;
+        allocation += " (" + job.reason + ")";
+      }
+      if (job.robot != id || job.estimated_completion_s != eta || job.allocation != allocation) {
         job.robot = id;
         job.estimated_completion_s = eta;
+        job.allocation = allocation;
         changed(job);
       }
     }
@@ -530,49 +497,6 @@ void CourierExecutive::reschedule(double now_s) {
   adopt(plan, now_s);
 }
 
-void CourierExecutive::opportunity_check(double now_s) {
-  opportunity_pending_ = false;
-  for (auto& [id, job] : jobs_) {
-    if (job.state != JobState::opportunistic) continue;
-    const NextStep step = next_step(job);
-    const std::string& place = step == NextStep::load ? job.object_place : job.target_place();
-    if (closed_door_for(place)) continue;  // still no way in
-    const Plan without = scheduler_.plan(request_for(now_s, {}));
-    PlanRequest with_request = request_for(now_s, {id});
-    with_request.first = {id};
-    const Plan with = scheduler_.plan(with_request);
-    if (without.failed || with.failed || with.unschedulable.count(id)) continue;
-    // Keeps every other deadline: no other job later than it would be without the opportunity.
-    int late_without = 0, late_with = 0;
-    double lateness_without = 0.0, lateness_with = 0.0;
-    for (const auto& [other_id, other] : jobs_) {
-      if (other_id == id || !other.deadline_s) continue;
-      const auto a = without.completion_s.find(other_id);
-      const auto b = with.completion_s.find(other_id);
-      if (a != without.completion_s.end()) {
-        late_without += a->second > *other.deadline_s;
-        lateness_without += std::max(0.0, a->second - *other.deadline_s);
-      }
-      if (b != with.completion_s.end()) {
-        late_with += b->second > *other.deadline_s;
-        lateness_with += std::max(0.0, b->second - *other.deadline_s);
-      } else if (a != without.completion_s.end()) {
-        ++late_with;  // the detour would leave it out altogether
-      }
-    }
-    if (late_with > late_without || lateness_with > lateness_without + 1e-6) {
-      event(ExecutionEvent::Kind::opportunity_declined, "opportunity for job " + id + " declined: it would make other jobs later");
-      continue;
-    }
-    job.state = JobState::queued;
-    job.reason.clear();
-    event(ExecutionEvent::Kind::opportunity_taken, "opportunity: job " + id + " taken up now (" + clock_text(now_s) + ")");
-    changed(job);
-    adopt(with, now_s);
-    reschedule_needed_ = false;
-  }
-}
-
 bool CourierExecutive::at(const Robot& robot, const std::string& place) const {
   if (robot.at_place == place) return true;
   const FloorPlace* p = floor_.place(place);
@@ -583,7 +507,7 @@ bool CourierExecutive::still_needed(const Robot& robot, const PlanStop& stop) co
   const auto it = jobs_.find(stop.job_id);
   if (it == jobs_.end()) return false;
   const Job& job = it->second;
-  if (job.finished() || job.state == JobState::opportunistic) return false;
+  if (job.finished() || job.state == JobState::opportunistic || job.state == JobState::stranded) return false;
   const NextStep step = next_step(job);
   if (stop.load) return step == NextStep::load && job.object_place == stop.place;
   return step == NextStep::unload && job.object_carrier == robot.id && job.target_place() == stop.place;
@@ -642,6 +566,8 @@ void CourierExecutive::dispatch(Robot& robot, double now_s) {
     }
   if (!next) {
     idle_policy(robot, now_s);
+    // A return just started is planned and dispatched in this tick's second round.
+    if (!reschedule_needed_) park(robot, now_s);
     return;
   }
   Job& job = jobs_.at(next->job_id);
@@ -655,6 +581,7 @@ void CourierExecutive::dispatch(Robot& robot, double now_s) {
                            : next->load            ? JobPhase::to_pickup
                                                    : JobPhase::to_destination;
     if (job.state != JobState::underway || job.phase != phase || job.robot != robot.id) {
+      if (job.reason.rfind("reallocated: ", 0) == 0) job.reason.clear();  // taken up by this robot
       job.state = JobState::underway;
       job.phase = phase;
       job.robot = robot.id;

@@ -13,6 +13,10 @@
 // Handovers nobody answers are repeated with the same request id; a refused one waits and retries;
 // a robot idle with the object of an opportunistic job aboard returns it to its pickup (the job
 // fails with its reason); a cancelled job's object aboard is returned before the job ends.
+// Fleet (fleet.cpp): robots join and leave while jobs run. A robot that joins is planned for from
+// the next reschedule; one that leaves has its queued jobs reallocated to the others, and a job
+// whose object it carried (or was handing over) becomes stranded, saying where the robot was last
+// seen, until the robot comes back: then its unanswered handover is asked again and the job goes on.
 #include "services/courier/core/execution/door_belief.hpp"
 #include "services/courier/core/execution/floor.hpp"
 #include "services/courier/core/execution/job.hpp"
@@ -35,16 +39,28 @@ struct ExecutiveSettings {
   int max_blocked_goals = 2;         // a place unreachable this often, no door to blame: its job fails
   int max_attempts = 3;              // refused goals, failed or refused handovers of one step
   double goal_tolerance_m = 0.35;    // for navigation goals to places (within the place's radius)
+  double home_retry_s = 30.0;        // an idle robot whose way home was blocked tries again after this
   // Part of every goal and request id, so that ids never repeat across runs of the service (a
   // simulator answers a repeated request id with its old answer). The node uses the journal's run.
   std::string id_tag = "r1";
 };
+
+// The goal place of a robot driving home (where it joined the fleet); no place of the floor.
+inline constexpr char kHomePlace[] = "@home";
 
 struct NavGoalOrder {
   std::string robot;
   std::string goal_id;
   double x = 0.0, y = 0.0;
   double tolerance_m = 0.0;
+};
+
+// A navigation goal of ours that is no longer needed (its job went to another robot or ended): the
+// robot stops instead of driving on into a room another robot may be bound for.
+struct GoalCancelOrder {
+  std::string robot;
+  std::string goal_id;
+  std::string reason;
 };
 
 struct HandoverOrder {
@@ -78,7 +94,7 @@ struct ExecutionEvent {
   enum class Kind {
     accepted, revised, heading, loaded, unloaded, door_closed, door_opened, goal_blocked, goal_ended,
     handover_failed, handover_refused, failed_over, opportunity_taken, opportunity_declined, returning, finished,
-    schedule_failed
+    schedule_failed, robot_joined, robot_left, reallocated, stranded, resumed, goal_cancelled
   };
   Kind kind;
   std::string text;
@@ -91,12 +107,13 @@ struct Orders {
   std::vector<std::string> changed_jobs;
   std::vector<HandoverOrder> handovers;
   std::vector<NavGoalOrder> goals;
+  std::vector<GoalCancelOrder> cancels;
   std::vector<ScheduleNote> schedules;
   std::vector<ReportNote> reports;
   std::vector<ExecutionEvent> events;  // what happened, in order (logs, tests, pictures)
   bool empty() const {
-    return changed_jobs.empty() && handovers.empty() && goals.empty() && schedules.empty() && reports.empty() &&
-           events.empty();
+    return changed_jobs.empty() && handovers.empty() && goals.empty() && cancels.empty() && schedules.empty() &&
+           reports.empty() && events.empty();
   }
 };
 
@@ -107,8 +124,14 @@ class CourierExecutive {
  public:
   CourierExecutive(Floor floor, ScheduleSource& scheduler, ExecutiveSettings settings = {});
 
+  // Joins the fleet (again): planned for once its pose is known. Stranded jobs whose object it
+  // carries go on; its handover that was unanswered when it left is asked again (same id).
   void add_robot(const std::string& id, int capacity);
+  // Leaves the fleet (`why`: "heartbeat lost", "stopped"): its jobs not aboard go back to the
+  // others at the next reschedule, the jobs of objects aboard become stranded with its last place.
+  void remove_robot(const std::string& id, const std::string& why, double now_s);
   bool has_robot(const std::string& id) const { return robots_.count(id) != 0; }
+  std::vector<std::string> robot_ids() const;
 
   // A job accepted by the command front end (pickup, destination and object checked there).
   void add_job(Job job, double now_s);
@@ -116,6 +139,7 @@ class CourierExecutive {
   void restore_job(Job job);
   // Restores a handover request that was sent but whose answer was not journalled: it is sent
   // again with the same id, and the simulator answers a repeat with its latest answer.
+  // A robot not in the fleet yet gets it when it joins.
   void restore_pending_handover(const HandoverOrder& order);
 
   // Errors (unknown job, already finished, returning) as a reason; nothing on success.
@@ -162,6 +186,10 @@ class CourierExecutive {
     int request_seq = 0;
     std::map<std::string, int> blocked;  // place -> blocked goals without a door to blame
     std::map<std::string, int> refused;  // place -> refused or preempted goals in a row
+    // Where it joined the fleet (its first pose): with several robots, an idle one goes back
+    // there, out of the others' way (a robot stopped in the hallway blocks a doorway).
+    bool home_known = false;
+    double home_x = 0.0, home_y = 0.0;
   };
 
   void reschedule(double now_s);
@@ -170,6 +198,8 @@ class CourierExecutive {
   void opportunity_check(double now_s);
   void dispatch(Robot& robot, double now_s);
   void idle_policy(Robot& robot, double now_s);
+  // Nothing to do: home (several robots) or stop (cancel a goal no longer needed). fleet.cpp.
+  void park(Robot& robot, double now_s);
   void send_goal(Robot& robot, const std::string& place, double now_s);
   void send_handover(Robot& robot, const PlanStop& stop, double now_s);
   bool at(const Robot& robot, const std::string& place) const;
@@ -193,12 +223,18 @@ class CourierExecutive {
   // The door that a step at `place` needs open, when it is believed closed.
   std::optional<std::string> closed_door_for(const std::string& place) const;
   std::string closed_reason(const std::string& door) const;
+  // "at (12.3, 4.5) near a114-desk in A-114": a robot's last known place, for stranded objects.
+  std::string last_seen(const Robot& robot) const;
 
   Floor floor_;
   ScheduleSource& scheduler_;
   ExecutiveSettings settings_;
   DoorBelief doors_;
   std::map<std::string, Robot> robots_;
+  // Robots that left: their request counters (ids never repeat) and unanswered handover, kept
+  // for when they come back.
+  std::map<std::string, Robot> departed_;
+  std::vector<HandoverOrder> restored_handovers_;  // for robots that have not joined yet
   std::map<std::string, Job> jobs_;
   bool reschedule_needed_ = false;
   std::optional<double> schedule_retry_at_;  // after a schedule failed as a whole

@@ -10,6 +10,7 @@ const char* to_string(JobState s) {
     case JobState::completed: return "completed";
     case JobState::failed: return "failed";
     case JobState::cancelled: return "cancelled";
+    case JobState::stranded: return "stranded";
   }
   return "?";
 }
@@ -28,7 +29,7 @@ const char* to_string(JobPhase p) {
 
 std::optional<JobState> job_state_from(const std::string& word) {
   for (const JobState s : {JobState::queued, JobState::underway, JobState::opportunistic, JobState::completed,
-                           JobState::failed, JobState::cancelled})
+                           JobState::failed, JobState::cancelled, JobState::stranded})
     if (word == to_string(s)) return s;
   return std::nullopt;
 }

@@ -8,7 +8,9 @@
 
 namespace autonomy::courier {
 
-enum class JobState { queued, underway, opportunistic, completed, failed, cancelled };
+// stranded: its object is aboard a robot that left or was lost; the job waits for that robot to come
+// back (it then goes on), and its reason says where the robot was last seen.
+enum class JobState { queued, underway, opportunistic, completed, failed, cancelled, stranded };
 enum class JobPhase { none, to_pickup, loading, to_destination, unloading, returning };
 
 const char* to_string(JobState s);
@@ -38,6 +40,9 @@ struct Job {
   std::string robot;   // the courier robot assigned, or ""
   std::string reason;  // why it waits, failed or was cancelled
   std::optional<double> estimated_completion_s;
+  // Why this robot (several couriers): "assigned to rhino2: 3 min earlier than rhino1"; from the
+  // latest schedule, not journalled.
+  std::string allocation;
 
   // Belief about the object: exactly one of the two is non-empty.
   std::string object_place;    // where it lies

@@ -49,6 +49,8 @@ struct Plan {
   std::map<std::string, std::vector<PlanStop>> routes;  // robot -> stops in order
   std::map<std::string, std::string> unschedulable;     // job -> why (e.g. "A-120 closed")
   std::map<std::string, double> completion_s;           // job -> predicted completion
+  // job -> why its robot (several robots only): "assigned to rhino2: 3 min earlier than rhino1"
+  std::map<std::string, std::string> allocation;
   int late_jobs = 0;
   double total_lateness_s = 0.0;
   std::string engine;

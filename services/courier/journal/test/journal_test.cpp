@@ -80,5 +80,26 @@ TEST(Journal, UnusableFilesAreReportedWithThePath) {
   }
 }
 
+TEST(Journal, AStrandedJobIsKeptWithItsReason) {
+  const std::string path = fresh_path("stranded");
+  {
+    Journal journal(path);
+    Job j = red_letter();
+    journal.record_command("c1", R"({"accepted":true})", &j);
+    j.state = JobState::stranded;
+    j.object_place.clear();
+    j.object_carrier = "rhino2";
+    j.robot = "rhino2";
+    j.reason = "letter-red stranded aboard rhino2, last seen at (19.2, 3.1) near a114-desk in A-114 at 09:01:17";
+    journal.save_progress({&j}, {});
+  }
+  const Journal::Contents c = Journal(path).load();
+  ASSERT_EQ(c.jobs.size(), 1u);
+  EXPECT_EQ(c.jobs[0].state, JobState::stranded);
+  EXPECT_FALSE(c.jobs[0].finished());  // a restarted courier waits for rhino2 with it
+  EXPECT_EQ(c.jobs[0].object_carrier, "rhino2");
+  EXPECT_NE(c.jobs[0].reason.find("last seen at (19.2, 3.1)"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace autonomy::courier

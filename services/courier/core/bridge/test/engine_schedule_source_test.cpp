@@ -92,5 +92,46 @@ TEST(EngineScheduleSource, ForcedFirstJobLeadsTheRoute) {
   EXPECT_EQ(plan.routes.at("r").front().job_id, "b");
 }
 
+TEST(EngineScheduleSource, SeveralRobotsGetJobsWithTheAllocationRuleInWords) {
+  SmallOffice o;
+  EngineScheduleSource source(o.knowledge, o.floor, o.map, settings());
+  PlanRequest request;
+  request.now_s = 11 * 3600.0;  // Bob is in
+  // One robot in each room: each job is for the robot beside its pickup.
+  request.robots = {{"west", 3.0, 3.0, 1}, {"east", 17.0, 3.0, 1}};
+  request.jobs = {{"from-ann", "letter/red", "r1-desk", "hall", std::nullopt, ""},
+                  {"from-bob", "book/green", "r2-desk", "hall", std::nullopt, ""}};
+  const Plan plan = source.plan(request);
+  EXPECT_EQ(plan.engine, "exact");
+  ASSERT_EQ(plan.routes.count("west"), 1u);
+  ASSERT_EQ(plan.routes.count("east"), 1u);
+  ASSERT_EQ(plan.routes.at("west").size(), 2u);
+  EXPECT_EQ(plan.routes.at("west")[0].job_id, "from-ann");
+  EXPECT_EQ(plan.routes.at("east")[0].job_id, "from-bob");
+  ASSERT_EQ(plan.allocation.count("from-ann"), 1u);
+  EXPECT_EQ(plan.allocation.at("from-ann").rfind("assigned to west: ", 0), 0u) << plan.allocation.at("from-ann");
+  EXPECT_NE(plan.allocation.at("from-ann").find(" earlier than east"), std::string::npos) << plan.allocation.at("from-ann");
+  EXPECT_EQ(plan.allocation.at("from-bob").rfind("assigned to east: ", 0), 0u) << plan.allocation.at("from-bob");
+
+  // Alone: no choice, no words.
+  request.robots.resize(1);
+  EXPECT_TRUE(source.plan(request).allocation.empty());
+}
+
+TEST(EngineScheduleSource, ExactOnlyWhileTheAssignmentsCanBeEnumerated) {
+  SmallOffice o;
+  EngineScheduleSource source(o.knowledge, o.floor, o.map, settings());
+  PlanRequest request;
+  request.now_s = 11 * 3600.0;
+  for (int r = 0; r < 4; ++r) request.robots.push_back({"r" + std::to_string(r), 10.0, 8.0, 3});
+  for (int j = 0; j < 7; ++j)  // 4^7 = 16384 assignments: still exact
+    request.jobs.push_back({"j" + std::to_string(j), "letter/c" + std::to_string(j), "r1-desk", "hall", std::nullopt, ""});
+  EXPECT_EQ(source.engine_for(source.problem_for(request)), "exact");
+  request.jobs.push_back({"j7", "letter/c7", "r1-desk", "hall", std::nullopt, ""});  // 4^8
+  EXPECT_EQ(source.engine_for(source.problem_for(request)), "large");
+  request.robots.resize(1);  // one robot, 8 jobs: exact again (exact_max_jobs 8)
+  EXPECT_EQ(source.engine_for(source.problem_for(request)), "exact");
+}
+
 }  // namespace
 }  // namespace autonomy::courier

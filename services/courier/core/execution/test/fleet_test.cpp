@@ -1,0 +1,315 @@
+// The executive with several robots: a robot joining while jobs run gets work at the next
+// reschedule; a robot that leaves has its queued jobs reallocated and the object it carried
+// reported stranded with its last known place, until it comes back. And the roster that turns
+// heartbeats into joins and leaves.
+#include "services/courier/core/execution/courier_executive.hpp"
+#include "services/courier/core/execution/fleet_roster.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace autonomy::courier {
+namespace {
+
+Floor office_floor() {
+  Floor f;
+  f.places["meeting-table"] = {4.0, 10.7, "A-111", 1.0};
+  f.places["librarian-desk"] = {3.5, 4.5, "A-110", 1.0};
+  f.places["a114-desk"] = {19.0, 2.6, "A-114", 1.0};
+  f.places["michael-desk"] = {37.5, 2.6, "A-120", 1.0};
+  f.places["hallway-west"] = {1.5, 8.0, "", 1.0};
+  for (const char* room : {"A-110", "A-111", "A-114", "A-120"}) f.door_of_room[room] = room;
+  return f;
+}
+
+// Jobs aboard stay with their carrier; the others go to the robot `prefer` names when it is
+// planned for, else to the robot with the fewest jobs so far. 60 s per stop. Records requests.
+class FleetScheduler : public ScheduleSource {
+ public:
+  Plan plan(const PlanRequest& request) override {
+    requests.push_back(request);
+    Plan plan;
+    plan.engine = "fleet-test";
+    std::map<std::string, double> t;
+    for (const auto& r : request.robots) t[r.id] = request.now_s;
+    if (t.empty()) return plan;
+    for (const PlanJob& j : request.jobs) {
+      std::string robot = j.aboard;
+      if (robot.empty()) {
+        const auto p = prefer.find(j.id);
+        if (p != prefer.end() && t.count(p->second)) {
+          robot = p->second;
+        } else {
+          robot = t.begin()->first;
+          for (const auto& [id, when] : t)
+            if (plan.routes[id].size() < plan.routes[robot].size()) robot = id;
+        }
+      }
+      if (j.aboard.empty())
+        plan.routes[robot].push_back({j.id, true, j.pickup, "", t[robot] += 60, t[robot]});
+      plan.routes[robot].push_back({j.id, false, j.destination, "", t[robot] += 60, t[robot]});
+      plan.completion_s[j.id] = t[robot];
+      plan.allocation[j.id] = "assigned to " + robot + ": test";
+    }
+    return plan;
+  }
+  std::vector<PlanRequest> requests;
+  std::map<std::string, std::string> prefer;
+};
+
+Job delivery(const std::string& id, const std::string& object, const std::string& from,
+             const std::string& to) {
+  Job j;
+  j.id = id;
+  j.command_id = "c-" + id;
+  j.object = {object, "letter", object};
+  j.pickup = from;
+  j.destination = to;
+  return j;
+}
+
+class FleetTest : public ::testing::Test {
+ protected:
+  FleetTest() : exec_(office_floor(), scheduler_) {}
+
+  Orders step() {
+    Orders o = exec_.step(now_);
+    for (const auto& e : o.events) events_.push_back({e.kind, e.text});
+    for (const auto& g : o.goals) goals_[g.robot] = g;
+    for (const auto& h : o.handovers) handovers_[h.robot] = h;
+    return o;
+  }
+  void reach(const std::string& robot, double x, double y) {
+    now_ += 30;
+    exec_.on_pose(robot, x, y);
+    exec_.on_goal(robot, goals_.at(robot).goal_id, GoalOutcome::reached, "", now_);
+    step();
+  }
+  void complete(const std::string& robot) {
+    now_ += 10;
+    exec_.on_handover(handovers_.at(robot).request_id, HandoverOutcome::completed, "", "", now_);
+    step();
+  }
+  std::vector<std::string> texts(ExecutionEvent::Kind kind) const {
+    std::vector<std::string> out;
+    for (const auto& [k, text] : events_)
+      if (k == kind) out.push_back(text);
+    return out;
+  }
+
+  FleetScheduler scheduler_;
+  CourierExecutive exec_;
+  double now_ = 9 * 3600.0;
+  std::vector<std::pair<ExecutionEvent::Kind, std::string>> events_;
+  std::map<std::string, NavGoalOrder> goals_;
+  std::map<std::string, HandoverOrder> handovers_;
+};
+
+TEST_F(FleetTest, ARobotJoiningWhileJobsRunGetsWorkAtTheNextReschedule) {
+  exec_.add_robot("rhino", 3);
+  exec_.on_pose("rhino", 1.5, 8.0);
+  exec_.add_job(delivery("job-1", "red", "meeting-table", "michael-desk"), now_);
+  exec_.add_job(delivery("job-2", "green", "librarian-desk", "a114-desk"), now_);
+  step();
+  EXPECT_EQ(exec_.route("rhino").size(), 4u);  // alone: both jobs
+  EXPECT_EQ(goals_.count("rhino2"), 0u);
+
+  now_ += 5;
+  exec_.add_robot("rhino2", 2);
+  step();
+  // Not located yet: not planned for.
+  EXPECT_EQ(scheduler_.requests.back().robots.size(), 1u);
+  exec_.on_pose("rhino2", 10.0, 8.0);
+  scheduler_.prefer["job-2"] = "rhino2";
+  step();
+  ASSERT_EQ(scheduler_.requests.back().robots.size(), 2u);
+  EXPECT_EQ(scheduler_.requests.back().robots[1].capacity, 2);
+  ASSERT_EQ(goals_.count("rhino2"), 1u);
+  EXPECT_NE(goals_["rhino2"].goal_id.find("librarian-desk"), std::string::npos)
+      << goals_["rhino2"].goal_id;
+  EXPECT_EQ(exec_.job("job-2")->robot, "rhino2");
+  EXPECT_EQ(exec_.job("job-2")->allocation, "assigned to rhino2: test");
+  ASSERT_EQ(texts(ExecutionEvent::Kind::robot_joined).size(), 2u);
+  EXPECT_EQ(texts(ExecutionEvent::Kind::robot_joined)[1], "rhino2 joined the fleet (capacity 2)");
+}
+
+TEST_F(FleetTest, ARobotWhoseJobWentToAnotherGoesHomeOutOfTheWay) {
+  exec_.add_robot("rhino", 3);
+  exec_.add_robot("rhino2", 3);
+  exec_.on_pose("rhino", 1.5, 8.0);
+  exec_.on_pose("rhino2", 30.0, 8.0);
+  scheduler_.prefer = {{"job-1", "rhino"}, {"job-2", "rhino2"}};
+  exec_.add_job(delivery("job-1", "red", "meeting-table", "michael-desk"), now_);
+  exec_.add_job(delivery("job-2", "green", "librarian-desk", "a114-desk"), now_);
+  step();
+  ASSERT_EQ(goals_.count("rhino2"), 1u);
+  const std::string goal = goals_["rhino2"].goal_id;
+  exec_.on_goal("rhino2", goal, GoalOutcome::active, "", now_);
+  // A reschedule gives the green book to rhino: rhino2's drive west is no longer needed.
+  scheduler_.prefer["job-2"] = "rhino";
+  now_ += 10;
+  exec_.add_job(delivery("job-3", "blue", "meeting-table", "a114-desk"), now_);
+  scheduler_.prefer["job-3"] = "rhino";
+  exec_.on_pose("rhino2", 20.0, 7.5);  // half way, in the hallway
+  const Orders o = step();
+  EXPECT_EQ(exec_.job("job-2")->robot, "rhino");
+  // Not stopped where it is (in the others' way) but sent back to where it joined.
+  ASSERT_EQ(o.goals.size(), 1u);
+  EXPECT_EQ(o.goals[0].robot, "rhino2");
+  EXPECT_NE(o.goals[0].goal_id, goal);
+  EXPECT_NE(o.goals[0].goal_id.find("rhino2/home/"), std::string::npos);
+  EXPECT_DOUBLE_EQ(o.goals[0].x, 30.0);
+  EXPECT_DOUBLE_EQ(o.goals[0].y, 8.0);
+  EXPECT_TRUE(o.cancels.empty());
+  // Home: nothing more for it; the old goal's status changes nothing.
+  exec_.on_goal("rhino2", goal, GoalOutcome::preempted, "preempted", now_);
+  exec_.on_pose("rhino2", 30.0, 8.0);
+  exec_.on_goal("rhino2", o.goals[0].goal_id, GoalOutcome::reached, "", now_);
+  const Orders after = step();
+  for (const auto& g : after.goals) EXPECT_NE(g.robot, "rhino2");
+  EXPECT_TRUE(after.cancels.empty());
+}
+
+TEST_F(FleetTest, AloneARobotWhoseJobEndedStopsInsteadOfDrivingOn) {
+  exec_.add_robot("rhino", 3);
+  exec_.on_pose("rhino", 1.5, 8.0);
+  exec_.add_job(delivery("job-1", "red", "meeting-table", "michael-desk"), now_);
+  step();
+  const std::string goal = goals_.at("rhino").goal_id;
+  exec_.on_goal("rhino", goal, GoalOutcome::active, "", now_);
+  EXPECT_FALSE(exec_.cancel("job-1", "not needed", now_));
+  const Orders o = step();
+  ASSERT_EQ(o.cancels.size(), 1u);
+  EXPECT_EQ(o.cancels[0].goal_id, goal);
+  EXPECT_EQ(o.cancels[0].reason, "nothing left for rhino at meeting-table");
+}
+
+TEST_F(FleetTest, ALostRobotsQueuedJobsGoToTheOtherAndItsObjectIsStrandedWhereItWasLastSeen) {
+  exec_.add_robot("rhino", 3);
+  exec_.add_robot("rhino2", 3);
+  exec_.on_pose("rhino", 1.5, 8.0);
+  exec_.on_pose("rhino2", 10.0, 8.0);
+  scheduler_.prefer = {{"job-1", "rhino2"}, {"job-2", "rhino2"}, {"job-3", "rhino"}};
+  exec_.add_job(delivery("job-1", "red", "meeting-table", "michael-desk"), now_);
+  exec_.add_job(delivery("job-2", "green", "librarian-desk", "a114-desk"), now_);
+  exec_.add_job(delivery("job-3", "blue", "librarian-desk", "meeting-table"), now_);
+  step();
+  reach("rhino2", 4.0, 10.7);  // at the meeting table
+  ASSERT_EQ(handovers_.count("rhino2"), 1u);
+  complete("rhino2");  // the red letter is aboard rhino2
+  ASSERT_EQ(exec_.job("job-1")->object_carrier, "rhino2");
+  exec_.on_pose("rhino2", 19.2, 3.1);  // on its way, near the A-114 desk
+
+  now_ += 7;
+  exec_.remove_robot("rhino2", "heartbeat lost", now_);
+  step();
+  const Job* stranded = exec_.job("job-1");
+  EXPECT_EQ(stranded->state, JobState::stranded);
+  EXPECT_EQ(stranded->robot, "rhino2");
+  EXPECT_EQ(stranded->reason,
+            "red stranded aboard rhino2, last seen at (19.2, 3.1) near a114-desk in A-114 at "
+            "09:00:47: heartbeat lost");
+  ASSERT_EQ(texts(ExecutionEvent::Kind::stranded).size(), 1u);
+  EXPECT_EQ(texts(ExecutionEvent::Kind::stranded)[0], "job job-1: " + stranded->reason);
+  ASSERT_EQ(texts(ExecutionEvent::Kind::robot_left).size(), 1u);
+  // The stranded job is no one's to plan; job-2 is now rhino's.
+  for (const PlanJob& j : scheduler_.requests.back().jobs) EXPECT_NE(j.id, "job-1");
+  ASSERT_EQ(scheduler_.requests.back().robots.size(), 1u);
+  EXPECT_EQ(exec_.job("job-2")->robot, "rhino");
+  EXPECT_NE(exec_.job("job-2")->allocation.find(
+                "(reallocated: rhino2 left (heartbeat lost) at 09:00:47)"),
+            std::string::npos)
+      << exec_.job("job-2")->allocation;
+  ASSERT_EQ(texts(ExecutionEvent::Kind::reallocated).size(), 1u);
+  EXPECT_EQ(texts(ExecutionEvent::Kind::reallocated)[0],
+            "job job-2 reallocated: rhino2 left (heartbeat lost)");
+  EXPECT_EQ(exec_.robot_ids(), std::vector<std::string>{"rhino"});
+
+  // rhino2 comes back (its behavior restarted): the letter's job goes on, on rhino2.
+  now_ += 60;
+  exec_.add_robot("rhino2", 3);
+  exec_.on_pose("rhino2", 19.2, 3.1);
+  EXPECT_EQ(exec_.job("job-1")->state, JobState::queued);
+  step();
+  ASSERT_EQ(texts(ExecutionEvent::Kind::resumed).size(), 1u);
+  EXPECT_EQ(texts(ExecutionEvent::Kind::robot_joined).back(),
+            "rhino2 is back in the fleet (capacity 3)");
+  ASSERT_EQ(goals_.count("rhino2"), 1u);
+  EXPECT_NE(goals_["rhino2"].goal_id.find("michael-desk"), std::string::npos)
+      << goals_["rhino2"].goal_id;
+  EXPECT_EQ(exec_.job("job-1")->state, JobState::underway);
+}
+
+TEST_F(FleetTest, AHandoverUnansweredWhenTheRobotWasLostIsAskedAgainWithItsIdWhenItIsBack) {
+  exec_.add_robot("rhino", 3);
+  exec_.on_pose("rhino", 1.5, 8.0);
+  exec_.add_job(delivery("job-1", "red", "meeting-table", "michael-desk"), now_);
+  step();
+  reach("rhino", 4.0, 10.7);
+  ASSERT_EQ(handovers_.count("rhino"), 1u);
+  const std::string request = handovers_["rhino"].request_id;
+  exec_.remove_robot("rhino", "stopped", now_);
+  step();
+  EXPECT_EQ(exec_.job("job-1")->state, JobState::stranded);
+  EXPECT_NE(exec_.job("job-1")->reason.find(
+                "red may be aboard rhino (its load at meeting-table was not answered)"),
+            std::string::npos)
+      << exec_.job("job-1")->reason;
+  handovers_.clear();
+  exec_.add_robot("rhino", 3);
+  exec_.on_pose("rhino", 4.0, 10.7);
+  step();
+  ASSERT_EQ(handovers_.count("rhino"), 1u);
+  EXPECT_EQ(handovers_["rhino"].request_id, request);
+}
+
+TEST_F(FleetTest, CancellingAStrandedJobEndsItSayingWhereTheObjectIs) {
+  exec_.add_robot("rhino", 3);
+  exec_.on_pose("rhino", 1.5, 8.0);
+  exec_.add_job(delivery("job-1", "red", "meeting-table", "michael-desk"), now_);
+  step();
+  reach("rhino", 4.0, 10.7);
+  complete("rhino");
+  exec_.remove_robot("rhino", "heartbeat lost", now_);
+  step();
+  EXPECT_FALSE(exec_.cancel("job-1", "", now_));
+  const Job* job = exec_.job("job-1");
+  EXPECT_EQ(job->state, JobState::cancelled);
+  EXPECT_NE(job->reason.find("red stranded aboard rhino"), std::string::npos) << job->reason;
+}
+
+TEST(FleetRoster, CouriersJoinWhenReadyAndLeaveWhenStoppedGoneOrSilent) {
+  FleetRoster roster({"rhino"}, 3.0);
+  EXPECT_TRUE(roster.on_heartbeat("rhino", BeatKind::starting, {}, 0.0).empty());
+  auto c = roster.on_heartbeat("rhino", BeatKind::ready, {}, 0.5);  // declared in the scenario
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_TRUE(c[0].joined);
+  EXPECT_TRUE(roster.on_heartbeat("rhino", BeatKind::ready, {}, 1.0).empty());
+  // Not declared and no capability: a scout, not ours.
+  EXPECT_TRUE(roster.on_heartbeat("scout", BeatKind::ready, {}, 1.0).empty());
+  EXPECT_FALSE(roster.member("scout"));
+  c = roster.on_heartbeat("rhino2", BeatKind::ready, {"courier"}, 1.0);
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_EQ(c[0].robot, "rhino2");
+
+  c = roster.on_heartbeat("rhino2", BeatKind::no_writers, {}, 2.0);
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_FALSE(c[0].joined);
+  EXPECT_EQ(c[0].why, "heartbeat lost");
+  EXPECT_FALSE(roster.member("rhino2"));
+
+  EXPECT_TRUE(roster.expire(3.9).empty());  // rhino heard at 1.0
+  c = roster.expire(4.5);
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_EQ(c[0].why, "heartbeat lost: none for 4 s");
+  c = roster.on_heartbeat("rhino", BeatKind::ready, {}, 5.0);  // back
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_TRUE(c[0].joined);
+  c = roster.on_heartbeat("rhino", BeatKind::stopping, {}, 6.0);
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_EQ(c[0].why, "stopped");
+}
+
+}  // namespace
+}  // namespace autonomy::courier
