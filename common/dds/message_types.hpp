@@ -6,6 +6,7 @@
 #include "common/msg/courier.hpp"
 #include "common/msg/navigation.hpp"
 #include "common/msg/office.hpp"
+#include "common/msg/planner.hpp"
 #include "common/msg/robot.hpp"
 #include "common/msg/simulation.hpp"
 #include "common/msg/perception.hpp"
@@ -16,6 +17,7 @@
 #include "idl/courier.h"
 #include "idl/navigation.h"
 #include "idl/office.h"
+#include "idl/planner.h"
 #include "idl/robot.h"
 #include "idl/simulation.h"
 #include "idl/perception.h"
@@ -85,6 +87,12 @@ AUTONOMY_DDS_TYPE(msg::CourierReply, autonomy_CourierReply)
 AUTONOMY_DDS_TYPE(msg::CourierJobStatus, autonomy_CourierJobStatus)
 AUTONOMY_DDS_TYPE(msg::CourierSchedule, autonomy_CourierSchedule)
 AUTONOMY_DDS_TYPE(msg::CourierReport, autonomy_CourierReport)
+// The planner: requests, replies, progress, cancellation, the latest plan per requester.
+AUTONOMY_DDS_TYPE(msg::PlanningRequest, autonomy_PlanningRequest)
+AUTONOMY_DDS_TYPE(msg::PlanningReply, autonomy_PlanningReply)
+AUTONOMY_DDS_TYPE(msg::PlanningProgress, autonomy_PlanningProgress)
+AUTONOMY_DDS_TYPE(msg::PlanningCancel, autonomy_PlanningCancel)
+AUTONOMY_DDS_TYPE(msg::LatestPlan, autonomy_LatestPlan)
 
 }  // namespace autonomy::dds
 

@@ -52,6 +52,12 @@ inline constexpr TopicSpec<msg::CourierJobStatus> courier_job_status{"autonomy/c
                                                                      QosClass::State};
 inline constexpr TopicSpec<msg::CourierSchedule> courier_schedule{"autonomy/courier/schedule", QosClass::State};
 inline constexpr TopicSpec<msg::CourierReport> courier_report{"autonomy/courier/report", QosClass::Event};
+// The planner: requests in, one reply each, progress of long searches, cancels, latest plans.
+inline constexpr TopicSpec<msg::PlanningRequest> planner_request{"autonomy/planner/request", QosClass::Request};
+inline constexpr TopicSpec<msg::PlanningReply> planner_reply{"autonomy/planner/reply", QosClass::Reply};
+inline constexpr TopicSpec<msg::PlanningProgress> planner_progress{"autonomy/planner/progress", QosClass::Event};
+inline constexpr TopicSpec<msg::PlanningCancel> planner_cancel{"autonomy/planner/cancel", QosClass::Command};
+inline constexpr TopicSpec<msg::LatestPlan> planner_plan{"autonomy/planner/plan", QosClass::State};
 
 // Calls visit(spec) for every topic of the catalogue: tools use it to find a topic's type by name.
 template <typename Visitor>
@@ -88,6 +94,11 @@ void for_each_topic(Visitor&& visit) {
   visit(courier_job_status);
   visit(courier_schedule);
   visit(courier_report);
+  visit(planner_request);
+  visit(planner_reply);
+  visit(planner_progress);
+  visit(planner_cancel);
+  visit(planner_plan);
 }
 
 }  // namespace autonomy::dds::topics

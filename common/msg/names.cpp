@@ -3,6 +3,7 @@
 #include "common/msg/courier.hpp"
 #include "common/msg/navigation.hpp"
 #include "common/msg/office.hpp"
+#include "common/msg/planner.hpp"
 #include "common/msg/robot.hpp"
 #include "common/msg/simulation.hpp"
 #include "common/msg/system.hpp"
@@ -67,6 +68,18 @@ const char* to_string(JobState s) {
     case JobState::Completed: return "completed";
     case JobState::Failed: return "failed";
     case JobState::Cancelled: return "cancelled";
+  }
+  return "?";
+}
+
+const char* to_string(PlanningStatus s) {
+  switch (s) {
+    case PlanningStatus::Optimal: return "optimal";
+    case PlanningStatus::PlanFound: return "plan_found";
+    case PlanningStatus::Infeasible: return "infeasible";
+    case PlanningStatus::OutOfTime: return "out_of_time";
+    case PlanningStatus::Cancelled: return "cancelled";
+    case PlanningStatus::Rejected: return "rejected";
   }
   return "?";
 }
