@@ -223,9 +223,10 @@ msg::PlanningReply run_planning(const msg::PlanningRequest& q, const PreparedRun
   }
   r.detail = result.explanation;
   if (r.status == msg::PlanningStatus::OutOfTime && r.detail.empty())
-    r.detail = q.max_decisions > 0 && result.statistics.decisions >= static_cast<std::size_t>(q.max_decisions)
+    r.detail = control.out_of_time() ? "the time budget ended"
+               : q.max_decisions > 0 && result.statistics.decisions >= static_cast<std::size_t>(q.max_decisions)
                    ? "the decision budget ended"
-                   : "the time budget ended";
+                   : "the engine gave up before a proof (" + options.engine + " is incomplete)";
   if (r.status == msg::PlanningStatus::Cancelled && r.detail.empty()) r.detail = "cancelled";
   if (result.plan) {
     r.has_plan = true;
