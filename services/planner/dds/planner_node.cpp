@@ -40,6 +40,18 @@ PlannerNode::~PlannerNode() {
   }
   wake_.notify_all();
   if (worker_.joinable()) worker_.join();
+  // The loop has stopped: answer here what the worker finished (its search was cancelled) and
+  // what still waited, so that no requester waits for a reply that never comes.
+  try {
+    std::vector<Outgoing> items;
+    items.swap(outbox_);
+    for (const Outgoing& item : items)
+      if (const auto* r = std::get_if<msg::PlanningReply>(&item)) reply_writer_.write(*r);
+    for (const msg::PlanningRequest& q : queue_)
+      reply_writer_.write(rejected_reply(q, "stopping", "the planner stopped before it started this request"));
+  } catch (const std::exception& e) {
+    spdlog::warn("stopping: the last replies were not sent: {}", e.what());
+  }
 }
 
 void PlannerNode::on_requests(std::vector<dds::Sample<msg::PlanningRequest>> samples) {
@@ -186,12 +198,12 @@ void PlannerNode::work() {
       spdlog::error("request {}: planning failed: {}", msg::clipped_for_log(q.request_id), e.what());
       reply = rejected_reply(q, "internal_error", e.what());
     }
+    if (stopping_ && reply.status == msg::PlanningStatus::Cancelled) reply.detail = "the planner is stopping";
     {
       std::lock_guard<std::mutex> lock(mutex_);
       running_.clear();
-      if (stopping_) return;  // the loop is gone or going: nobody to answer
     }
-    post(std::move(reply));
+    post(std::move(reply));  // when stopping, the destructor sends it
   }
 }
 

@@ -8,7 +8,9 @@
 // progress events and replies to the loop through a mutex-guarded outbox and a guard condition;
 // no lock is held across a DDS call. Every request gets exactly one reply; a repeated request_id
 // gets the remembered reply again (one still queued or running is answered once, when done).
-// Valid plans become the requester's latest plan (autonomy/planner/plan, state).
+// Valid plans become the requester's latest plan (autonomy/planner/plan, state). On stop, the
+// running search is cancelled and answered (best plan so far), waiting requests are rejected
+// (`stopping`).
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "jobshop_instance.hpp"
 #include "plan_message.hpp"
 #include "plan_validator.hpp"
 #include "planner_language.hpp"
@@ -146,6 +147,40 @@ TEST(PlanningRequest, ACancelledSearchReportsCancelled) {
   msg::PlanningReply r = run_planning(q, std::get<PreparedRun>(prepared), stop);
   EXPECT_EQ(r.status, msg::PlanningStatus::Cancelled);
   EXPECT_FALSE(r.has_plan);
+}
+
+TEST(PlanningRequest, AJobShopAsProtobufIsPlannedToItsOptimumWithEachImprovementReported) {
+  Diagnostics errors;
+  const std::string file = std::string(PLANNER_EXAMPLES_DIR) + "/jobshop/ft06";
+  auto text = read_text_file(file, &errors);
+  ASSERT_TRUE(text) << to_string(errors);
+  auto instance = parse_jobshop(*text, file, &errors);
+  ASSERT_TRUE(instance) << to_string(errors);
+  msg::PlanningRequest q;
+  q.request_id = "ft06";
+  const std::string model = jobshop_model(*instance).SerializeAsString();
+  const std::string problem = jobshop_problem(*instance).SerializeAsString();
+  q.model_protobuf.assign(model.begin(), model.end());
+  q.problem_protobuf.assign(problem.begin(), problem.end());
+  ASSERT_FALSE(check_request(q));
+  auto prepared = prepare_run(q);
+  ASSERT_TRUE(std::holds_alternative<PreparedRun>(prepared));
+  std::vector<msg::PlanningProgress> progress;
+  RunControl control = never_stop();
+  control.on_progress = [&](const msg::PlanningProgress& p) { progress.push_back(p); };
+  msg::PlanningReply r = run_planning(q, std::get<PreparedRun>(prepared), control);
+  ASSERT_EQ(r.status, msg::PlanningStatus::Optimal);
+  EXPECT_EQ(r.plan.makespan, 55);
+  EXPECT_TRUE(r.violations.empty());
+  ASSERT_EQ(progress.size(), r.statistics.improvements);
+  for (std::size_t i = 1; i < progress.size(); ++i) EXPECT_LT(progress[i].makespan, progress[i - 1].makespan);
+  EXPECT_EQ(progress.back().makespan, 55);
+  // A decision budget ends it early with the best plan so far, and says so.
+  q.max_decisions = 100;
+  r = run_planning(q, std::get<PreparedRun>(prepared), never_stop());
+  EXPECT_EQ(r.status, msg::PlanningStatus::OutOfTime);
+  EXPECT_EQ(r.detail, "the decision budget ended");
+  EXPECT_EQ(r.statistics.decisions, 100u);
 }
 
 TEST(PlanningRequest, ConflictExplanationsSplitIntoStatements) {
