@@ -15,7 +15,8 @@ int main(int argc, char** argv) {
       argc, argv, "planner", "Planner: flexible plans for models and problems sent over DDS",
       service::InstanceFlag::Instance,
       [&](CLI::App& app) {
-        app.add_option("--budget-ms", options.default_budget_ms, "Time budget of a request that gives none, ms")
+        app.add_option("--budget-ms", options.default_budget_ms,
+                       "Time budget of a request that gives none, ms")
             ->check(CLI::Range(std::int64_t{1}, std::int64_t{3600000}))
             ->capture_default_str();
         app.add_option("--max-budget-ms", options.limits.max_budget_ms,
@@ -27,5 +28,7 @@ int main(int argc, char** argv) {
             ->check(CLI::Range(0, 1000))
             ->capture_default_str();
       },
-      [&](service::Service& service) { return std::make_unique<planner::PlannerNode>(service, options); });
+      [&](service::Service& service) {
+        return std::make_unique<planner::PlannerNode>(service, options);
+      });
 }

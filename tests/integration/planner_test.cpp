@@ -65,7 +65,8 @@ msg::PlanningRequest jobshop_request(const std::string& id, const std::string& i
 // problem (parsed here, in the test), after the plan's trip through DDS and back.
 std::vector<std::string> violations_of(const msg::PlanningRequest& q, const msg::PlanningReply& r) {
   auto prepared = planner::prepare_run(q);
-  if (const auto* rejected = std::get_if<msg::PlanningReply>(&prepared)) return {"not parsed: " + rejected->detail};
+  if (const auto* rejected = std::get_if<msg::PlanningReply>(&prepared))
+    return {"not parsed: " + rejected->detail};
   const auto& run = std::get<planner::PreparedRun>(prepared);
   return planner::validate_plan(run.model, run.problem, planner::from_plan_message(r.plan));
 }
@@ -96,11 +97,15 @@ class PlannerTest : public ProcessTest {
     return replies_->matching([&](const msg::PlanningReply& r) { return r.request_id == id; });
   }
   // The first reply to `id` (waits for it).
-  msg::PlanningReply reply_to(const std::string& id, std::chrono::milliseconds timeout = kDeadline) {
-    const bool got = await("the reply to " + id, [&] {
-      replies_->poll();
-      return !replies_to(id).empty();
-    }, timeout);
+  msg::PlanningReply reply_to(const std::string& id,
+                              std::chrono::milliseconds timeout = kDeadline) {
+    const bool got = await(
+        "the reply to " + id,
+        [&] {
+          replies_->poll();
+          return !replies_to(id).empty();
+        },
+        timeout);
     EXPECT_TRUE(got) << "no reply to " << id;
     return got ? replies_to(id).front() : msg::PlanningReply{};
   }
@@ -144,10 +149,12 @@ TEST_F(PlannerTest, ARequestFromAnotherProcessGetsAValidPlan) {
   // Each better plan was published on the way, the last one being the optimum.
   ASSERT_TRUE(await("ft06's progress events", [&] {
     progress_->poll();
-    return progress_->matching([](const msg::PlanningProgress& p) { return p.request_id == "ft06-1"; }).size() ==
-           j.statistics.improvements;
+    return progress_
+               ->matching([](const msg::PlanningProgress& p) { return p.request_id == "ft06-1"; })
+               .size() == j.statistics.improvements;
   }));
-  const auto steps = progress_->matching([](const msg::PlanningProgress& p) { return p.request_id == "ft06-1"; });
+  const auto steps =
+      progress_->matching([](const msg::PlanningProgress& p) { return p.request_id == "ft06-1"; });
   ASSERT_FALSE(steps.empty());
   for (std::size_t i = 1; i < steps.size(); ++i) {
     EXPECT_EQ(steps[i].improvement, steps[i - 1].improvement + 1);
@@ -224,7 +231,8 @@ TEST_F(PlannerTest, BadRequestsGetReasonsAndTheNextGoodOneIsServed) {
   EXPECT_EQ(g2.status, g.status);
   EXPECT_EQ(g2.plan.tokens.size(), g.plan.tokens.size());
   EXPECT_EQ(g2.statistics.decisions, g.statistics.decisions);
-  EXPECT_EQ(g2.statistics.elapsed_ms, g.statistics.elapsed_ms);  // the remembered reply, not a new run
+  EXPECT_EQ(g2.statistics.elapsed_ms,
+            g.statistics.elapsed_ms);  // the remembered reply, not a new run
   EXPECT_EQ(replies_to("bad-engine")[1].reason, "unknown_engine");
   EXPECT_TRUE(planner_->running());
 }
@@ -237,14 +245,17 @@ TEST_F(PlannerTest, CancellingALongSearchEndsItWithTheBestPlanSoFar) {
   send(la01);
   ASSERT_TRUE(await("a first plan of la01", [&] {
     progress_->poll();
-    return !progress_->matching([](const msg::PlanningProgress& p) { return p.request_id == "la01"; }).empty();
+    return !progress_
+                ->matching([](const msg::PlanningProgress& p) { return p.request_id == "la01"; })
+                .empty();
   }));
   // Two more wait their turn behind it; the second is cancelled before it starts.
   const msg::PlanningRequest camera = camera_request("camera-queued");
   send(camera);
   send(jobshop_request("la02-queued", "la02"));
   ASSERT_TRUE(await("the planner took both", [&] {
-    return read_file(dir().file("planner-main.log")).find("la02-queued from test") != std::string::npos;
+    return read_file(dir().file("planner-main.log")).find("la02-queued from test") !=
+           std::string::npos;
   }));
   cancel("la02-queued");
   const msg::PlanningReply q = reply_to("la02-queued");
@@ -266,7 +277,8 @@ TEST_F(PlannerTest, CancellingALongSearchEndsItWithTheBestPlanSoFar) {
 
 TEST_F(PlannerTest, AnExhaustedBudgetIsAnsweredOutOfTimeWithTheBestPlanSoFar) {
   start_planner(174);
-  // A decision budget (deterministic, unlike a time budget) ends la01's search long before the proof.
+  // A decision budget (deterministic, unlike a time budget) ends la01's search long before the
+  // proof.
   msg::PlanningRequest la01 = jobshop_request("la01-budget", "la01");
   la01.max_decisions = 5000;
   send(la01);
@@ -298,9 +310,11 @@ TEST_F(PlannerTest, ALateJoiningReaderGetsTheLatestPlan) {
   Recorder<msg::LatestPlan> plans(late, dds::topics::planner_plan);
   ASSERT_TRUE(await("the latest plan of executive/ds1", [&] {
     plans.poll();
-    return !plans.matching([](const msg::LatestPlan& p) { return p.requester == "executive/ds1"; }).empty();
+    return !plans.matching([](const msg::LatestPlan& p) { return p.requester == "executive/ds1"; })
+                .empty();
   }));
-  const auto seen = plans.matching([](const msg::LatestPlan& p) { return p.requester == "executive/ds1"; });
+  const auto seen =
+      plans.matching([](const msg::LatestPlan& p) { return p.requester == "executive/ds1"; });
   ASSERT_EQ(seen.size(), 1u);  // keep-last 1 per requester: only the newest
   EXPECT_EQ(seen[0].request_id, "exec-2");
   EXPECT_EQ(seen[0].plan_origin, 2000);
@@ -318,11 +332,13 @@ TEST_F(PlannerTest, TheCliPlansFilesAndJobShops) {
     ChildProcess& p = start(name, AUTONOMY_AUTONOMY_BIN, args, false);
     const auto status = p.wait_for_exit(60s);
     EXPECT_TRUE(status) << name << " did not end";
-    return std::make_pair(status ? (status->exited ? status->code : 128 + status->signal) : -1, read_file(p.log_file()));
+    return std::make_pair(status ? (status->exited ? status->code : 128 + status->signal) : -1,
+                          read_file(p.log_file()));
   };
   const std::string json = dir().file("camera.json"), svg = dir().file("camera.svg");
-  const auto [code, out] = cli("plan-camera", {"plan", kExamples + "/camera.model", kExamples + "/camera.problem",
-                                               "--json", json, "--svg", svg});
+  const auto [code, out] =
+      cli("plan-camera", {"plan", kExamples + "/camera.model", kExamples + "/camera.problem",
+                          "--json", json, "--svg", svg});
   EXPECT_EQ(code, 0) << out;
   EXPECT_NE(out.find("status: plan_found"), std::string::npos) << out;
   EXPECT_NE(out.find("decisions"), std::string::npos) << out;
@@ -332,7 +348,8 @@ TEST_F(PlannerTest, TheCliPlansFilesAndJobShops) {
   EXPECT_GE(plan["tokens"].size(), 5u);
   EXPECT_EQ(read_file(svg).rfind("<svg", 0), 0u);
 
-  const auto [jcode, jout] = cli("plan-ft06", {"plan", "--jobshop", kExamples + "/jobshop/ft06", "-q"});
+  const auto [jcode, jout] =
+      cli("plan-ft06", {"plan", "--jobshop", kExamples + "/jobshop/ft06", "-q"});
   EXPECT_EQ(jcode, 0) << jout;
   EXPECT_NE(jout.find("makespan 55 (proved optimal)"), std::string::npos) << jout;
   EXPECT_NE(jout.find("plan 1: makespan"), std::string::npos) << jout;  // progress as it came

@@ -56,9 +56,10 @@ void print_plan(const msg::FlexiblePlan& plan) {
       const msg::PlanToken& t = plan.tokens[i];
       std::string params;
       for (const auto& p : t.parameters) params += (params.empty() ? "" : ", ") + p;
-      print_line("  " + std::to_string(t.id) + " " + t.predicate + "(" + params + ") start [" + bound(t.start_lb) +
-                 ", " + bound(t.start_ub) + "] end [" + bound(t.end_lb) + ", " + bound(t.end_ub) + "] duration [" +
-                 bound(t.duration_lb) + ", " + bound(t.duration_ub) + "]");
+      print_line("  " + std::to_string(t.id) + " " + t.predicate + "(" + params + ") start [" +
+                 bound(t.start_lb) + ", " + bound(t.start_ub) + "] end [" + bound(t.end_lb) + ", " +
+                 bound(t.end_ub) + "] duration [" + bound(t.duration_lb) + ", " +
+                 bound(t.duration_ub) + "]");
     }
   }
   for (const auto& g : plan.omitted_goals) print_line("omitted goal: " + g);
@@ -66,21 +67,24 @@ void print_plan(const msg::FlexiblePlan& plan) {
 
 // What the reply says, in lines; the exit code.
 int report(const msg::PlanningReply& r, const PlanOptions& o) {
-  print_line(std::string("status: ") + msg::to_string(r.status) + (r.reason.empty() ? "" : " (" + r.reason + ")"));
+  print_line(std::string("status: ") + msg::to_string(r.status) +
+             (r.reason.empty() ? "" : " (" + r.reason + ")"));
   if (!r.detail.empty()) print_line("why: " + r.detail);
   for (const auto& d : r.diagnostics)
-    print_line("  " + d.file + ":" + std::to_string(d.line) + ":" + std::to_string(d.column) + ": " + d.message);
+    print_line("  " + d.file + ":" + std::to_string(d.line) + ":" + std::to_string(d.column) +
+               ": " + d.message);
   for (const auto& c : r.conflicts) print_line("  conflict: " + c);
   if (r.status == msg::PlanningStatus::Rejected) return kExitUsage;
   const auto& s = r.statistics;
   char line[512];
-  std::snprintf(line, sizeof line,
-                "engine %s: decisions %llu, backtracks %llu, dead ends %llu, temporal propagations %llu, "
-                "procedure calls %llu, plans %u, %.1f ms",
-                r.engine.c_str(), static_cast<unsigned long long>(s.decisions),
-                static_cast<unsigned long long>(s.backtracks), static_cast<unsigned long long>(s.dead_ends),
-                static_cast<unsigned long long>(s.temporal_propagations),
-                static_cast<unsigned long long>(s.procedure_calls), s.improvements, s.elapsed_ms);
+  std::snprintf(
+      line, sizeof line,
+      "engine %s: decisions %llu, backtracks %llu, dead ends %llu, temporal propagations %llu, "
+      "procedure calls %llu, plans %u, %.1f ms",
+      r.engine.c_str(), static_cast<unsigned long long>(s.decisions),
+      static_cast<unsigned long long>(s.backtracks), static_cast<unsigned long long>(s.dead_ends),
+      static_cast<unsigned long long>(s.temporal_propagations),
+      static_cast<unsigned long long>(s.procedure_calls), s.improvements, s.elapsed_ms);
   print_line(line);
   if (!r.has_plan) return kExitFailed;
   print_line("makespan " + std::to_string(r.plan.makespan) +
@@ -139,9 +143,10 @@ std::variant<msg::PlanningRequest, int> build_request(const PlanOptions& o) {
   q.max_decisions = o.max_decisions;
   q.seed = o.seed;
   q.requester = o.requester;
-  q.request_id = o.id.empty() ? "plan-" + std::to_string(getpid()) + "-" +
-                                    std::to_string(std::chrono::steady_clock::now().time_since_epoch().count())
-                              : o.id;
+  q.request_id =
+      o.id.empty() ? "plan-" + std::to_string(getpid()) + "-" +
+                         std::to_string(std::chrono::steady_clock::now().time_since_epoch().count())
+                   : o.id;
   return q;
 }
 
@@ -162,8 +167,8 @@ int plan(const PlanOptions& o, Context& ctx) {
   dds::Writer<msg::PlanningCancel> cancel_writer(participant, cancel_topic);
   auto deadline = std::chrono::steady_clock::now() + seconds(o.timeout_s);
   // Requests are volatile: wait until the planner's reader and our reply reader are matched.
-  while (writer.matched_readers() == 0 || replies.matched_writers() == 0 || progress.matched_writers() == 0 ||
-         cancel_writer.matched_readers() == 0) {
+  while (writer.matched_readers() == 0 || replies.matched_writers() == 0 ||
+         progress.matched_writers() == 0 || cancel_writer.matched_readers() == 0) {
     if (std::chrono::steady_clock::now() >= deadline) {
       std::cerr << "autonomy plan: no planner on domain " << o.domain << " within " << o.timeout_s
                 << " s (is it running? autonomy node list)\n";
@@ -173,7 +178,8 @@ int plan(const PlanOptions& o, Context& ctx) {
   }
   writer.write(request);
   // The search may use its whole budget; the timeout counts from its end.
-  deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(o.budget_ms) + seconds(o.timeout_s);
+  deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(o.budget_ms) +
+             seconds(o.timeout_s);
   dds::WaitSet waitset(participant);
   waitset.attach(replies.data_condition(), 1);
   waitset.attach(progress.data_condition(), 2);
@@ -198,7 +204,8 @@ int plan(const PlanOptions& o, Context& ctx) {
       reply = std::move(s.value);
       grace = std::chrono::steady_clock::now() + std::chrono::milliseconds(500);
     }
-    if (reply && (improvements_seen >= reply->statistics.improvements || std::chrono::steady_clock::now() >= grace)) {
+    if (reply && (improvements_seen >= reply->statistics.improvements ||
+                  std::chrono::steady_clock::now() >= grace)) {
       const int code = report(*reply, o);
       return cancelled && code == kExitOk ? kExitInterrupted : code;
     }
@@ -223,29 +230,39 @@ int plan(const PlanOptions& o, Context& ctx) {
 
 Command add_plan(CLI::App& app) {
   auto o = std::make_shared<PlanOptions>();
-  auto* cmd = app.add_subcommand("plan", "Ask the planner service for a plan of a model and a problem");
+  auto* cmd =
+      app.add_subcommand("plan", "Ask the planner service for a plan of a model and a problem");
   add_domain_option(cmd, o->domain);
   cmd->add_option("model", o->model, "Model file (planner language, docs/planner-language.md)");
   cmd->add_option("problem", o->problem, "Problem file (planner language)");
-  cmd->add_option("--jobshop", o->jobshop, "An OR-Library job-shop instance instead of MODEL and PROBLEM");
-  cmd->add_option("--engine", o->engine, "Search engine: chronological (default), discrepancy, sampling");
+  cmd->add_option("--jobshop", o->jobshop,
+                  "An OR-Library job-shop instance instead of MODEL and PROBLEM");
+  cmd->add_option("--engine", o->engine,
+                  "Search engine: chronological (default), discrepancy, sampling");
   cmd->add_option("--budget-ms", o->budget_ms, "Time budget, ms (0: the planner's default)")
       ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--max-decisions", o->max_decisions, "Decision budget (0: none)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--max-decisions", o->max_decisions, "Decision budget (0: none)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--seed", o->seed, "Seed of sampling engines");
   cmd->add_option("--json", o->json, "Write the plan as JSON here");
   cmd->add_option("--svg", o->svg, "Write a Gantt chart of the plan here");
-  cmd->add_option("--id", o->id, "Request id (default: a fresh one); resending an id gets the same reply")
-      ->check(CLI::Validator([](std::string& v) { return v.size() <= 128 ? "" : "at most 128 bytes"; }, "ID"));
-  cmd->add_option("--requester", o->requester, "Who asks: the key of its latest plan on autonomy/planner/plan")
+  cmd->add_option("--id", o->id,
+                  "Request id (default: a fresh one); resending an id gets the same reply")
+      ->check(CLI::Validator(
+          [](std::string& v) { return v.size() <= 128 ? "" : "at most 128 bytes"; }, "ID"));
+  cmd->add_option("--requester", o->requester,
+                  "Who asks: the key of its latest plan on autonomy/planner/plan")
       ->capture_default_str();
-  cmd->add_option("-t,--timeout", o->timeout_s, "Seconds to wait for the planner, and for the reply after the budget")
+  cmd->add_option("-t,--timeout", o->timeout_s,
+                  "Seconds to wait for the planner, and for the reply after the budget")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   cmd->add_flag("-q,--quiet", o->quiet, "Statistics and makespan only, no plan listing");
   cmd->footer(
-      "Exit codes: 0 a valid plan; 1 no plan (infeasible, out of time without one), an invalid plan, no planner or "
-      "no reply; 2 rejected request or unreadable files; 130 Ctrl-C (the request is cancelled; a best plan so far is "
+      "Exit codes: 0 a valid plan; 1 no plan (infeasible, out of time without one), an invalid "
+      "plan, no planner or "
+      "no reply; 2 rejected request or unreadable files; 130 Ctrl-C (the request is cancelled; a "
+      "best plan so far is "
       "still printed and written).");
   return {cmd, [o](Context& ctx) { return plan(*o, ctx); }};
 }

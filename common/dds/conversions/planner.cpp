@@ -118,7 +118,8 @@ void DdsType<msg::PlanningRequest>::to_c(const msg::PlanningRequest& v, C& out, 
   const uint32_t n = static_cast<uint32_t>(v.state.size());
   auto* state = arena.allocate<autonomy_PlannerTimelineValue>(n);
   for (uint32_t i = 0; i < n; ++i)
-    state[i] = {c_str(v.state[i].timeline), c_str(v.state[i].predicate), to_c_strings(v.state[i].parameters, arena)};
+    state[i] = {c_str(v.state[i].timeline), c_str(v.state[i].predicate),
+                to_c_strings(v.state[i].parameters, arena)};
   out.state = {n, n, state, false};
   out.plan_origin = v.plan_origin;
   out.engine = c_str(v.engine);
@@ -139,7 +140,8 @@ msg::PlanningRequest DdsType<msg::PlanningRequest>::from_c(const C& in) {
   v.problem_protobuf = from_c_numbers<uint8_t>(in.problem_protobuf);
   for (uint32_t i = 0; i < in.state._length; ++i) {
     const auto& s = in.state._buffer[i];
-    v.state.push_back({from_c_str(s.timeline), from_c_str(s.predicate), from_c_strings(s.parameters)});
+    v.state.push_back(
+        {from_c_str(s.timeline), from_c_str(s.predicate), from_c_strings(s.parameters)});
   }
   v.plan_origin = in.plan_origin;
   v.engine = from_c_str(in.engine);
@@ -206,7 +208,8 @@ void DdsType<msg::PlanningProgress>::to_c(const msg::PlanningProgress& v, C& out
 }
 
 msg::PlanningProgress DdsType<msg::PlanningProgress>::from_c(const C& in) {
-  return {from_c_str(in.request_id), in.improvement, in.makespan, in.penalty, in.tokens, in.elapsed_ms};
+  return {
+      from_c_str(in.request_id), in.improvement, in.makespan, in.penalty, in.tokens, in.elapsed_ms};
 }
 
 void DdsType<msg::PlanningCancel>::to_c(const msg::PlanningCancel& v, C& out, Arena&) {

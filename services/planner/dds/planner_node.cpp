@@ -22,13 +22,16 @@ PlannerNode::PlannerNode(service::Service& service, PlannerNodeOptions options)
       plan_writer_(service.participant(), plan_topic_),
       outbox_ready_(service.participant()) {
   auto& loop = service.loop();
-  loop.on_samples<msg::PlanningRequest>(request_reader_, [this](auto samples) { on_requests(std::move(samples)); });
-  loop.on_samples<msg::PlanningCancel>(cancel_reader_, [this](auto samples) { on_cancels(std::move(samples)); });
+  loop.on_samples<msg::PlanningRequest>(request_reader_,
+                                        [this](auto samples) { on_requests(std::move(samples)); });
+  loop.on_samples<msg::PlanningCancel>(cancel_reader_,
+                                       [this](auto samples) { on_cancels(std::move(samples)); });
   loop.on_condition(outbox_ready_.handle(), [this] { on_worker_output(); });
   worker_ = std::thread([this] { work(); });
-  spdlog::info("planning requests on {}; default budget {} ms, at most {} ms; up to {} waiting requests",
-               dds::topics::planner_request.name, options_.default_budget_ms, options_.limits.max_budget_ms,
-               options_.max_queue);
+  spdlog::info(
+      "planning requests on {}; default budget {} ms, at most {} ms; up to {} waiting requests",
+      dds::topics::planner_request.name, options_.default_budget_ms, options_.limits.max_budget_ms,
+      options_.max_queue);
   service.set_ready();
 }
 
@@ -48,7 +51,8 @@ PlannerNode::~PlannerNode() {
     for (const Outgoing& item : items)
       if (const auto* r = std::get_if<msg::PlanningReply>(&item)) reply_writer_.write(*r);
     for (const msg::PlanningRequest& q : queue_)
-      reply_writer_.write(rejected_reply(q, "stopping", "the planner stopped before it started this request"));
+      reply_writer_.write(
+          rejected_reply(q, "stopping", "the planner stopped before it started this request"));
   } catch (const std::exception& e) {
     spdlog::warn("stopping: the last replies were not sent: {}", e.what());
   }
@@ -65,24 +69,27 @@ void PlannerNode::on_requests(std::vector<dds::Sample<msg::PlanningRequest>> sam
       continue;
     }
     if (pending_.count(q.request_id)) {
-      spdlog::info("request {} repeated while it is queued or running: answered once, when done", shown);
+      spdlog::info("request {} repeated while it is queued or running: answered once, when done",
+                   shown);
       continue;
     }
     if (auto rejected = check_request(q, options_.limits)) {
-      spdlog::warn("request {} rejected: {}: {}", shown, rejected->reason, msg::clipped_for_log(rejected->detail, 200));
+      spdlog::warn("request {} rejected: {}: {}", shown, rejected->reason,
+                   msg::clipped_for_log(rejected->detail, 200));
       answer(*rejected, true);
       continue;
     }
     if (pending_.size() > options_.max_queue) {
-      spdlog::warn("request {} answered busy: {} requests wait already", shown, pending_.size() - 1);
+      spdlog::warn("request {} answered busy: {} requests wait already", shown,
+                   pending_.size() - 1);
       answer(rejected_reply(q, "busy",
                             "the planner is busy: " + std::to_string(pending_.size() - 1) +
                                 " requests wait already; send it again later"),
              false);
       continue;
     }
-    spdlog::info("request {} from {}: engine {}, budget {} ms{}", shown, msg::clipped_for_log(q.requester),
-                 q.engine.empty() ? "chronological" : q.engine,
+    spdlog::info("request {} from {}: engine {}, budget {} ms{}", shown,
+                 msg::clipped_for_log(q.requester), q.engine.empty() ? "chronological" : q.engine,
                  q.budget_ms > 0 ? q.budget_ms : options_.default_budget_ms,
                  pending_.empty() ? "" : ", queued behind " + std::to_string(pending_.size()));
     pending_.insert(q.request_id);
@@ -160,14 +167,16 @@ void PlannerNode::answer(const msg::PlanningReply& reply, bool remember) {
   }
   reply_writer_.write(reply);
   if (reply.status != msg::PlanningStatus::Rejected) {
-    spdlog::info("request {}: {}{}, {} decisions, {} backtracks, {:.1f} ms{}", msg::clipped_for_log(reply.request_id),
-                 msg::to_string(reply.status),
-                 reply.has_plan ? ", makespan " + std::to_string(reply.plan.makespan) : std::string(),
-                 reply.statistics.decisions, reply.statistics.backtracks, reply.statistics.elapsed_ms,
-                 reply.violations.empty() ? "" : ", INVALID plan: " + reply.violations.front());
+    spdlog::info(
+        "request {}: {}{}, {} decisions, {} backtracks, {:.1f} ms{}",
+        msg::clipped_for_log(reply.request_id), msg::to_string(reply.status),
+        reply.has_plan ? ", makespan " + std::to_string(reply.plan.makespan) : std::string(),
+        reply.statistics.decisions, reply.statistics.backtracks, reply.statistics.elapsed_ms,
+        reply.violations.empty() ? "" : ", INVALID plan: " + reply.violations.front());
   }
   if (reply.has_plan && reply.violations.empty())
-    plan_writer_.write({reply.requester, reply.request_id, reply.status, reply.engine, reply.plan_origin, reply.plan});
+    plan_writer_.write({reply.requester, reply.request_id, reply.status, reply.engine,
+                        reply.plan_origin, reply.plan});
 }
 
 void PlannerNode::post(Outgoing item) {
@@ -195,10 +204,12 @@ void PlannerNode::work() {
       reply = plan_one(q);
     } catch (const std::exception& e) {
       // Nothing a request holds should get here; if it does, it is answered, not fatal.
-      spdlog::error("request {}: planning failed: {}", msg::clipped_for_log(q.request_id), e.what());
+      spdlog::error("request {}: planning failed: {}", msg::clipped_for_log(q.request_id),
+                    e.what());
       reply = rejected_reply(q, "internal_error", e.what());
     }
-    if (stopping_ && reply.status == msg::PlanningStatus::Cancelled) reply.detail = "the planner is stopping";
+    if (stopping_ && reply.status == msg::PlanningStatus::Cancelled)
+      reply.detail = "the planner is stopping";
     {
       std::lock_guard<std::mutex> lock(mutex_);
       running_.clear();
@@ -210,14 +221,15 @@ void PlannerNode::work() {
 msg::PlanningReply PlannerNode::plan_one(const msg::PlanningRequest& q) {
   using Clock = std::chrono::steady_clock;
   const auto started = Clock::now();
-  const auto budget = std::chrono::milliseconds(q.budget_ms > 0 ? q.budget_ms : options_.default_budget_ms);
+  const auto budget =
+      std::chrono::milliseconds(q.budget_ms > 0 ? q.budget_ms : options_.default_budget_ms);
   const auto elapsed_ms = [started] {
     return std::chrono::duration<double, std::milli>(Clock::now() - started).count();
   };
   auto prepared = prepare_run(q);
   if (auto* rejected = std::get_if<msg::PlanningReply>(&prepared)) {
-    spdlog::warn("request {} rejected: {}: {}", msg::clipped_for_log(q.request_id), rejected->reason,
-                 msg::clipped_for_log(rejected->detail, 200));
+    spdlog::warn("request {} rejected: {}: {}", msg::clipped_for_log(q.request_id),
+                 rejected->reason, msg::clipped_for_log(rejected->detail, 200));
     return std::move(*rejected);
   }
   RunControl control;

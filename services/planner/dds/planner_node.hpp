@@ -35,8 +35,8 @@ namespace autonomy::planner {
 struct PlannerNodeOptions {
   std::int64_t default_budget_ms = 10000;  // for requests with budget_ms 0
   RequestLimits limits;
-  std::size_t max_queue = 8;               // waiting requests besides the running one
-  std::size_t remembered_replies = 1000;   // for repeated request ids
+  std::size_t max_queue = 8;              // waiting requests besides the running one
+  std::size_t remembered_replies = 1000;  // for repeated request ids
 };
 
 class PlannerNode {

@@ -30,7 +30,8 @@ msg::FlexiblePlan to_plan_message(const FlexiblePlan& plan) {
     x.fact = t.fact;
     m.tokens.push_back(std::move(x));
   }
-  for (const PlanConstraint& c : plan.constraints) m.constraints.push_back({c.from, c.to, c.lb, c.ub});
+  for (const PlanConstraint& c : plan.constraints)
+    m.constraints.push_back({c.from, c.to, c.lb, c.ub});
   return m;
 }
 
@@ -61,7 +62,8 @@ FlexiblePlan from_plan_message(const msg::FlexiblePlan& m) {
     t.fact = x.fact;
     plan.tokens.push_back(std::move(t));
   }
-  for (const msg::PlanConstraint& c : m.constraints) plan.constraints.push_back({c.from, c.to, c.lb, c.ub});
+  for (const msg::PlanConstraint& c : m.constraints)
+    plan.constraints.push_back({c.from, c.to, c.lb, c.ub});
   return plan;
 }
 

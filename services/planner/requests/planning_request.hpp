@@ -30,7 +30,8 @@ msg::PlanningReply rejected_reply(const msg::PlanningRequest& request, const std
                                   const std::string& detail);
 
 // The rejection of a request that cannot be planned as it stands, or nothing.
-std::optional<msg::PlanningReply> check_request(const msg::PlanningRequest& request, const RequestLimits& limits = {});
+std::optional<msg::PlanningReply> check_request(const msg::PlanningRequest& request,
+                                                const RequestLimits& limits = {});
 
 // A checked model and problem, ready to plan.
 struct PreparedRun {

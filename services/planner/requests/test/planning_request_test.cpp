@@ -173,7 +173,8 @@ TEST(PlanningRequest, AJobShopAsProtobufIsPlannedToItsOptimumWithEachImprovement
   EXPECT_EQ(r.plan.makespan, 55);
   EXPECT_TRUE(r.violations.empty());
   ASSERT_EQ(progress.size(), r.statistics.improvements);
-  for (std::size_t i = 1; i < progress.size(); ++i) EXPECT_LT(progress[i].makespan, progress[i - 1].makespan);
+  for (std::size_t i = 1; i < progress.size(); ++i)
+    EXPECT_LT(progress[i].makespan, progress[i - 1].makespan);
   EXPECT_EQ(progress.back().makespan, 55);
   // A decision budget ends it early with the best plan so far, and says so.
   q.max_decisions = 100;
@@ -186,7 +187,8 @@ TEST(PlanningRequest, AJobShopAsProtobufIsPlannedToItsOptimumWithEachImprovement
 TEST(PlanningRequest, ConflictExplanationsSplitIntoStatements) {
   EXPECT_EQ(conflicting_statements("temporal conflict between: a:1: x; b:2: y"),
             (std::vector<std::string>{"a:1: x", "b:2: y"}));
-  EXPECT_EQ(conflicting_statements("overload on s.camera"), (std::vector<std::string>{"overload on s.camera"}));
+  EXPECT_EQ(conflicting_statements("overload on s.camera"),
+            (std::vector<std::string>{"overload on s.camera"}));
 }
 
 }  // namespace
