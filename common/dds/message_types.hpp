@@ -6,6 +6,7 @@
 #include "common/msg/courier.hpp"
 #include "common/msg/navigation.hpp"
 #include "common/msg/office.hpp"
+#include "common/msg/planner.hpp"
 #include "common/msg/robot.hpp"
 #include "common/msg/simulation.hpp"
 #include "common/msg/perception.hpp"
@@ -17,6 +18,7 @@
 #include "idl/courier.h"
 #include "idl/navigation.h"
 #include "idl/office.h"
+#include "idl/planner.h"
 #include "idl/robot.h"
 #include "idl/simulation.h"
 #include "idl/perception.h"
@@ -93,6 +95,12 @@ AUTONOMY_DDS_TYPE(msg::SpacecraftCommandStatus, autonomy_SpacecraftCommandStatus
 AUTONOMY_DDS_TYPE(msg::SpacecraftTelemetry, autonomy_SpacecraftTelemetry)
 AUTONOMY_DDS_TYPE(msg::SpacecraftFaultInjection, autonomy_SpacecraftFaultInjection)
 AUTONOMY_DDS_TYPE(msg::SpacecraftFaultState, autonomy_SpacecraftFaultState)
+// The planner: requests, replies, progress, cancellation, the latest plan per requester.
+AUTONOMY_DDS_TYPE(msg::PlanningRequest, autonomy_PlanningRequest)
+AUTONOMY_DDS_TYPE(msg::PlanningReply, autonomy_PlanningReply)
+AUTONOMY_DDS_TYPE(msg::PlanningProgress, autonomy_PlanningProgress)
+AUTONOMY_DDS_TYPE(msg::PlanningCancel, autonomy_PlanningCancel)
+AUTONOMY_DDS_TYPE(msg::LatestPlan, autonomy_LatestPlan)
 
 }  // namespace autonomy::dds
 

@@ -63,6 +63,12 @@ inline constexpr TopicSpec<msg::SpacecraftFaultInjection> spacecraft_fault_injec
     "autonomy/spacecraft/fault_injection", QosClass::Command};
 inline constexpr TopicSpec<msg::SpacecraftFaultState> truth_spacecraft_fault{"autonomy/truth/spacecraft_fault",
                                                                              QosClass::State};
+// The planner: requests in, one reply each, progress of long searches, cancels, latest plans.
+inline constexpr TopicSpec<msg::PlanningRequest> planner_request{"autonomy/planner/request", QosClass::Request};
+inline constexpr TopicSpec<msg::PlanningReply> planner_reply{"autonomy/planner/reply", QosClass::Reply};
+inline constexpr TopicSpec<msg::PlanningProgress> planner_progress{"autonomy/planner/progress", QosClass::Event};
+inline constexpr TopicSpec<msg::PlanningCancel> planner_cancel{"autonomy/planner/cancel", QosClass::Command};
+inline constexpr TopicSpec<msg::LatestPlan> planner_plan{"autonomy/planner/plan", QosClass::State};
 
 // Calls visit(spec) for every topic of the catalogue: tools use it to find a topic's type by name.
 template <typename Visitor>
@@ -104,6 +110,11 @@ void for_each_topic(Visitor&& visit) {
   visit(spacecraft_telemetry);
   visit(spacecraft_fault_injection);
   visit(truth_spacecraft_fault);
+  visit(planner_request);
+  visit(planner_reply);
+  visit(planner_progress);
+  visit(planner_cancel);
+  visit(planner_plan);
 }
 
 }  // namespace autonomy::dds::topics

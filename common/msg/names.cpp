@@ -3,6 +3,7 @@
 #include "common/msg/courier.hpp"
 #include "common/msg/navigation.hpp"
 #include "common/msg/office.hpp"
+#include "common/msg/planner.hpp"
 #include "common/msg/robot.hpp"
 #include "common/msg/simulation.hpp"
 #include "common/msg/system.hpp"
@@ -68,6 +69,18 @@ const char* to_string(JobState s) {
     case JobState::Failed: return "failed";
     case JobState::Cancelled: return "cancelled";
     case JobState::Stranded: return "stranded";
+  }
+  return "?";
+}
+
+const char* to_string(PlanningStatus s) {
+  switch (s) {
+    case PlanningStatus::Optimal: return "optimal";
+    case PlanningStatus::PlanFound: return "plan_found";
+    case PlanningStatus::Infeasible: return "infeasible";
+    case PlanningStatus::OutOfTime: return "out_of_time";
+    case PlanningStatus::Cancelled: return "cancelled";
+    case PlanningStatus::Rejected: return "rejected";
   }
   return "?";
 }

@@ -20,6 +20,8 @@ inline constexpr std::size_t kMaxIdLength = 128;
 inline constexpr std::size_t kMaxNameLength = 64;
 // Free text meant for people: reasons, details, courier commands, team message payloads.
 inline constexpr std::size_t kMaxTextLength = 1024;
+// Documents sent inside a sample: planner models and problems (text or serialized protobuf).
+inline constexpr std::size_t kMaxDocumentLength = 1 << 20;
 
 // "goal_id has 100000 bytes, more than 128" when `value` is longer than `max`, else nothing.
 std::optional<std::string> length_problem(const char* field, const std::string& value, std::size_t max);

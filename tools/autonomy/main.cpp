@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
   const std::vector<Command> commands = {add_topic_list(*topic), add_topic_echo(*topic), add_topic_hz(*topic),
                                          add_topic_pub(*topic),  add_node_list(*node),   add_node_wait(*node),
                                          add_courier_send(*courier), add_courier_jobs(*courier),
-                                         add_courier_cancel(*courier)};
+                                         add_courier_cancel(*courier), add_plan(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

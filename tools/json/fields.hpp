@@ -10,6 +10,7 @@
 #include "common/msg/courier.hpp"
 #include "common/msg/navigation.hpp"
 #include "common/msg/office.hpp"
+#include "common/msg/planner.hpp"
 #include "common/msg/robot.hpp"
 #include "common/msg/simulation.hpp"
 #include "common/msg/perception.hpp"
@@ -66,6 +67,13 @@ struct EnumValues<msg::JobState> {
   static constexpr std::array values{msg::JobState::Queued,    msg::JobState::Underway, msg::JobState::Opportunistic,
                                      msg::JobState::Completed, msg::JobState::Failed,   msg::JobState::Cancelled,
                                      msg::JobState::Stranded};
+};
+
+template <>
+struct EnumValues<msg::PlanningStatus> {
+  static constexpr std::array values{msg::PlanningStatus::Optimal,    msg::PlanningStatus::PlanFound,
+                                     msg::PlanningStatus::Infeasible, msg::PlanningStatus::OutOfTime,
+                                     msg::PlanningStatus::Cancelled,  msg::PlanningStatus::Rejected};
 };
 
 // visit(v, m) calls v.key(name, member) for key fields and v.field(name, member) for the others;
@@ -825,6 +833,187 @@ struct Fields<msg::SpacecraftFaultState> {
     v.field("trigger", m.trigger);
     v.field("ended_by", m.ended_by);
     v.field("since_ns", m.since_ns);
+  }
+};
+
+// --- The planner ---------------------------------------------------------------------------
+
+template <>
+struct Fields<msg::PlannerTimelineValue> {
+  static constexpr const char* name = "PlannerTimelineValue";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("timeline", m.timeline);
+    v.field("predicate", m.predicate);
+    v.field("parameters", m.parameters);
+  }
+};
+
+template <>
+struct Fields<msg::PlanningRequest> {
+  static constexpr const char* name = "PlanningRequest";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("request_id", m.request_id);
+    v.field("requester", m.requester);
+    v.field("model_file", m.model_file);
+    v.field("model_text", m.model_text);
+    v.field("model_protobuf", m.model_protobuf);
+    v.field("problem_file", m.problem_file);
+    v.field("problem_text", m.problem_text);
+    v.field("problem_protobuf", m.problem_protobuf);
+    v.field("state", m.state);
+    v.field("plan_origin", m.plan_origin);
+    v.field("engine", m.engine);
+    v.field("seed", m.seed);
+    v.field("budget_ms", m.budget_ms);
+    v.field("max_decisions", m.max_decisions);
+  }
+};
+
+template <>
+struct Fields<msg::PlannerDiagnostic> {
+  static constexpr const char* name = "PlannerDiagnostic";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("file", m.file);
+    v.field("line", m.line);
+    v.field("column", m.column);
+    v.field("message", m.message);
+  }
+};
+
+template <>
+struct Fields<msg::PlanningStatistics> {
+  static constexpr const char* name = "PlanningStatistics";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("decisions", m.decisions);
+    v.field("backtracks", m.backtracks);
+    v.field("dead_ends", m.dead_ends);
+    v.field("temporal_propagations", m.temporal_propagations);
+    v.field("procedure_calls", m.procedure_calls);
+    v.field("improvements", m.improvements);
+    v.field("elapsed_ms", m.elapsed_ms);
+  }
+};
+
+template <>
+struct Fields<msg::PlanToken> {
+  static constexpr const char* name = "PlanToken";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("id", m.id);
+    v.field("object", m.object);
+    v.field("attribute", m.attribute);
+    v.field("predicate", m.predicate);
+    v.field("parameters", m.parameters);
+    v.field("parameter_lo", m.parameter_lo);
+    v.field("parameter_hi", m.parameter_hi);
+    v.field("start_lb", m.start_lb);
+    v.field("start_ub", m.start_ub);
+    v.field("end_lb", m.end_lb);
+    v.field("end_ub", m.end_ub);
+    v.field("duration_lb", m.duration_lb);
+    v.field("duration_ub", m.duration_ub);
+    v.field("origin", m.origin);
+    v.field("fact", m.fact);
+  }
+};
+
+template <>
+struct Fields<msg::PlanTimeline> {
+  static constexpr const char* name = "PlanTimeline";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("name", m.name);
+    v.field("tokens", m.tokens);
+  }
+};
+
+template <>
+struct Fields<msg::PlanConstraint> {
+  static constexpr const char* name = "PlanConstraint";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("from", m.from);
+    v.field("to", m.to);
+    v.field("lb", m.lb);
+    v.field("ub", m.ub);
+  }
+};
+
+template <>
+struct Fields<msg::FlexiblePlan> {
+  static constexpr const char* name = "FlexiblePlan";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("horizon", m.horizon);
+    v.field("makespan", m.makespan);
+    v.field("penalty", m.penalty);
+    v.field("omitted_goals", m.omitted_goals);
+    v.field("timelines", m.timelines);
+    v.field("tokens", m.tokens);
+    v.field("constraints", m.constraints);
+  }
+};
+
+template <>
+struct Fields<msg::PlanningReply> {
+  static constexpr const char* name = "PlanningReply";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("request_id", m.request_id);
+    v.field("requester", m.requester);
+    v.field("status", m.status);
+    v.field("reason", m.reason);
+    v.field("detail", m.detail);
+    v.field("diagnostics", m.diagnostics);
+    v.field("conflicts", m.conflicts);
+    v.field("engine", m.engine);
+    v.field("has_plan", m.has_plan);
+    v.field("plan", m.plan);
+    v.field("violations", m.violations);
+    v.field("statistics", m.statistics);
+    v.field("plan_origin", m.plan_origin);
+  }
+};
+
+template <>
+struct Fields<msg::PlanningProgress> {
+  static constexpr const char* name = "PlanningProgress";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("request_id", m.request_id);
+    v.field("improvement", m.improvement);
+    v.field("makespan", m.makespan);
+    v.field("penalty", m.penalty);
+    v.field("tokens", m.tokens);
+    v.field("elapsed_ms", m.elapsed_ms);
+  }
+};
+
+template <>
+struct Fields<msg::PlanningCancel> {
+  static constexpr const char* name = "PlanningCancel";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("request_id", m.request_id);
+    v.field("requester", m.requester);
+  }
+};
+
+template <>
+struct Fields<msg::LatestPlan> {
+  static constexpr const char* name = "LatestPlan";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.key("requester", m.requester);
+    v.field("request_id", m.request_id);
+    v.field("status", m.status);
+    v.field("engine", m.engine);
+    v.field("plan_origin", m.plan_origin);
+    v.field("plan", m.plan);
   }
 };
 

@@ -1,8 +1,6 @@
 // planner_tool: plans a model + problem (or an OR-Library job-shop instance) and prints the
 // flexible plan as JSON; --svg writes a Gantt chart of the timelines with each token's
 // flexibility drawn. The wall clock is read here, at the edge, for --seconds.
-#include <google/protobuf/util/json_util.h>
-
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
@@ -10,6 +8,7 @@
 #include <iostream>
 
 #include "gantt_svg.hpp"
+#include "plan_json.hpp"
 #include "jobshop_instance.hpp"
 #include "plan_validator.hpp"
 #include "planner.hpp"
@@ -27,7 +26,11 @@ int main(int argc, char** argv) {
   app.add_option("--problem", problem_file, "problem file (planner language)");
   app.add_option("--jobshop", jobshop_file,
                  "an OR-Library job-shop instance instead of model + problem");
-  app.add_option("--engine", engine, "search engine: chronological, discrepancy or sampling");
+  std::string engines;
+  for (const std::string& n : search_engine_names()) engines += (engines.empty() ? "" : ", ") + n;
+  unsigned seed = 1;
+  app.add_option("--engine", engine, "search engine: " + engines)->capture_default_str();
+  app.add_option("--seed", seed, "seed of sampling engines")->capture_default_str();
   app.add_option("--seconds", seconds, "time budget (0: none)");
   app.add_option("--max-decisions", max_decisions, "decision budget (0: none)");
   app.add_option("--svg", svg_file, "write a Gantt chart of the plan here");
@@ -65,6 +68,7 @@ int main(int argc, char** argv) {
 
   PlanningOptions options;
   options.engine = engine;
+  options.engine_options.seed = seed;
   if (max_decisions) options.termination.max_decisions = max_decisions;
   const auto started = std::chrono::steady_clock::now();
   auto elapsed = [&] {
@@ -89,11 +93,7 @@ int main(int argc, char** argv) {
               r.status == PlanStatus::kOptimal ? " (proved optimal)" : "");
   for (const std::string& v : validate_plan(*model, *problem, *r.plan))
     std::fprintf(stderr, "INVALID: %s\n", v.c_str());
-  std::string json;
-  google::protobuf::util::JsonPrintOptions print;
-  print.add_whitespace = true;
-  print.always_print_primitive_fields = true;
-  (void)google::protobuf::util::MessageToJsonString(to_message(*r.plan), &json, print);
+  const std::string json = plan_json(*r.plan);
   if (!json_file.empty()) {
     std::ofstream(json_file) << json;
   } else if (!quiet) {
