@@ -34,7 +34,7 @@ struct Config {
 
 struct Stats {
   std::vector<double> time_ms, ratio, smooth;
-  int solved = 0, runs = 0, fast_and_short = 0;
+  int solved = 0, runs = 0, fast_and_short = 0, guided = 0;
 };
 
 double quantile(std::vector<double> v, double q) {
@@ -67,13 +67,19 @@ int main(int argc, char** argv) {
   seed_ompl(seed);
 
   std::vector<Config> configs;
-  const auto add = [&](CurveModel c, const std::string& planner) {
+  const auto add = [&](CurveModel c, const std::string& planner, bool guide = true) {
     OmplPlannerSettings s;
     s.curve = c;
     s.planner = planner;
     s.turning_radius_m = 0.4;
-    configs.push_back({std::string(to_string(c)) + "/" + planner, s});
+    s.route_guide = guide;
+    configs.push_back(
+        {std::string(to_string(c)) + "/" + planner + (guide ? "" : " (no route guide)"), s});
   };
+  // The baseline of the route guide: the same planners sampling from the start.
+  add(CurveModel::ReedsShepp, "RRTConnect", false);
+  add(CurveModel::ReedsShepp, "RRTstar", false);
+  add(CurveModel::Holonomic, "RRTConnect", false);
   add(CurveModel::ReedsShepp, "RRTConnect");
   add(CurveModel::ReedsShepp, "RRTstar");
   add(CurveModel::ReedsShepp, "BITstar");
@@ -178,6 +184,7 @@ int main(int argc, char** argv) {
         if (r.found()) {
           if (first_collision(*grid, r.poses, 0.05)) ++collisions;
           ++st.solved;
+          if (r.route_guided) ++st.guided;
           const double ratio = r.length_m / c.grid.length_m;
           st.ratio.push_back(ratio);
           st.smooth.push_back(path_smoothness(r.poses));
@@ -204,16 +211,17 @@ int main(int argc, char** argv) {
        << " m, " << pairs << " pairs; log `" << log_path << "`)\n\n"
        << "| planner | solved | time median / p95 (ms) | length ratio median / max | smoothness "
           "median | "
-          "<= 1.1x in < 50 ms |\n|---|---|---|---|---|---|\n";
+          "<= 1.1x in < 50 ms | by the route guide |\n|---|---|---|---|---|---|---|\n";
     for (const auto& [name, st] : table) {
       char line[512];
       std::snprintf(
-          line, sizeof line, "| %s | %d/%d | %.1f / %.1f | %.3f / %.3f | %.3f | %d%% |\n",
+          line, sizeof line, "| %s | %d/%d | %.1f / %.1f | %.3f / %.3f | %.3f | %d%% | %d |\n",
           name.c_str(), st.solved, st.runs, quantile(st.time_ms, 0.5), quantile(st.time_ms, 0.95),
           quantile(st.ratio, 0.5),
           st.ratio.empty() ? 0.0 : *std::max_element(st.ratio.begin(), st.ratio.end()),
           quantile(st.smooth, 0.5),
-          st.runs ? 100 * (name.rfind("grid", 0) == 0 ? st.runs : st.fast_and_short) / st.runs : 0);
+          st.runs ? 100 * (name.rfind("grid", 0) == 0 ? st.runs : st.fast_and_short) / st.runs : 0,
+          st.guided);
       md << line;
       std::printf("%s %s", mc.name.c_str(), line);
     }

@@ -112,6 +112,85 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// The route's direction at pose i, over about +-0.3 m: the 8-connected route turns in 45 degree
+// steps, a heading averaged over a few cells is what a curve through it should have.
+double route_heading(const std::vector<geometry::Pose2>& route, std::size_t i, std::size_t half) {
+  const std::size_t a = i >= half ? i - half : 0;
+  const std::size_t b = std::min(route.size() - 1, i + half);
+  const geometry::Vec2 d = route[b].position() - route[a].position();
+  return d.norm() > 1e-9 ? std::atan2(d.y(), d.x()) : route[i].theta;
+}
+
+// The grid route as a guide (OmplPlannerSettings::route_guide): greedy hops from the start to
+// the farthest route pose within `reach_m` that one valid motion reaches, then on from there; the
+// last hop ends in `goal`. Empty when a hop finds no reachable pose or time runs out.
+std::optional<og::PathGeometric> route_guided_path(const ob::SpaceInformationPtr& si,
+                                                   const std::vector<geometry::Pose2>& route,
+                                                   const ob::State* start, const ob::State* goal,
+                                                   double resolution_m, double reach_m,
+                                                   const ob::PlannerTerminationCondition& stop) {
+  if (route.size() < 2) return std::nullopt;
+  const auto space = si->getStateSpace();
+  const std::size_t half = std::max<std::size_t>(1, static_cast<std::size_t>(0.3 / resolution_m));
+  // Candidates every ~0.2 m of the route (route poses are cell to cell), the goal last.
+  const std::size_t stride = std::max<std::size_t>(1, static_cast<std::size_t>(0.2 / resolution_m));
+  std::vector<std::size_t> index;
+  std::vector<double> along;  // metres along the route to each candidate
+  double s = 0.0;
+  for (std::size_t i = 1; i + 1 < route.size(); ++i) {
+    s += (route[i].position() - route[i - 1].position()).norm();
+    if (i % stride == 0) {
+      index.push_back(i);
+      along.push_back(s);
+    }
+  }
+  s += (route.back().position() - route[route.size() - 2].position()).norm();
+  index.push_back(route.size() - 1);
+  along.push_back(s);
+
+  std::vector<ob::State*> states;
+  for (std::size_t k = 0; k + 1 < index.size(); ++k) {
+    ob::State* st = si->allocState();
+    auto* se2 = st->as<ob::SE2StateSpace::StateType>();
+    se2->setXY(route[index[k]].x, route[index[k]].y);
+    se2->setYaw(route_heading(route, index[k], half));
+    space->enforceBounds(st);
+    states.push_back(st);
+  }
+  const auto candidate = [&](std::size_t k) -> const ob::State* {
+    return k + 1 == index.size() ? goal : states[k];
+  };
+  std::optional<og::PathGeometric> path(std::in_place, si, start);
+  const ob::State* from = start;
+  double from_along = 0.0;
+  std::size_t next = 0;  // first candidate not behind `from`
+  while (from != goal) {
+    if (stop()) {
+      path.reset();
+      break;
+    }
+    std::size_t last = next;
+    while (last + 1 < index.size() && along[last + 1] - from_along <= reach_m) ++last;
+    std::optional<std::size_t> reached;
+    for (std::size_t k = last + 1; k-- > next;) {
+      if (si->isValid(candidate(k)) && si->checkMotion(from, candidate(k))) {
+        reached = k;
+        break;
+      }
+    }
+    if (!reached) {
+      path.reset();
+      break;
+    }
+    from = candidate(*reached);
+    from_along = along[*reached];
+    next = *reached + 1;
+    path->append(from);
+  }
+  for (ob::State* st : states) si->freeState(st);
+  return path;
+}
+
 }  // namespace
 
 const char* to_string(CurveModel m) {
@@ -155,6 +234,8 @@ std::optional<std::string> settings_problem(const OmplPlannerSettings& s) {
   }
   if (!(s.motion_step_m > 0.0 && s.motion_step_m <= 0.05))
     return "motion step must be in (0, 0.05] m";
+  if (!(s.route_guide_reach_m > 0.0 && std::isfinite(s.route_guide_reach_m)))
+    return "route guide reach must be positive and finite";
   if (!(s.good_enough_ratio >= 1.0 && std::isfinite(s.good_enough_ratio))) {
     return "good-enough ratio must be finite and at least 1";
   }
@@ -261,17 +342,26 @@ PathResult OmplPathPlanner::plan(const PathRequest& request) {
   try {
     ss.setup();
     // Most of the budget plans; what is left (at least a fifth) simplifies.
-    const ob::PlannerStatus solved =
-        ss.solve(ob::timedPlannerTerminationCondition(0.8 * request.budget_s));
-    if (solved != ob::PlannerStatus::EXACT_SOLUTION) {
-      PathResult r =
-          failure(PathStatus::NotFound, std::string(settings_.planner) + " found no path in " +
-                                            std::to_string(request.budget_s) + " s (" +
-                                            solved.asString() + ")");
-      r.planning_s = seconds_since(t0);
-      return r;
+    const double plan_s = 0.8 * request.budget_s;
+    std::optional<og::PathGeometric> guided;
+    if (settings_.route_guide) {
+      guided = route_guided_path(si, route.poses, ss.getProblemDefinition()->getStartState(0),
+                                 goal.get(), res, settings_.route_guide_reach_m,
+                                 ob::timedPlannerTerminationCondition(plan_s));
     }
-    og::PathGeometric path = ss.getSolutionPath();
+    if (!guided) {
+      const ob::PlannerStatus solved = ss.solve(
+          ob::timedPlannerTerminationCondition(std::max(1e-4, plan_s - seconds_since(t0))));
+      if (solved != ob::PlannerStatus::EXACT_SOLUTION) {
+        PathResult r = failure(PathStatus::NotFound,
+                               std::string(settings_.planner) + " found no path in " +
+                                   std::to_string(request.budget_s) + " s (" + solved.asString() +
+                                   ")");
+        r.planning_s = seconds_since(t0);
+        return r;
+      }
+    }
+    og::PathGeometric path = guided ? *guided : ss.getSolutionPath();
     if (settings_.simplify) {
       og::PathSimplifier simplifier(si, ss.getGoal(), objective);
       const double left = std::max(0.2 * request.budget_s, request.budget_s - seconds_since(t0));
@@ -279,6 +369,7 @@ PathResult OmplPathPlanner::plan(const PathRequest& request) {
     }
     PathResult r;
     r.status = PathStatus::Found;
+    r.route_guided = guided.has_value();
     // The poses are exactly the states the motion validator checked along each motion (same
     // segment count, same interpolation), so the final check tests what the planner accepted.
     const auto pose_of = [](const ob::State* st) {

@@ -109,6 +109,34 @@ INSTANTIATE_TEST_SUITE_P(AllCurves, OmplCurves,
                          ::testing::Values(CurveModel::Dubins, CurveModel::ReedsShepp,
                                            CurveModel::Holonomic));
 
+// The grid route as a guide: the Reeds-Shepp path through the doorway comes from hops along the
+// route (no sampling), clear of the walls and within 1.1x the grid optimum; without the guide the
+// sampler still finds one.
+TEST(OmplPathPlanner, RouteGuideGivesAShortReedsSheppPathWithoutSampling) {
+  const auto w = walled_room();
+  const auto grid = grid_of(w);
+  GridPathPlanner grid_planner(grid);
+  const auto optimum = grid_planner.plan(through_doorway());
+  ASSERT_TRUE(optimum.found());
+  OmplPlannerSettings s;
+  s.turning_radius_m = 0.4;
+  OmplPathPlanner guided(grid, s);
+  const auto r = guided.plan(through_doorway());
+  expect_clear_through_doorway(w, r);
+  EXPECT_TRUE(r.route_guided);
+  EXPECT_LE(r.length_m, 1.1 * optimum.length_m);
+  EXPECT_FALSE(first_collision(*grid, r.poses, 0.05).has_value());
+
+  s.route_guide = false;
+  OmplPathPlanner sampling(grid, s);
+  const auto r2 = sampling.plan(through_doorway());
+  expect_clear_through_doorway(w, r2);
+  EXPECT_FALSE(r2.route_guided);
+
+  s.route_guide_reach_m = 0.0;
+  EXPECT_THROW(OmplPathPlanner(grid, s), std::invalid_argument);
+}
+
 TEST(OmplPathPlanner, EveryPlannerNameFindsTheDoorway) {
   const auto w = walled_room();
   for (const auto& name : ompl_planner_names()) {

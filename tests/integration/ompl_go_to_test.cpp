@@ -1,0 +1,156 @@
+// The behavior process with OMPL go-to paths (--path-planner ompl): rhino on the office floor in
+// lockstep over DDS, with the real simulator.
+//
+// One DDS domain per test (ctest runs them in parallel); this file uses 180-182 only:
+//
+//   domain  test
+//   ------  -----------------------------------------------------------
+//    180    OmplGoToTest.ReachesAGoalThroughADoorwayOnAnOmplPath
+//    181    OmplGoToTest.GoalInAnObstacleEndsBlockedWithTheReason
+//    182    OmplGoToTest.DoorSeenClosedBlocksTheGoalWithTheDoorNamed
+#include "tests/support/process_test.hpp"
+
+#include "simulator/scenario/scenario_loader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace autonomy::test {
+namespace {
+
+using namespace std::chrono_literals;
+using msg::GoalState;
+
+const std::string kOffice = std::string(AUTONOMY_SOURCE_DIR) + "/deploy/scenarios/office.pbtxt";
+// rhino starts in the hallway at (1.5, 8); A-110 (the library) lies south, behind its 1 m door at
+// x in [1.1, 2.1] of the wall y in [6.9, 7.1].
+constexpr double kLibraryX = 5.5, kLibraryY = 5.0;
+
+std::string states_text(const std::vector<msg::GoalStatus>& v) {
+  std::string out;
+  for (const auto& s : v) {
+    if (!out.empty()) out += " -> ";
+    out += msg::to_string(s.state);
+    if (!s.reason.empty()) out += " (" + s.reason + ")";
+  }
+  return out.empty() ? "(none)" : out;
+}
+
+class OmplGoToTest : public ProcessTest {
+ protected:
+  void TearDown() override {
+    // Our readers and writer go before the fixture's participant does.
+    goal_writer_.reset();
+    goal_topic_.reset();
+    goals_.reset();
+    ProcessTest::TearDown();
+  }
+  // The office floor (its text edited by `edit`), the simulator in lockstep waiting for rhino,
+  // rhino's behavior with OMPL Reeds-Shepp paths. A generous budget: the test asserts outcomes,
+  // the 50 ms figure is path_bench's.
+  void start_office(const std::function<void(std::string&)>& edit = {}) {
+    std::string text = read_file(kOffice);
+    if (edit) edit(text);
+    scenario_ = dir().file("office.pbtxt");
+    write_file(scenario_, text);
+    Recorder<msg::Heartbeat> beats(participant(), dds::topics::heartbeat);
+    goals_ = std::make_unique<Recorder<msg::GoalStatus>>(participant(), dds::topics::goal_status);
+    start_simulator({"--config", scenario_, "--mode", "lockstep", "--wait-for", "behavior/rhino"});
+    behavior_ = &start_behavior("rhino", {"--config", scenario_, "--path-planner", "ompl", "--ompl-space",
+                                          "reeds-shepp", "--ompl-planner", "RRTConnect", "--ompl-budget-ms", "500"});
+    ASSERT_TRUE(await_ready(beats, *behavior_));
+    goal_topic_ = std::make_unique<dds::Topic<msg::NavGoal>>(participant(), dds::topics::nav_goal);
+    goal_writer_ = std::make_unique<dds::Writer<msg::NavGoal>>(participant(), *goal_topic_);
+    ASSERT_TRUE(goal_writer_->wait_for_readers(1, kDeadline));
+  }
+  std::vector<msg::GoalStatus> of_goal(const std::string& id) {
+    goals_->poll();
+    return goals_->matching([&](const msg::GoalStatus& g) { return g.goal_id == id; });
+  }
+  ::testing::AssertionResult await_end(const std::string& id) {
+    return await("goal " + id + " ended", [&] {
+      const auto v = of_goal(id);
+      return !v.empty() && v.back().state != GoalState::Accepted && v.back().state != GoalState::Active;
+    }, 120s);
+  }
+
+  std::string scenario_;
+  ChildProcess* behavior_ = nullptr;
+  std::unique_ptr<Recorder<msg::GoalStatus>> goals_;  // made by start_office, after join()
+  std::unique_ptr<dds::Topic<msg::NavGoal>> goal_topic_;
+  std::unique_ptr<dds::Writer<msg::NavGoal>> goal_writer_;
+};
+
+// rhino drives from the hallway into the library through its doorway on a Reeds-Shepp path: the
+// goal is reached, every state of the run keeps rhino's disc off every wall and piece of
+// furniture of the map, never in collision, and one state lies in the doorway.
+TEST_F(OmplGoToTest, ReachesAGoalThroughADoorwayOnAnOmplPath) {
+  join(180);
+  Recorder<msg::RobotState> states(participant(), dds::topics::robot_state);
+  start_office();
+  goal_writer_->write({"rhino", "library", kLibraryX, kLibraryY, 0.0, ""});
+  ASSERT_TRUE(await_end("library")) << states_text(goals_->all());
+  std::vector<GoalState> order;
+  for (const auto& g : of_goal("library")) order.push_back(g.state);
+  EXPECT_EQ(order, (std::vector<GoalState>{GoalState::Accepted, GoalState::Active, GoalState::Reached}))
+      << states_text(goals_->all());
+
+  const auto loaded = sim::load_scenario_file(scenario_);
+  ASSERT_TRUE(loaded.ok()) << loaded.error_text();
+  const auto& world = loaded.scenario->world;
+  states.poll();
+  std::size_t seen = 0;
+  bool in_doorway = false;
+  for (const auto& s : states.all()) {
+    if (s.robot_id != "rhino") continue;
+    ++seen;
+    EXPECT_FALSE(s.in_collision) << "tick " << s.tick;
+    const geometry::Vec2 p(s.x, s.y);
+    for (const auto& o : world.obstacles)
+      ASSERT_GE(geometry::distance(o, p), s.radius - 1e-6)
+          << "tick " << s.tick << " at (" << s.x << ", " << s.y << ") inside (" << o.min_x << ", " << o.min_y
+          << ")-(" << o.max_x << ", " << o.max_y << ")";
+    if (s.y > 6.9 && s.y < 7.1 && s.x > 1.1 && s.x < 2.1) in_doorway = true;
+  }
+  EXPECT_GT(seen, 20u);
+  EXPECT_TRUE(in_doorway);
+  const std::string log = read_file(behavior_->log_file());
+  EXPECT_NE(log.find("reeds_shepp RRTConnect path"), std::string::npos) << "no OMPL path in the log";
+}
+
+// A goal inside the library's bookshelf: Blocked at once, with the planner's reason.
+TEST_F(OmplGoToTest, GoalInAnObstacleEndsBlockedWithTheReason) {
+  join(181);
+  start_office();
+  goal_writer_->write({"rhino", "shelf", 5.0, 0.6, 0.0, ""});
+  ASSERT_TRUE(await_end("shelf")) << states_text(goals_->all());
+  const auto v = of_goal("shelf");
+  EXPECT_EQ(v.back().state, GoalState::Blocked) << states_text(v);
+  EXPECT_EQ(v.back().reason, "no reeds_shepp path: goal (5.00, 0.60) is outside the map or in an obstacle");
+}
+
+// The library's door is closed from the start: the first plan goes through it (rhino does not
+// know yet), rhino sees the door closed, replans, and the goal ends Blocked naming the door;
+// rhino never crossed the doorway.
+TEST_F(OmplGoToTest, DoorSeenClosedBlocksTheGoalWithTheDoorNamed) {
+  join(182);
+  Recorder<msg::RobotState> states(participant(), dds::topics::robot_state);
+  start_office([](std::string& text) {
+    const std::string id = "id: \"A-110\"\n";
+    const auto at = text.find(id);
+    ASSERT_NE(at, std::string::npos);
+    text.insert(at + id.size(), "  angle: 0\n");
+  });
+  goal_writer_->write({"rhino", "library", kLibraryX, kLibraryY, 0.0, ""});
+  ASSERT_TRUE(await_end("library")) << states_text(goals_->all());
+  const auto v = of_goal("library");
+  EXPECT_EQ(v.back().state, GoalState::Blocked) << states_text(v);
+  EXPECT_NE(v.back().reason.find("A-110"), std::string::npos) << v.back().reason;
+  states.poll();
+  for (const auto& s : states.all())
+    if (s.robot_id == "rhino") EXPECT_GT(s.y, 7.0) << "tick " << s.tick;
+}
+
+}  // namespace
+}  // namespace autonomy::test
