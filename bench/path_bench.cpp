@@ -62,6 +62,8 @@ int main(int argc, char** argv) {
   app.add_option("--office-resolution", office_resolution, "Office grid resolution in m")
       ->check(CLI::Range(0.02, 0.5))
       ->capture_default_str();
+  bool verbose = false;
+  app.add_flag("--verbose", verbose, "Print every query an OMPL planner did not solve, with the reason");
   app.add_option("--out", out, "Directory for the logs and the summary")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   seed_ompl(seed);
@@ -192,6 +194,12 @@ int main(int argc, char** argv) {
           run["solution length REAL"] = std::to_string(r.length_m);
           run["solution smoothness REAL"] = std::to_string(st.smooth.back());
           run["length ratio REAL"] = std::to_string(ratio);
+        }
+        if (verbose && !(r.found() && r.length_m <= 1.1 * c.grid.length_m && ms < 50.0)) {
+          std::printf("%s %s: (%.2f, %.2f, %.2f) -> (%.2f, %.2f): %s %.1f ms%s%s\n", mc.name.c_str(),
+                      cfg.label.c_str(), c.q.start.x, c.q.start.y, c.q.start.theta, c.q.goal.x(),
+                      c.q.goal.y(), to_string(r.status), ms, r.reason.empty() ? "" : ": ",
+                      r.reason.c_str());
         }
         lp.runs.push_back(std::move(run));
       }

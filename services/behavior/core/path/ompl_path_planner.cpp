@@ -160,6 +160,35 @@ std::optional<og::PathGeometric> route_guided_path(const ob::SpaceInformationPtr
   const auto candidate = [&](std::size_t k) -> const ob::State* {
     return k + 1 == index.size() ? goal : states[k];
   };
+  // The farthest candidate one motion from `from` reaches, scanning back from `reach_m` ahead.
+  const auto farthest = [&](const ob::State* from, std::size_t next,
+                            double from_along) -> std::optional<std::size_t> {
+    std::size_t last = next;
+    while (last + 1 < index.size() && along[last + 1] - from_along <= reach_m) ++last;
+    for (std::size_t k = last + 1; k-- > next;) {
+      if (si->isValid(candidate(k)) && si->checkMotion(from, candidate(k))) return k;
+    }
+    return std::nullopt;
+  };
+  // Stuck (typically at the start: facing a wall, too close to turn on the curve): a short
+  // manoeuvre first, straight forward or back by up to half a metre, turning by up to 90 degrees.
+  ob::State* via = si->allocState();
+  const auto manoeuvre = [&](const ob::State* from, std::size_t next,
+                             double from_along) -> std::optional<std::size_t> {
+    const auto* f = from->as<ob::SE2StateSpace::StateType>();
+    for (const double d : {-0.3, 0.3, -0.5, 0.5, 0.0}) {
+      for (const double turn : {0.0, M_PI / 4, -M_PI / 4, M_PI / 2, -M_PI / 2}) {
+        if (d == 0.0 && turn == 0.0) continue;
+        auto* v = via->as<ob::SE2StateSpace::StateType>();
+        v->setXY(f->getX() + d * std::cos(f->getYaw()), f->getY() + d * std::sin(f->getYaw()));
+        v->setYaw(f->getYaw() + turn);
+        space->enforceBounds(via);
+        if (!si->isValid(via) || !si->checkMotion(from, via)) continue;
+        if (auto k = farthest(via, next, from_along)) return k;
+      }
+    }
+    return std::nullopt;
+  };
   std::optional<og::PathGeometric> path(std::in_place, si, start);
   const ob::State* from = start;
   double from_along = 0.0;
@@ -169,14 +198,10 @@ std::optional<og::PathGeometric> route_guided_path(const ob::SpaceInformationPtr
       path.reset();
       break;
     }
-    std::size_t last = next;
-    while (last + 1 < index.size() && along[last + 1] - from_along <= reach_m) ++last;
-    std::optional<std::size_t> reached;
-    for (std::size_t k = last + 1; k-- > next;) {
-      if (si->isValid(candidate(k)) && si->checkMotion(from, candidate(k))) {
-        reached = k;
-        break;
-      }
+    std::optional<std::size_t> reached = farthest(from, next, from_along);
+    if (!reached) {
+      reached = manoeuvre(from, next, from_along);
+      if (reached) path->append(via);
     }
     if (!reached) {
       path.reset();
@@ -187,6 +212,7 @@ std::optional<og::PathGeometric> route_guided_path(const ob::SpaceInformationPtr
     next = *reached + 1;
     path->append(from);
   }
+  si->freeState(via);
   for (ob::State* st : states) si->freeState(st);
   return path;
 }
@@ -364,6 +390,12 @@ PathResult OmplPathPlanner::plan(const PathRequest& request) {
     og::PathGeometric path = guided ? *guided : ss.getSolutionPath();
     if (settings_.simplify) {
       og::PathSimplifier simplifier(si, ss.getGoal(), objective);
+      // A guided path has few vertices, most of them needless: dropping those first is cheap and
+      // leaves the simplifier's time for the cusps of the first hop.
+      if (guided) {
+        simplifier.reduceVertices(path);
+        simplifier.collapseCloseVertices(path);
+      }
       const double left = std::max(0.2 * request.budget_s, request.budget_s - seconds_since(t0));
       simplifier.simplify(path, left);
     }
@@ -377,13 +409,26 @@ PathResult OmplPathPlanner::plan(const PathRequest& request) {
       return geometry::Pose2{se2->getX(), se2->getY(), se2->getYaw()};
     };
     ob::ScopedState<ob::SE2StateSpace> between(impl_->space);
+    const auto* reeds_shepp = dynamic_cast<const ob::ReedsSheppStateSpace*>(impl_->space.get());
+    const auto* dubins = dynamic_cast<const ob::DubinsStateSpace*>(impl_->space.get());
     r.poses.push_back(pose_of(path.getState(0)));
     for (std::size_t i = 1; i < path.getStateCount(); ++i) {
       const ob::State* a = path.getState(i - 1);
       const ob::State* b = path.getState(i);
       const int n = std::max(1, static_cast<int>(impl_->space->validSegmentCount(a, b)));
+      // The curve spaces compute the segment's curve once (their caching interpolate): one curve
+      // per pose made the conversion of a 200 m path cost more than planning it.
+      bool first = true;
+      ob::ReedsSheppStateSpace::ReedsSheppPath rs_path;
+      ob::DubinsStateSpace::DubinsPath dubins_path;
       for (int k = 1; k < n; ++k) {
-        impl_->space->interpolate(a, b, static_cast<double>(k) / n, between.get());
+        const double t = static_cast<double>(k) / n;
+        if (reeds_shepp)
+          reeds_shepp->interpolate(a, b, t, first, rs_path, between.get());
+        else if (dubins)
+          dubins->interpolate(a, b, t, first, dubins_path, between.get());
+        else
+          impl_->space->interpolate(a, b, t, between.get());
         r.poses.push_back(pose_of(between.get()));
       }
       r.poses.push_back(pose_of(b));
