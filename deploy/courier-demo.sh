@@ -6,19 +6,29 @@
 # keeps running for more commands from another terminal until Ctrl-C.
 #
 # Options: --domain N (default $AUTONOMY_DOMAIN or 0), --no-setup (skip install and build),
-#          --exit-when-done (stop everything once both jobs ended; exit 0 when both completed).
+#          --exit-when-done (stop everything once both jobs ended; exit 0 when both completed),
+#          --path-planner grid|ompl (rhino's go-to paths: the grid field's controller, default, or
+#          OMPL Reeds-Shepp paths followed by pure pursuit: deploy/sets/courier-ompl.set).
 set -euo pipefail
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
 domain=${AUTONOMY_DOMAIN:-0}
 setup=1
 exit_when_done=0
+set_name=courier
 while [ $# -gt 0 ]; do
   case $1 in
     --domain) domain=$2; shift 2 ;;
     --no-setup) setup=0; shift ;;
     --exit-when-done) exit_when_done=1; shift ;;
-    -h|--help) sed -n '2,10p' "${BASH_SOURCE[0]}"; exit 0 ;;
+    --path-planner)
+      case ${2:-} in
+        grid) set_name=courier ;;
+        ompl) set_name=courier-ompl ;;
+        *) echo "courier-demo: --path-planner takes grid or ompl, not '${2:-}'" >&2; exit 2 ;;
+      esac
+      shift 2 ;;
+    -h|--help) sed -n '2,12p' "${BASH_SOURCE[0]}"; exit 0 ;;
     *) echo "courier-demo: unknown option $1 (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -34,7 +44,7 @@ export CYCLONEDDS_URI="file://$repo/deploy/dds/loopback.xml"
 export AUTONOMY_DOMAIN=$domain
 run_dir="$repo/runs/courier-$(date +%Y%m%d-%H%M%S)"
 
-bash "$repo/deploy/launch.sh" --detach --domain "$domain" --run-dir "$run_dir" courier
+bash "$repo/deploy/launch.sh" --detach --domain "$domain" --run-dir "$run_dir" "$set_name"
 finish() {
   bash "$repo/deploy/launch.sh" stop "$run_dir" || true
   echo "courier-demo: picture: $run_dir/run.svg; events: $run_dir/events.jsonl; journal: $run_dir/courier.db; logs: $run_dir"

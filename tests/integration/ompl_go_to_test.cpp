@@ -49,7 +49,7 @@ class OmplGoToTest : public ProcessTest {
   // The office floor (its text edited by `edit`), the simulator in lockstep waiting for rhino,
   // rhino's behavior with OMPL Reeds-Shepp paths. A generous budget: the test asserts outcomes,
   // the 50 ms figure is path_bench's.
-  void start_office(const std::function<void(std::string&)>& edit = {}) {
+  void start_office(const std::function<void(std::string&)>& edit = {}, std::vector<std::string> behavior_args = {}) {
     std::string text = read_file(kOffice);
     if (edit) edit(text);
     scenario_ = dir().file("office.pbtxt");
@@ -57,8 +57,9 @@ class OmplGoToTest : public ProcessTest {
     Recorder<msg::Heartbeat> beats(participant(), dds::topics::heartbeat);
     goals_ = std::make_unique<Recorder<msg::GoalStatus>>(participant(), dds::topics::goal_status);
     start_simulator({"--config", scenario_, "--mode", "lockstep", "--wait-for", "behavior/rhino"});
-    behavior_ = &start_behavior("rhino", {"--config", scenario_, "--path-planner", "ompl", "--ompl-space",
-                                          "reeds-shepp", "--ompl-planner", "RRTConnect", "--ompl-budget-ms", "500"});
+    behavior_args.insert(behavior_args.begin(), {"--config", scenario_, "--path-planner", "ompl", "--ompl-space",
+                                                 "reeds-shepp", "--ompl-planner", "RRTConnect", "--ompl-budget-ms", "500"});
+    behavior_ = &start_behavior("rhino", behavior_args);
     ASSERT_TRUE(await_ready(beats, *behavior_));
     goal_topic_ = std::make_unique<dds::Topic<msg::NavGoal>>(participant(), dds::topics::nav_goal);
     goal_writer_ = std::make_unique<dds::Writer<msg::NavGoal>>(participant(), *goal_topic_);
@@ -127,29 +128,48 @@ TEST_F(OmplGoToTest, GoalInAnObstacleEndsBlockedWithTheReason) {
   ASSERT_TRUE(await_end("shelf")) << states_text(goals_->all());
   const auto v = of_goal("shelf");
   EXPECT_EQ(v.back().state, GoalState::Blocked) << states_text(v);
-  EXPECT_EQ(v.back().reason, "no reeds_shepp path: goal (5.00, 0.60) is outside the map or in an obstacle");
+  EXPECT_EQ(v.back().reason, "no reeds_shepp path: goal (5, 0.6) is outside the map or in an obstacle");
 }
 
-// The library's door is closed from the start: the first plan goes through it (rhino does not
-// know yet), rhino sees the door closed, replans, and the goal ends Blocked naming the door;
-// rhino never crossed the doorway.
+// The library's door is closed from the start and rhino starts 6.5 m away from it, beyond its door
+// sensor's 4 m: the first plan goes through the doorway (rhino does not know yet); on the way
+// rhino sees the door closed, replans, and the goal ends Blocked naming the door; rhino never
+// crossed the doorway.
 TEST_F(OmplGoToTest, DoorSeenClosedBlocksTheGoalWithTheDoorNamed) {
   join(182);
   Recorder<msg::RobotState> states(participant(), dds::topics::robot_state);
-  start_office([](std::string& text) {
-    const std::string id = "id: \"A-110\"\n";
-    const auto at = text.find(id);
-    ASSERT_NE(at, std::string::npos);
-    text.insert(at + id.size(), "  angle: 0\n");
-  });
+  start_office(
+      [](std::string& text) {
+        const std::string id = "id: \"A-110\"\n";
+        const auto at = text.find(id);
+        ASSERT_NE(at, std::string::npos);
+        text.insert(at + id.size(), "  angle: 0\n");
+        const std::string start = "start { x: 1.5 y: 8.0 theta: 0.0 }";
+        const auto s = text.find(start);
+        ASSERT_NE(s, std::string::npos);
+        text.replace(s, start.size(), "start { x: 8 y: 8 theta: 3.14159 }");
+      });
   goal_writer_->write({"rhino", "library", kLibraryX, kLibraryY, 0.0, ""});
   ASSERT_TRUE(await_end("library")) << states_text(goals_->all());
   const auto v = of_goal("library");
-  EXPECT_EQ(v.back().state, GoalState::Blocked) << states_text(v);
-  EXPECT_NE(v.back().reason.find("A-110"), std::string::npos) << v.back().reason;
+  std::vector<GoalState> order;
+  for (const auto& g : v) order.push_back(g.state);
+  EXPECT_EQ(order, (std::vector<GoalState>{GoalState::Accepted, GoalState::Active, GoalState::Blocked}))
+      << states_text(v);
+  EXPECT_NE(v.back().reason.find("door A-110 closed"), std::string::npos) << v.back().reason;
+  // Planned through the doorway first, then the door was seen.
+  const std::string log = read_file(behavior_->log_file());
+  const auto planned = log.find("goal library (new goal): reeds_shepp RRTConnect path");
+  const auto seen = log.find("door A-110 closed");
+  ASSERT_NE(planned, std::string::npos) << log;
+  ASSERT_NE(seen, std::string::npos) << log;
+  EXPECT_LT(planned, seen);
   states.poll();
-  for (const auto& s : states.all())
-    if (s.robot_id == "rhino") EXPECT_GT(s.y, 7.0) << "tick " << s.tick;
+  for (const auto& s : states.all()) {
+    if (s.robot_id == "rhino") {
+      EXPECT_GT(s.y, 7.0) << "tick " << s.tick;
+    }
+  }
 }
 
 }  // namespace
