@@ -213,6 +213,7 @@ void BehaviorNode::become_ready_when_possible() {
                       MotionLimits{st.max_speed, st.max_omega}, options_.go_to);
   if (options_.path.planner == GoToPlanner::Ompl) {
     follower_.emplace(controller_->kinematics(), controller_->limits(), options_.path.follower);
+    update_map_obstacles();
     spdlog::info("robot {}: go-to paths by OMPL {} in {} (turning radius {:.2f} m, budget {:.0f} ms)",
                  options_.robot_id, options_.path.ompl.planner, to_string(options_.path.ompl.curve),
                  options_.path.ompl.turning_radius_m, options_.path.budget_s * 1e3);

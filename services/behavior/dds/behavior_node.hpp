@@ -105,7 +105,9 @@ class BehaviorNode {
   // The command of a planned path, or nullopt when the grid controller should drive this tick.
   std::optional<VelocityCommand> follow_path(const geometry::Pose2& pose, double now_s);
   std::shared_ptr<const OccupancyGrid> path_grid(std::string* error) const;
+  // The range rays that hit something the map does not have (map_obstacles_ filters).
   std::vector<RangeRay> range_rays() const;
+  void update_map_obstacles();
   uint32_t control_mission(int64_t tick);
   Perception perceive() const;
   void publish(const GoalReport& report);
@@ -131,6 +133,9 @@ class BehaviorNode {
   std::optional<PathFollower> follower_;  // GoToPlanner::Ompl
   bool path_wanted_ = false;              // the pursued goal needs a (new) path
   double last_plan_s_ = -1e18;            // sim time of the last plan
+  // The map's obstacles (doors believed closed included) grown by a few centimetres: range hits
+  // there are the map's own, already planned around; the avoid schema sees only the others.
+  std::optional<OccupancyGrid> map_obstacles_;
 
   std::optional<MissionExecutor> executor_;
   ContactJudge contact_;  // the mission's view of contact: link flags with hysteresis

@@ -89,6 +89,7 @@ void BehaviorNode::update_door_knowledge(double now_s) {
   }
   door_sightings_.clear();
   if (!doors_.update(sightings, now_s, world_)) return;
+  if (follower_) update_map_obstacles();
   const std::vector<std::string> closed = doors_.closed();
   const std::string closures = closed.empty() ? "" : describe_closed_doors(closed);
   spdlog::info("robot {}: {}; replanning", options_.robot_id, describe_closed_doors(closed));

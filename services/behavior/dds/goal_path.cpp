@@ -12,6 +12,18 @@
 
 namespace autonomy::behavior {
 
+namespace {
+
+// Range hits within this of the map's obstacles are the map's own (range noise, cell rounding).
+constexpr double kMapHitMargin = 0.15;
+constexpr double kMapHitResolution = 0.05;
+
+}  // namespace
+
+void BehaviorNode::update_map_obstacles() {
+  map_obstacles_.emplace(doors_.apply(world_), kMapHitResolution, kMapHitMargin);
+}
+
 std::shared_ptr<const OccupancyGrid> BehaviorNode::path_grid(std::string* error) const {
   const OccupancyGrid& grid = tracker_->grid();  // the obstacles and the doors known closed
   if (!pursued_constraints_ || pursued_constraints_->layers.empty()) return std::make_shared<const OccupancyGrid>(grid);
@@ -91,7 +103,14 @@ std::vector<RangeRay> BehaviorNode::range_rays() const {
   for (std::size_t i = 0; i < scan_->ranges.size(); ++i) {
     const double range = static_cast<double>(scan_->ranges[i]);
     if (!std::isfinite(range)) continue;
-    rays.push_back({scan_->angle_min + static_cast<double>(i) * scan_->angle_increment, range, scan_->max_range});
+    const double angle = scan_->angle_min + static_cast<double>(i) * scan_->angle_increment;
+    if (map_obstacles_ && range < scan_->max_range) {
+      const double a = state_->theta + angle;
+      const geometry::Vec2 hit(state_->x + range * std::cos(a), state_->y + range * std::sin(a));
+      const auto cell = map_obstacles_->geometry().cell_at(hit);
+      if (!cell || map_obstacles_->blocked(*cell)) continue;  // a wall the path already keeps off
+    }
+    rays.push_back({angle, range, scan_->max_range});
   }
   return rays;
 }

@@ -16,7 +16,9 @@
 namespace autonomy::behavior {
 
 struct PathFollowerConfig {
-  PursuitSettings pursuit;
+  // A short look-ahead: pure pursuit cuts corners by about the look-ahead's sagitta, and a planned
+  // path keeps only one grid cell (0.1 m) more than the robot's radius from a door frame.
+  PursuitSettings pursuit{0.35, 0.1, 0.8, 2.0, 40};
   double stray_distance_m = 0.5;  // > 0: farther than this from the path's closest pose -> Strayed
   // Weight of the avoid vote (magnitude 1 = full strength) in units of max speed, >= 0; 0 turns
   // the avoid schema off.
