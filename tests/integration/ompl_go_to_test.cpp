@@ -49,7 +49,8 @@ class OmplGoToTest : public ProcessTest {
   // The office floor (its text edited by `edit`), the simulator in lockstep waiting for rhino,
   // rhino's behavior with OMPL Reeds-Shepp paths. A generous budget: the test asserts outcomes,
   // the 50 ms figure is path_bench's.
-  void start_office(const std::function<void(std::string&)>& edit = {}, std::vector<std::string> behavior_args = {}) {
+  void start_office(const std::function<void(std::string&)>& edit = {},
+                    std::vector<std::string> behavior_args = {}) {
     std::string text = read_file(kOffice);
     if (edit) edit(text);
     scenario_ = dir().file("office.pbtxt");
@@ -57,8 +58,9 @@ class OmplGoToTest : public ProcessTest {
     Recorder<msg::Heartbeat> beats(participant(), dds::topics::heartbeat);
     goals_ = std::make_unique<Recorder<msg::GoalStatus>>(participant(), dds::topics::goal_status);
     start_simulator({"--config", scenario_, "--mode", "lockstep", "--wait-for", "behavior/rhino"});
-    behavior_args.insert(behavior_args.begin(), {"--config", scenario_, "--path-planner", "ompl", "--ompl-space",
-                                                 "reeds-shepp", "--ompl-planner", "RRTConnect", "--ompl-budget-ms", "500"});
+    behavior_args.insert(behavior_args.begin(), {"--config", scenario_, "--path-planner", "ompl",
+                                                 "--ompl-space", "reeds-shepp", "--ompl-planner",
+                                                 "RRTConnect", "--ompl-budget-ms", "500"});
     behavior_ = &start_behavior("rhino", behavior_args);
     ASSERT_TRUE(await_ready(beats, *behavior_));
     goal_topic_ = std::make_unique<dds::Topic<msg::NavGoal>>(participant(), dds::topics::nav_goal);
@@ -70,10 +72,14 @@ class OmplGoToTest : public ProcessTest {
     return goals_->matching([&](const msg::GoalStatus& g) { return g.goal_id == id; });
   }
   ::testing::AssertionResult await_end(const std::string& id) {
-    return await("goal " + id + " ended", [&] {
-      const auto v = of_goal(id);
-      return !v.empty() && v.back().state != GoalState::Accepted && v.back().state != GoalState::Active;
-    }, 120s);
+    return await(
+        "goal " + id + " ended",
+        [&] {
+          const auto v = of_goal(id);
+          return !v.empty() && v.back().state != GoalState::Accepted &&
+                 v.back().state != GoalState::Active;
+        },
+        120s);
   }
 
   std::string scenario_;
@@ -94,7 +100,8 @@ TEST_F(OmplGoToTest, ReachesAGoalThroughADoorwayOnAnOmplPath) {
   ASSERT_TRUE(await_end("library")) << states_text(goals_->all());
   std::vector<GoalState> order;
   for (const auto& g : of_goal("library")) order.push_back(g.state);
-  EXPECT_EQ(order, (std::vector<GoalState>{GoalState::Accepted, GoalState::Active, GoalState::Reached}))
+  EXPECT_EQ(order,
+            (std::vector<GoalState>{GoalState::Accepted, GoalState::Active, GoalState::Reached}))
       << states_text(goals_->all());
 
   const auto loaded = sim::load_scenario_file(scenario_);
@@ -110,14 +117,15 @@ TEST_F(OmplGoToTest, ReachesAGoalThroughADoorwayOnAnOmplPath) {
     const geometry::Vec2 p(s.x, s.y);
     for (const auto& o : world.obstacles)
       ASSERT_GE(geometry::distance(o, p), s.radius - 1e-6)
-          << "tick " << s.tick << " at (" << s.x << ", " << s.y << ") inside (" << o.min_x << ", " << o.min_y
-          << ")-(" << o.max_x << ", " << o.max_y << ")";
+          << "tick " << s.tick << " at (" << s.x << ", " << s.y << ") inside (" << o.min_x << ", "
+          << o.min_y << ")-(" << o.max_x << ", " << o.max_y << ")";
     if (s.y > 6.9 && s.y < 7.1 && s.x > 1.1 && s.x < 2.1) in_doorway = true;
   }
   EXPECT_GT(seen, 20u);
   EXPECT_TRUE(in_doorway);
   const std::string log = read_file(behavior_->log_file());
-  EXPECT_NE(log.find("reeds_shepp RRTConnect path"), std::string::npos) << "no OMPL path in the log";
+  EXPECT_NE(log.find("reeds_shepp RRTConnect path"), std::string::npos)
+      << "no OMPL path in the log";
 }
 
 // A goal inside the library's bookshelf: Blocked at once, with the planner's reason.
@@ -128,7 +136,8 @@ TEST_F(OmplGoToTest, GoalInAnObstacleEndsBlockedWithTheReason) {
   ASSERT_TRUE(await_end("shelf")) << states_text(goals_->all());
   const auto v = of_goal("shelf");
   EXPECT_EQ(v.back().state, GoalState::Blocked) << states_text(v);
-  EXPECT_EQ(v.back().reason, "no reeds_shepp path: goal (5, 0.6) is outside the map or in an obstacle");
+  EXPECT_EQ(v.back().reason,
+            "no reeds_shepp path: goal (5, 0.6) is outside the map or in an obstacle");
 }
 
 // The library's door is closed from the start and rhino starts 6.5 m away from it, beyond its door
@@ -138,23 +147,23 @@ TEST_F(OmplGoToTest, GoalInAnObstacleEndsBlockedWithTheReason) {
 TEST_F(OmplGoToTest, DoorSeenClosedBlocksTheGoalWithTheDoorNamed) {
   join(182);
   Recorder<msg::RobotState> states(participant(), dds::topics::robot_state);
-  start_office(
-      [](std::string& text) {
-        const std::string id = "id: \"A-110\"\n";
-        const auto at = text.find(id);
-        ASSERT_NE(at, std::string::npos);
-        text.insert(at + id.size(), "  angle: 0\n");
-        const std::string start = "start { x: 1.5 y: 8.0 theta: 0.0 }";
-        const auto s = text.find(start);
-        ASSERT_NE(s, std::string::npos);
-        text.replace(s, start.size(), "start { x: 8 y: 8 theta: 3.14159 }");
-      });
+  start_office([](std::string& text) {
+    const std::string id = "id: \"A-110\"\n";
+    const auto at = text.find(id);
+    ASSERT_NE(at, std::string::npos);
+    text.insert(at + id.size(), "  angle: 0\n");
+    const std::string start = "start { x: 1.5 y: 8.0 theta: 0.0 }";
+    const auto s = text.find(start);
+    ASSERT_NE(s, std::string::npos);
+    text.replace(s, start.size(), "start { x: 8 y: 8 theta: 3.14159 }");
+  });
   goal_writer_->write({"rhino", "library", kLibraryX, kLibraryY, 0.0, ""});
   ASSERT_TRUE(await_end("library")) << states_text(goals_->all());
   const auto v = of_goal("library");
   std::vector<GoalState> order;
   for (const auto& g : v) order.push_back(g.state);
-  EXPECT_EQ(order, (std::vector<GoalState>{GoalState::Accepted, GoalState::Active, GoalState::Blocked}))
+  EXPECT_EQ(order,
+            (std::vector<GoalState>{GoalState::Accepted, GoalState::Active, GoalState::Blocked}))
       << states_text(v);
   EXPECT_NE(v.back().reason.find("door A-110 closed"), std::string::npos) << v.back().reason;
   // Planned through the doorway first, then the door was seen.

@@ -21,15 +21,25 @@ constexpr double kMapHitResolution = 0.05;
 }  // namespace
 
 void BehaviorNode::update_map_obstacles() {
-  map_obstacles_.emplace(doors_.apply(world_), kMapHitResolution, kMapHitMargin);
+  WorldMap known = doors_.apply(world_);
+  // An open door's leaf stands somewhere within its width of the doorway: hits there are the
+  // door's, not something in the way (the map gives doorways, not leaves or swings).
+  for (const Doorway& d : world_.doors) {
+    known.obstacles.push_back({d.centre.x() - d.width_m, d.centre.y() - d.width_m, d.centre.x() + d.width_m,
+                               d.centre.y() + d.width_m});
+  }
+  map_obstacles_.emplace(known, kMapHitResolution, kMapHitMargin);
 }
 
 std::shared_ptr<const OccupancyGrid> BehaviorNode::path_grid(std::string* error) const {
   const OccupancyGrid& grid = tracker_->grid();  // the obstacles and the doors known closed
-  if (!pursued_constraints_ || pursued_constraints_->layers.empty()) return std::make_shared<const OccupancyGrid>(grid);
-  const auto world = apply_constraints(doors_.apply(world_), *pursued_constraints_, options_.layers, error);
+  if (!pursued_constraints_ || pursued_constraints_->layers.empty())
+    return std::make_shared<const OccupancyGrid>(grid);
+  const auto world =
+      apply_constraints(doors_.apply(world_), *pursued_constraints_, options_.layers, error);
   if (!world) return nullptr;
-  return std::make_shared<const OccupancyGrid>(*world, grid.geometry().resolution_m(), grid.inflation_radius_m());
+  return std::make_shared<const OccupancyGrid>(*world, grid.geometry().resolution_m(),
+                                               grid.inflation_radius_m());
 }
 
 void BehaviorNode::plan_path(const char* why) {
@@ -53,45 +63,53 @@ void BehaviorNode::plan_path(const char* why) {
   try {
     OmplPathPlanner planner(grid, options_.path.ompl);
     result = planner.plan(request);
-  } catch (const std::exception& e) {  // settings were checked at start; never stop the robot's service
+  } catch (
+      const std::exception& e) {  // settings were checked at start; never stop the robot's service
     result.status = PathStatus::NotFound;
     result.reason = e.what();
   }
   if (result.found()) {
     follower_->follow(std::move(result.poses));
-    follower_->set_goal_tolerance(std::min(options_.path.follower.pursuit.goal_tolerance_m, 0.5 * target->tolerance_m));
+    follower_->set_goal_tolerance(
+        std::min(options_.path.follower.pursuit.goal_tolerance_m, 0.5 * target->tolerance_m));
     path_wanted_ = false;
-    spdlog::info("goal {} ({}): {} {} path of {:.2f} m in {:.1f} ms{}", target->id, why, to_string(options_.path.ompl.curve),
-                 options_.path.ompl.planner, result.length_m, result.planning_s * 1e3,
-                 result.route_guided ? " (route guide)" : "");
+    spdlog::info("goal {} ({}): {} {} path of {:.2f} m in {:.1f} ms{}", target->id, why,
+                 to_string(options_.path.ompl.curve), options_.path.ompl.planner, result.length_m,
+                 result.planning_s * 1e3, result.route_guided ? " (route guide)" : "");
     return;
   }
   follower_->clear();
   if (result.status == PathStatus::StartBlocked) {
     // Pushed into the inflation margin (or spawned there): the grid controller escapes, then the
     // next tick plans again.
-    spdlog::info("goal {} ({}): start in the margin, escaping before planning: {}", target->id, why, result.reason);
+    spdlog::info("goal {} ({}): start in the margin, escaping before planning: {}", target->id, why,
+                 result.reason);
     return;
   }
   path_wanted_ = false;
   const std::vector<std::string> closed = doors_.closed();
-  std::string reason = "no " + std::string(to_string(options_.path.ompl.curve)) + " path: " + result.reason;
+  std::string reason =
+      "no " + std::string(to_string(options_.path.ompl.curve)) + " path: " + result.reason;
   if (!closed.empty()) reason += " (" + describe_closed_doors(closed) + ")";
   publish(tracker_->block(std::move(reason)));
 }
 
-std::optional<VelocityCommand> BehaviorNode::follow_path(const geometry::Pose2& pose, double now_s) {
+std::optional<VelocityCommand> BehaviorNode::follow_path(const geometry::Pose2& pose,
+                                                         double now_s) {
   if (path_wanted_) plan_path("retry");
   if (!tracker_->active() || !follower_->has_path()) return std::nullopt;
   FollowStep step = follower_->step(pose, range_rays());
-  if (step.outcome == FollowOutcome::Strayed && now_s - last_plan_s_ >= options_.path.replan_interval_s) {
-    spdlog::info("goal {}: {:.2f} m off the path; replanning", tracker_->target()->id, step.off_path_m);
+  if (step.outcome == FollowOutcome::Strayed &&
+      now_s - last_plan_s_ >= options_.path.replan_interval_s) {
+    spdlog::info("goal {}: {:.2f} m off the path; replanning", tracker_->target()->id,
+                 step.off_path_m);
     plan_path("strayed");
     if (!tracker_->active() || !follower_->has_path()) return std::nullopt;
     step = follower_->step(pose, range_rays());
   }
   // At the path's end but not yet within the goal's tolerance: the grid controller finishes.
-  if (step.outcome == FollowOutcome::Arrived || step.outcome == FollowOutcome::NoPath) return std::nullopt;
+  if (step.outcome == FollowOutcome::Arrived || step.outcome == FollowOutcome::NoPath)
+    return std::nullopt;
   return step.command;
 }
 

@@ -241,9 +241,8 @@ std::optional<CurveModel> parse_curve_model(const std::string& text) {
 // LazyPRMstar is not offered: in OMPL 1.5.2 (Debian 12) its solve() leaks the states it clones
 // (LeakSanitizer, in libompl's own frames), so every query would leak.
 const std::vector<std::string>& ompl_planner_names() {
-  static const std::vector<std::string> names{"RRTConnect",      "RRT",     "RRTstar",
-                                              "InformedRRTstar", "PRMstar",
-                                              "BITstar",         "KPIECE1"};
+  static const std::vector<std::string> names{"RRTConnect", "RRT",     "RRTstar", "InformedRRTstar",
+                                              "PRMstar",    "BITstar", "KPIECE1"};
   return names;
 }
 
@@ -379,10 +378,10 @@ PathResult OmplPathPlanner::plan(const PathRequest& request) {
       const ob::PlannerStatus solved = ss.solve(
           ob::timedPlannerTerminationCondition(std::max(1e-4, plan_s - seconds_since(t0))));
       if (solved != ob::PlannerStatus::EXACT_SOLUTION) {
-        PathResult r = failure(PathStatus::NotFound,
-                               std::string(settings_.planner) + " found no path in " +
-                                   std::to_string(request.budget_s) + " s (" + solved.asString() +
-                                   ")");
+        PathResult r =
+            failure(PathStatus::NotFound, std::string(settings_.planner) + " found no path in " +
+                                              std::to_string(request.budget_s) + " s (" +
+                                              solved.asString() + ")");
         r.planning_s = seconds_since(t0);
         return r;
       }

@@ -8,7 +8,9 @@ namespace autonomy::behavior {
 
 namespace {
 
-bool positive_finite(double v) { return std::isfinite(v) && v > 0.0; }
+bool positive_finite(double v) {
+  return std::isfinite(v) && v > 0.0;
+}
 
 }  // namespace
 

@@ -1,7 +1,7 @@
 // The tracking schema: an OMPL path followed through a doorway within the limits, stray
 // detection, and the obstacle-avoidance schema beside it.
-#include "services/behavior/core/path/ompl_path_planner.hpp"
 #include "services/behavior/core/path/path_follower.hpp"
+#include "services/behavior/core/path/ompl_path_planner.hpp"
 
 #include <gtest/gtest.h>
 
@@ -49,7 +49,8 @@ TEST(PathFollower, DrivesAReedsSheppPathThroughTheDoorwayWithinTheLimits) {
   for (int tick = 0; tick < 3000; ++tick) {
     step = follower.step(pose, {});
     if (step.outcome == FollowOutcome::Arrived) break;
-    EXPECT_NE(step.outcome, FollowOutcome::Strayed) << "tick " << tick << " off " << step.off_path_m;
+    EXPECT_NE(step.outcome, FollowOutcome::Strayed)
+        << "tick " << tick << " off " << step.off_path_m;
     const auto& c = step.command;
     EXPECT_EQ(c.vy, 0.0);
     EXPECT_GE(c.vx, 0.0);
@@ -59,7 +60,8 @@ TEST(PathFollower, DrivesAReedsSheppPathThroughTheDoorwayWithinTheLimits) {
     pose.y += c.vx * std::sin(pose.theta) * 0.05;
     pose.theta = geometry::wrap_angle(pose.theta + c.omega * 0.05);
     // The robot's 0.3 m disc never touches a wall (the path keeps 0.35 m; tracking error < 5 cm).
-    for (const auto& o : w.obstacles) ASSERT_GE(geometry::distance(o, pose.position()), 0.3) << "tick " << tick;
+    for (const auto& o : w.obstacles)
+      ASSERT_GE(geometry::distance(o, pose.position()), 0.3) << "tick " << tick;
     if (std::abs(pose.x - 5.0) < 0.1) passed_doorway = true;
   }
   EXPECT_EQ(step.outcome, FollowOutcome::Arrived);
