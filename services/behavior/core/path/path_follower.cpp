@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 namespace autonomy::behavior {
@@ -13,6 +14,22 @@ bool positive_finite(double v) {
 }
 
 }  // namespace
+
+std::vector<std::vector<geometry::Pose2>> split_at_cusps(const std::vector<geometry::Pose2>& path) {
+  std::vector<std::vector<geometry::Pose2>> legs;
+  if (path.empty()) return legs;
+  legs.push_back({path.front()});
+  std::optional<geometry::Vec2> last_step;  // the last motion longer than a millimetre
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    const geometry::Vec2 step = path[i].position() - path[i - 1].position();
+    if (step.norm() > 1e-3) {
+      if (last_step && last_step->dot(step) < 0.0) legs.push_back({path[i - 1]});
+      last_step = step;
+    }
+    legs.back().push_back(path[i]);
+  }
+  return legs;
+}
 
 const char* to_string(FollowOutcome o) {
   switch (o) {
@@ -43,6 +60,8 @@ PathFollower::PathFollower(Kinematics kinematics, MotionLimits limits, PathFollo
 
 void PathFollower::follow(std::vector<geometry::Pose2> path) {
   path_ = std::move(path);
+  legs_ = split_at_cusps(path_);
+  leg_ = 0;
   progress_ = 0;
 }
 
@@ -56,10 +75,15 @@ FollowStep PathFollower::step(const geometry::Pose2& pose, const std::vector<Ran
       !std::isfinite(pose.theta)) {
     return out;
   }
-  const PursuitStep p = pure_pursuit(path_, progress_, pose, kinematics_, limits_, config_.pursuit);
+  PursuitStep p = pure_pursuit(legs_[leg_], progress_, pose, kinematics_, limits_, config_.pursuit);
+  // At a cusp: on to the next leg (a leg's end is the next one's start).
+  while (p.arrived && leg_ + 1 < legs_.size()) {
+    ++leg_;
+    p = pure_pursuit(legs_[leg_], 0, pose, kinematics_, limits_, config_.pursuit);
+  }
   progress_ = p.progress;
   out.progress = p.progress;
-  out.off_path_m = (path_[p.progress].position() - pose.position()).norm();
+  out.off_path_m = (legs_[leg_][p.progress].position() - pose.position()).norm();
   if (p.arrived) {
     out.outcome = FollowOutcome::Arrived;
     return out;

@@ -6,6 +6,11 @@
 // the map does not have) bends and slows the pursuit's command. Commands never exceed the limits
 // and a unicycle never reverses (the avoid vote can stop it, not back it up).
 //
+// Cusps (a Reeds-Shepp path's switches between forward and reverse) split the path into legs,
+// followed one after the other: the robot reaches each cusp before it takes the next leg, so the
+// look-ahead never jumps across a cusp to the leg that doubles back. A unicycle drives a reverse
+// leg forward, turning in place first (pure pursuit is forward-only).
+//
 // Pure and deterministic: the same path, pose and rays always give the same command.
 #include "services/behavior/core/path/pure_pursuit.hpp"
 #include "services/behavior/core/schemas/avoid_obstacles.hpp"
@@ -40,8 +45,12 @@ struct FollowStep {
   VelocityCommand command;
   FollowOutcome outcome = FollowOutcome::NoPath;
   double off_path_m = 0.0;   // distance to the closest path pose
-  std::size_t progress = 0;  // index of that pose
+  std::size_t progress = 0;  // index of that pose in the leg being followed
 };
+
+// The path cut at its cusps (where the motion turns back on itself); each leg keeps its end
+// pose, which is the next leg's first.
+std::vector<std::vector<geometry::Pose2>> split_at_cusps(const std::vector<geometry::Pose2>& path);
 
 class PathFollower {
  public:
@@ -52,6 +61,9 @@ class PathFollower {
   void follow(std::vector<geometry::Pose2> path);
   void clear() { follow({}); }
   bool has_path() const { return !path_.empty(); }
+  // Legs between cusps (1 for a path without one) and the one being followed.
+  std::size_t leg_count() const { return legs_.size(); }
+  std::size_t leg() const { return leg_; }
   const std::vector<geometry::Pose2>& path() const { return path_; }
   // Arrival radius at the path's end (the goal's tolerance may be tighter than the default).
   void set_goal_tolerance(double metres);
@@ -72,7 +84,9 @@ class PathFollower {
   PathFollowerConfig config_;
   AvoidObstacles avoid_;
   std::vector<geometry::Pose2> path_;
-  std::size_t progress_ = 0;
+  std::vector<std::vector<geometry::Pose2>> legs_;
+  std::size_t leg_ = 0;
+  std::size_t progress_ = 0;  // along legs_[leg_]
 };
 
 }  // namespace autonomy::behavior

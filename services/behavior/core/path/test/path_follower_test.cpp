@@ -119,6 +119,45 @@ TEST(PathFollower, AvoidSchemaSlowsAndTurnsAwayFromWhatTheRaysSee) {
   EXPECT_LE(std::hypot(side.command.vx, side.command.vy), kLimits.max_speed_mps + 1e-12);
 }
 
+// A path that drives east to (3, 1), then backs up north-west to (2, 2): two legs. The robot
+// reaches the cusp before it takes the second leg, and arrives at the end.
+TEST(PathFollower, ReachesEachCuspBeforeTheLegThatDoublesBack) {
+  std::vector<geometry::Pose2> path = straight_path(2.0);  // (1, 1) to (3, 1), heading east
+  for (int k = 1; k <= 28; ++k) {
+    const double t = k / 28.0;
+    path.push_back({3.0 - t, 1.0 + t, 0.0});  // reversing: heading stays east, motion goes back
+  }
+  const auto legs = split_at_cusps(path);
+  ASSERT_EQ(legs.size(), 2u);
+  EXPECT_NEAR(legs[0].back().x, 3.0, 1e-9);
+  EXPECT_NEAR(legs[1].front().x, 3.0, 1e-9);
+  EXPECT_EQ(legs[0].size() + legs[1].size(), path.size() + 1);
+  EXPECT_EQ(split_at_cusps(straight_path(2.0)).size(), 1u);
+
+  PathFollower follower(Kinematics::Unicycle, kLimits);
+  follower.follow(path);
+  EXPECT_EQ(follower.leg_count(), 2u);
+  geometry::Pose2 pose{1.0, 1.0, 0.0};
+  double closest_to_cusp = 1e9;
+  FollowStep step;
+  for (int tick = 0; tick < 2000; ++tick) {
+    step = follower.step(pose, {});
+    if (step.outcome == FollowOutcome::Arrived) break;
+    if (follower.leg() == 0) closest_to_cusp = std::min(closest_to_cusp, std::hypot(pose.x - 3.0, pose.y - 1.0));
+    const auto& c = step.command;
+    EXPECT_GE(c.vx, 0.0);
+    EXPECT_LE(std::abs(c.omega), kLimits.max_omega_rps + 1e-12);
+    pose.x += c.vx * std::cos(pose.theta) * 0.05;
+    pose.y += c.vx * std::sin(pose.theta) * 0.05;
+    pose.theta = geometry::wrap_angle(pose.theta + c.omega * 0.05);
+  }
+  EXPECT_EQ(step.outcome, FollowOutcome::Arrived);
+  EXPECT_EQ(follower.leg(), 1u);
+  EXPECT_LE(closest_to_cusp, 0.15);
+  EXPECT_NEAR(pose.x, 2.0, 0.15);
+  EXPECT_NEAR(pose.y, 2.0, 0.15);
+}
+
 TEST(PathFollower, RejectsBadLimitsAndSettings) {
   EXPECT_THROW(PathFollower(Kinematics::Unicycle, {0.0, 1.0}), std::invalid_argument);
   PathFollowerConfig c;
