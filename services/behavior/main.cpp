@@ -79,7 +79,7 @@ int main(int argc, char** argv) {
         auto* mission = app.add_option("--mission", mission_file,
                                        "Run this mission (idl/mission.proto text) instead of taking goals");
         // A mission builds its own plans from its plan sets and takes no goals: these would be ignored.
-        for (const char* goal_mode_only : {"--goal", "--constraint", "--plans", "--layers"})
+        for (const char* goal_mode_only : {"--goal", "--constraint", "--plans", "--layers", "--path-planner"})
           mission->excludes(app.get_option(goal_mode_only));
       },
       [&](service::Service& service) {

@@ -9,6 +9,7 @@
 #include <spdlog/spdlog.h>
 
 #include <cmath>
+#include <string_view>
 
 namespace autonomy::behavior {
 
@@ -82,8 +83,10 @@ void BehaviorNode::plan_path(const char* why) {
   if (result.status == PathStatus::StartBlocked) {
     // Pushed into the inflation margin (or spawned there): the grid controller escapes, then the
     // next tick plans again.
-    spdlog::info("goal {} ({}): start in the margin, escaping before planning: {}", target->id, why,
-                 result.reason);
+    // Once at info: the retries, every tick until the robot is out, at debug.
+    const auto level = std::string_view(why) == "retry" ? spdlog::level::debug : spdlog::level::info;
+    spdlog::log(level, "goal {} ({}): start in the margin, escaping before planning: {}", target->id, why,
+                result.reason);
     return;
   }
   path_wanted_ = false;
