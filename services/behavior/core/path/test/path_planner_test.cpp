@@ -125,6 +125,14 @@ TEST(OmplPathPlanner, RouteGuideGivesAShortReedsSheppPathWithoutSampling) {
   expect_clear_through_doorway(w, r);
   EXPECT_TRUE(r.route_guided);
   EXPECT_LE(r.length_m, 1.1 * optimum.length_m);
+  // Kinematics: no turn tighter than the turning radius (Reeds-Shepp headings are continuous,
+  // through cusps too).
+  for (std::size_t i = 1; i < r.poses.size(); ++i) {
+    const double ds = (r.poses[i].position() - r.poses[i - 1].position()).norm();
+    if (ds < 1e-4) continue;
+    EXPECT_LE(std::abs(geometry::wrap_angle(r.poses[i].theta - r.poses[i - 1].theta)) / ds, 1.0 / 0.4 * 1.02)
+        << "pose " << i;
+  }
   EXPECT_FALSE(first_collision(*grid, r.poses, 0.05).has_value());
 
   s.route_guide = false;
