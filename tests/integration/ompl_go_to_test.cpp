@@ -8,6 +8,7 @@
 //    180    OmplGoToTest.ReachesAGoalThroughADoorwayOnAnOmplPath
 //    181    OmplGoToTest.GoalInAnObstacleEndsBlockedWithTheReason
 //    182    OmplGoToTest.DoorSeenClosedBlocksTheGoalWithTheDoorNamed
+//    183    OmplGoToTest.CourierDeliversThePapersTwoJobsOnOmplPaths
 #include "tests/support/process_test.hpp"
 
 #include "simulator/scenario/scenario_loader.hpp"
@@ -68,6 +69,7 @@ class OmplGoToTest : public ProcessTest {
     goal_writer_ = std::make_unique<dds::Writer<msg::NavGoal>>(participant(), *goal_topic_);
     ASSERT_TRUE(goal_writer_->wait_for_readers(1, kDeadline));
   }
+  std::string behavior_log() const { return dir().file("behavior-rhino.out"); }
   std::vector<msg::GoalStatus> of_goal(const std::string& id) {
     goals_->poll();
     return goals_->matching([&](const msg::GoalStatus& g) { return g.goal_id == id; });
@@ -191,6 +193,68 @@ TEST_F(OmplGoToTest, DoorSeenClosedBlocksTheGoalWithTheDoorNamed) {
       EXPECT_GT(s.y, 7.0) << "tick " << s.tick;
     }
   }
+}
+
+// The courier paper's example (deploy/courier-demo.sh --path-planner ompl, in lockstep): rhino
+// on OMPL paths with the courier scheduler; A-120 closes at 15 s and opens at 40 s. Both jobs
+// complete, the red letter opportunistically.
+TEST_F(OmplGoToTest, CourierDeliversThePapersTwoJobsOnOmplPaths) {
+  join(183);
+  Recorder<msg::Heartbeat> beats(participant(), dds::topics::heartbeat);
+  Recorder<msg::CourierJobStatus> jobs(participant(), dds::topics::courier_job_status);
+  Recorder<msg::CourierReply> replies(participant(), dds::topics::courier_reply);
+  dds::Topic<msg::CourierCommand> command_topic(participant(), dds::topics::courier_command);
+  dds::Writer<msg::CourierCommand> commands(participant(), command_topic);
+  dds::Topic<msg::LockstepRegistration> registration_topic(participant(), dds::topics::lockstep_registration);
+  dds::Writer<msg::LockstepRegistration> registration(participant(), registration_topic);
+  registration.write({"test/commands", true});  // the world waits until the commands are in
+
+  start_simulator({"--config", kOffice, "--mode", "lockstep", "--wait-for", "behavior/rhino", "--wait-for",
+                   "courier/main", "--wait-for", "test/commands"});
+  // The shipped set's settings (deploy/sets/courier-ompl.set).
+  start_behavior("rhino", {"--config", kOffice, "--path-planner", "ompl", "--ompl-space", "reeds-shepp",
+                           "--ompl-planner", "RRTConnect", "--ompl-budget-ms", "50", "--turning-radius", "0.3"});
+  auto& courier = start("courier", AUTONOMY_COURIER_BIN,
+                        {"--config", kOffice, "--journal", dir().file("courier.db"), "--domain",
+                         std::to_string(domain_), "--log-dir", dir().path()});
+  ASSERT_TRUE(await_ready(beats, courier));
+  ASSERT_TRUE(commands.wait_for_readers(1, kDeadline));
+  const auto send = [&](const std::string& id, const std::string& text) {
+    msg::CourierCommand c;
+    c.command_id = id;
+    c.requester = "test";
+    c.text = text;
+    commands.write(c);
+  };
+  send("c1", "put the red letter on the meeting table in room A-111 on the desk in room A-120 within 1 minute");
+  send("c2", "deliver the green book from the librarian's desk in room A-110 to the desk in room A-114");
+  ASSERT_TRUE(await("both commands answered", [&] {
+    replies.poll();
+    return replies.all().size() >= 2;
+  }));
+  for (const auto& r : replies.all()) ASSERT_TRUE(r.accepted) << r.command_id << ": " << r.reason;
+  registration.write({"test/commands", false});
+
+  const auto in_state = [&](const std::string& job, msg::JobState state) {
+    for (const auto& j : jobs.all())
+      if (j.job_id == job && j.state == state) return true;
+    return false;
+  };
+  const auto ended = [&](const std::string& job) {
+    return in_state(job, msg::JobState::Completed) || in_state(job, msg::JobState::Failed) ||
+           in_state(job, msg::JobState::Cancelled);
+  };
+  std::string story;
+  ASSERT_TRUE(await("both jobs ended", [&] {
+    jobs.poll();
+    return ended("job-1") && ended("job-2");
+  }, 150s)) << read_file(behavior_log());
+  for (const auto& j : jobs.all())
+    story += j.job_id + " " + msg::to_string(j.state) + (j.reason.empty() ? "" : " (" + j.reason + ")") + "\n";
+  EXPECT_TRUE(in_state("job-1", msg::JobState::Opportunistic)) << story;
+  EXPECT_TRUE(in_state("job-1", msg::JobState::Completed)) << story;
+  EXPECT_TRUE(in_state("job-2", msg::JobState::Completed)) << story;
+  EXPECT_NE(read_file(behavior_log()).find("reeds_shepp RRTConnect path"), std::string::npos);
 }
 
 }  // namespace
