@@ -69,20 +69,23 @@ int main(int argc, char** argv) {
   seed_ompl(seed);
 
   std::vector<Config> configs;
-  const auto add = [&](CurveModel c, const std::string& planner, bool guide = true) {
+  const auto add = [&](CurveModel c, const std::string& planner, bool guide = true, bool spin = false) {
     OmplPlannerSettings s;
     s.curve = c;
     s.planner = planner;
     s.turning_radius_m = 0.4;
     s.route_guide = guide;
-    configs.push_back(
-        {std::string(to_string(c)) + "/" + planner + (guide ? "" : " (no route guide)"), s});
+    s.turn_in_place_at_start = spin;
+    configs.push_back({std::string(to_string(c)) + "/" + planner + (guide ? "" : " (no route guide)") +
+                           (spin ? " (turn in place first)" : ""),
+                       s});
   };
   // The baseline of the route guide: the same planners sampling from the start.
   add(CurveModel::ReedsShepp, "RRTConnect", false);
   add(CurveModel::ReedsShepp, "RRTstar", false);
   add(CurveModel::Holonomic, "RRTConnect", false);
   add(CurveModel::ReedsShepp, "RRTConnect");
+  add(CurveModel::ReedsShepp, "RRTConnect", true, true);
   add(CurveModel::ReedsShepp, "RRTstar");
   add(CurveModel::ReedsShepp, "BITstar");
   add(CurveModel::Holonomic, "RRTConnect");

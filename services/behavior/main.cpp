@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   std::string path_planner = "grid";
   std::string ompl_space = "reeds-shepp";
   double ompl_budget_ms = 50.0;
+  bool turn_in_place = true;
   return service::run_service(
       argc, argv, "behavior", "Behavior controller for one robot: goals in, velocity commands out",
       service::InstanceFlag::Robot,
@@ -73,6 +74,9 @@ int main(int argc, char** argv) {
                        "Minimum turning radius of reeds-shepp and dubins paths in m")
             ->check(CLI::Range(0.01, 100.0))
             ->capture_default_str();
+        app.add_option("--ompl-turn-in-place", turn_in_place,
+                       "Unicycles turn on the spot at the start of a path instead of manoeuvring (true/false)")
+            ->capture_default_str();
         app.add_option("--ompl-route-guide", options.path.ompl.route_guide,
                        "Try the grid route as a guide before sampling (true/false)")
             ->capture_default_str();
@@ -89,6 +93,7 @@ int main(int argc, char** argv) {
                                   : ompl_space == "se2"  ? behavior::CurveModel::Holonomic
                                                          : behavior::CurveModel::ReedsShepp;
         options.path.budget_s = ompl_budget_ms * 1e-3;
+        options.path.unicycle_turns_in_place = turn_in_place;
         if (auto problem = behavior::settings_problem(options.path.ompl)) throw std::runtime_error("--ompl-*: " + *problem);
         if (options.path.planner == behavior::GoToPlanner::Ompl && options.path.ompl.curve == behavior::CurveModel::Dubins)
           spdlog::warn("--ompl-space dubins: OMPL 1.5.2's Dubins space can abort on an internal assertion (dubinsRSR)");

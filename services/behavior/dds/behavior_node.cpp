@@ -212,11 +212,14 @@ void BehaviorNode::become_ready_when_possible() {
   controller_.emplace(st.kinematics == msg::Kinematics::Holonomic ? Kinematics::Holonomic : Kinematics::Unicycle,
                       MotionLimits{st.max_speed, st.max_omega}, options_.go_to);
   if (options_.path.planner == GoToPlanner::Ompl) {
+    options_.path.ompl.turn_in_place_at_start =
+        options_.path.unicycle_turns_in_place && controller_->kinematics() == Kinematics::Unicycle;
     follower_.emplace(controller_->kinematics(), controller_->limits(), options_.path.follower);
     update_map_obstacles();
-    spdlog::info("robot {}: go-to paths by OMPL {} in {} (turning radius {:.2f} m, budget {:.0f} ms)",
+    spdlog::info("robot {}: go-to paths by OMPL {} in {} (turning radius {:.2f} m, budget {:.0f} ms{})",
                  options_.robot_id, options_.path.ompl.planner, to_string(options_.path.ompl.curve),
-                 options_.path.ompl.turning_radius_m, options_.path.budget_s * 1e3);
+                 options_.path.ompl.turning_radius_m, options_.path.budget_s * 1e3,
+                 options_.path.ompl.turn_in_place_at_start ? ", turning in place at the start" : "");
   }
   spdlog::info("robot {} ready at ({:.2f}, {:.2f}) on map '{}'", options_.robot_id, st.x, st.y, map_->name);
   service_.set_ready();

@@ -55,6 +55,9 @@ struct GoToPathOptions {
   double budget_s = 0.05;         // > 0: planning time per (re)plan
   PathFollowerConfig follower;
   double replan_interval_s = 1.0;  // a robot that strayed replans at most this often
+  // A unicycle's paths start with a turn in place (OmplPlannerSettings::turn_in_place_at_start);
+  // holonomic robots and robots of other kinds ignore it.
+  bool unicycle_turns_in_place = true;
 };
 
 struct BehaviorNodeOptions {

@@ -341,7 +341,16 @@ PathResult OmplPathPlanner::plan(const PathRequest& request) {
 
   ob::ScopedState<ob::SE2StateSpace> start(impl_->space), goal(impl_->space);
   start->setXY(request.start.x, request.start.y);
-  start->setYaw(request.start.theta);
+  // A robot that turns on the spot starts its curves facing along the route (the path's first
+  // pose is then the turn in place).
+  const bool spin_first =
+      settings_.turn_in_place_at_start && settings_.curve != CurveModel::Holonomic;
+  start->setYaw(
+      spin_first
+          ? route_heading(route.poses, 0,
+                          std::max<std::size_t>(
+                              1, static_cast<std::size_t>(0.3 / grid.geometry().resolution_m())))
+          : request.start.theta);
   goal->setXY(request.goal.x(), request.goal.y());
   goal->setYaw(request.goal_heading ? *request.goal_heading
                                     : arrival_heading(route.poses, request.start.theta));
@@ -410,6 +419,7 @@ PathResult OmplPathPlanner::plan(const PathRequest& request) {
     ob::ScopedState<ob::SE2StateSpace> between(impl_->space);
     const auto* reeds_shepp = dynamic_cast<const ob::ReedsSheppStateSpace*>(impl_->space.get());
     const auto* dubins = dynamic_cast<const ob::DubinsStateSpace*>(impl_->space.get());
+    if (spin_first) r.poses.push_back(request.start);
     r.poses.push_back(pose_of(path.getState(0)));
     for (std::size_t i = 1; i < path.getStateCount(); ++i) {
       const ob::State* a = path.getState(i - 1);

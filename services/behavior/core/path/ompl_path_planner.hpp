@@ -54,6 +54,10 @@ struct OmplPlannerSettings {
   // that needs room to turn, a route too tight for the turning radius).
   bool route_guide = true;
   double route_guide_reach_m = 6.0;  // > 0
+  // Unicycles turn on the spot: the curves start at the start position facing along the grid
+  // route, after a turn in place (the path's first two poses share the position). Without it a
+  // Reeds-Shepp path starts with the manoeuvres a car needs to turn (cusps).
+  bool turn_in_place_at_start = false;
 };
 
 // The planner names `OmplPlannerSettings::planner` accepts, in a fixed order.

@@ -148,6 +148,26 @@ TEST(OmplPathPlanner, RouteGuideGivesAShortReedsSheppPathWithoutSampling) {
   EXPECT_THROW(OmplPathPlanner(grid, s), std::invalid_argument);
 }
 
+// A unicycle facing away from its route turns in place first: the path's first two poses share
+// the start position, the second faces along the route, and the rest is the guided curve.
+TEST(OmplPathPlanner, TurnInPlaceAtStartFacesTheRouteBeforeTheCurves) {
+  const auto w = walled_room();
+  OmplPlannerSettings s;
+  s.turning_radius_m = 0.4;
+  s.turn_in_place_at_start = true;
+  OmplPathPlanner planner(grid_of(w), s);
+  PathRequest q = through_doorway();
+  q.start.theta = M_PI;  // the route leaves towards the doorway, up and to the right
+  const auto r = planner.plan(q);
+  expect_clear_through_doorway(w, r);
+  ASSERT_GE(r.poses.size(), 3u);
+  EXPECT_NEAR(r.poses[0].theta, M_PI, 1e-9);
+  EXPECT_NEAR(r.poses[1].x, q.start.x, 1e-9);
+  EXPECT_NEAR(r.poses[1].y, q.start.y, 1e-9);
+  EXPECT_LT(std::abs(geometry::wrap_angle(r.poses[1].theta)), M_PI / 2);  // facing right now
+  EXPECT_TRUE(r.route_guided);
+}
+
 TEST(OmplPathPlanner, EveryPlannerNameFindsTheDoorway) {
   const auto w = walled_room();
   for (const auto& name : ompl_planner_names()) {
