@@ -127,13 +127,17 @@ TEST(OmplPathPlanner, RouteGuideGivesAShortReedsSheppPathWithoutSampling) {
   EXPECT_LE(r.length_m, 1.1 * optimum.length_m);
   // Kinematics: no turn tighter than the turning radius. Steps across a cusp are left out: there
   // the chord between two poses is shorter than the way driven (forward, then back).
-  const auto step = [&](std::size_t i) { return r.poses[i].position() - r.poses[i - 1].position(); };
+  const auto step = [&](std::size_t i) -> geometry::Vec2 {
+    return r.poses[i].position() - r.poses[i - 1].position();
+  };
   for (std::size_t i = 1; i < r.poses.size(); ++i) {
     const double ds = step(i).norm();
     if (ds < 1e-4) continue;
-    if ((i > 1 && step(i - 1).dot(step(i)) < 0.0) || (i + 1 < r.poses.size() && step(i + 1).dot(step(i)) < 0.0))
+    if ((i > 1 && step(i - 1).dot(step(i)) < 0.0) ||
+        (i + 1 < r.poses.size() && step(i + 1).dot(step(i)) < 0.0))
       continue;
-    EXPECT_LE(std::abs(geometry::wrap_angle(r.poses[i].theta - r.poses[i - 1].theta)) / ds, 1.0 / 0.4 * 1.02)
+    EXPECT_LE(std::abs(geometry::wrap_angle(r.poses[i].theta - r.poses[i - 1].theta)) / ds,
+              1.0 / 0.4 * 1.02)
         << "pose " << i;
   }
   EXPECT_FALSE(first_collision(*grid, r.poses, 0.05).has_value());
