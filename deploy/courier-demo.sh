@@ -8,23 +8,39 @@
 # Options: --domain N (default $AUTONOMY_DOMAIN or 0), --no-setup (skip install and build),
 #          --exit-when-done (stop everything once both jobs ended; exit 0 when both completed),
 #          --fleet (two couriers: deploy/sets/courier-fleet.set adds rhino2 at the hallway's east end).
+#          --path-planner grid|ompl (rhino's go-to paths: the grid field's controller, default, or
+#          OMPL Reeds-Shepp paths followed by pure pursuit: deploy/sets/courier-ompl.set).
 set -euo pipefail
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
 domain=${AUTONOMY_DOMAIN:-0}
 setup=1
 exit_when_done=0
-set_name=courier
+fleet=0
+path_planner=grid
 while [ $# -gt 0 ]; do
   case $1 in
     --domain) domain=$2; shift 2 ;;
     --no-setup) setup=0; shift ;;
     --exit-when-done) exit_when_done=1; shift ;;
-    --fleet) set_name=courier-fleet; shift ;;
-    -h|--help) sed -n '2,11p' "${BASH_SOURCE[0]}"; exit 0 ;;
+    --fleet) fleet=1; shift ;;
+    --path-planner)
+      case ${2:-} in
+        grid) path_planner=grid ;;
+        ompl) path_planner=ompl ;;
+        *) echo "courier-demo: --path-planner takes grid or ompl, not '${2:-}'" >&2; exit 2 ;;
+      esac
+      shift 2 ;;
+    -h|--help) sed -n '2,14p' "${BASH_SOURCE[0]}"; exit 0 ;;
     *) echo "courier-demo: unknown option $1 (see --help)" >&2; exit 2 ;;
   esac
 done
+case $fleet,$path_planner in
+  0,grid) set_name=courier ;;
+  0,ompl) set_name=courier-ompl ;;
+  1,grid) set_name=courier-fleet ;;
+  *) echo "courier-demo: --fleet runs on the grid controller only (no courier-fleet set with OMPL yet)" >&2; exit 2 ;;
+esac
 
 if [ $setup -eq 1 ]; then
   bash "$repo/deploy/install-deps.sh"

@@ -17,6 +17,10 @@ int main(int argc, char** argv) {
   std::string layers_file;
   std::string mission_file;
   std::vector<std::string> capabilities;
+  std::string path_planner = "grid";
+  std::string ompl_space = "reeds-shepp";
+  double ompl_budget_ms = 50.0;
+  bool turn_in_place = true;
   return service::run_service(
       argc, argv, "behavior", "Behavior controller for one robot: goals in, velocity commands out",
       service::InstanceFlag::Robot,
@@ -58,15 +62,49 @@ int main(int argc, char** argv) {
             ->check(CLI::Validator(
                 [](std::string& s) { return s.empty() || s.size() > 64 ? std::string("1..64 characters") : std::string(); },
                 "NAME"));
+        app.add_option("--path-planner", path_planner,
+                       "Go-to paths: grid (the cost-to-go field's controller) or ompl (a continuous path "
+                       "planned in SE(2), followed by pure pursuit)")
+            ->check(CLI::IsMember({"grid", "ompl"}))
+            ->capture_default_str();
+        app.add_option("--ompl-planner", options.path.ompl.planner,
+                       "OMPL planner by name (RRTConnect, RRT, RRTstar, InformedRRTstar, PRMstar, BITstar, KPIECE1)")
+            ->capture_default_str();
+        app.add_option("--ompl-space", ompl_space,
+                       "OMPL state space: reeds-shepp (forward and reverse), dubins (forward only), se2 (holonomic)")
+            ->check(CLI::IsMember({"reeds-shepp", "dubins", "se2"}))
+            ->capture_default_str();
+        app.add_option("--ompl-budget-ms", ompl_budget_ms, "Planning time per go-to path in ms")
+            ->check(CLI::Range(1.0, 60000.0))
+            ->capture_default_str();
+        app.add_option("--turning-radius", options.path.ompl.turning_radius_m,
+                       "Minimum turning radius of reeds-shepp and dubins paths in m")
+            ->check(CLI::Range(0.01, 100.0))
+            ->capture_default_str();
+        app.add_option("--ompl-turn-in-place", turn_in_place,
+                       "Unicycles turn on the spot at the start of a path instead of manoeuvring (true/false)")
+            ->capture_default_str();
+        app.add_option("--ompl-route-guide", options.path.ompl.route_guide,
+                       "Try the grid route as a guide before sampling (true/false)")
+            ->capture_default_str();
         auto* mission = app.add_option("--mission", mission_file,
                                        "Run this mission (idl/mission.proto text) instead of taking goals");
         // A mission builds its own plans from its plan sets and takes no goals: these would be ignored.
-        for (const char* goal_mode_only : {"--goal", "--constraint", "--plans", "--layers"})
+        for (const char* goal_mode_only : {"--goal", "--constraint", "--plans", "--layers", "--path-planner"})
           mission->excludes(app.get_option(goal_mode_only));
       },
       [&](service::Service& service) {
         options.robot_id = service.options().instance;
         service.set_capabilities(capabilities);
+        options.path.planner = path_planner == "ompl" ? behavior::GoToPlanner::Ompl : behavior::GoToPlanner::GridField;
+        options.path.ompl.curve = ompl_space == "dubins" ? behavior::CurveModel::Dubins
+                                  : ompl_space == "se2"  ? behavior::CurveModel::Holonomic
+                                                         : behavior::CurveModel::ReedsShepp;
+        options.path.budget_s = ompl_budget_ms * 1e-3;
+        options.path.unicycle_turns_in_place = turn_in_place;
+        if (auto problem = behavior::settings_problem(options.path.ompl)) throw std::runtime_error("--ompl-*: " + *problem);
+        if (options.path.planner == behavior::GoToPlanner::Ompl && options.path.ompl.curve == behavior::CurveModel::Dubins)
+          spdlog::warn("--ompl-space dubins: OMPL 1.5.2's Dubins space can abort on an internal assertion (dubinsRSR)");
         if (!start.empty()) options.start = geometry::Pose2{start[0], start[1], start.size() > 2 ? start[2] : 0.0};
         if (!goal.empty())
           options.initial_goal = msg::NavGoal{options.robot_id, "cli-goal", goal[0], goal[1], 0.0, goal_constraints};

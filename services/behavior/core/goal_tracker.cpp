@@ -137,6 +137,13 @@ GoalReport GoalTracker::reject(const std::string& goal_id, double x, double y, s
   return rejected(goal_id, geometry::Vec2(x, y), std::move(reason));
 }
 
+GoalReport GoalTracker::block(std::string reason) {
+  GoalReport report;
+  if (pursued_) end_pursuit(GoalState::Blocked, std::move(reason), report);
+  report.current = status_;
+  return report;
+}
+
 GoalReport GoalTracker::cancel(const std::string& goal_id, std::string reason) {
   GoalReport report;
   if (pursued_ && (goal_id.empty() || goal_id == pursued_->id)) {

@@ -90,6 +90,10 @@ class GoalTracker {
   // the same policy as a malformed goal: the pursued goal carries on.
   [[nodiscard]] GoalReport reject(const std::string& goal_id, double x, double y, std::string reason);
 
+  // Ends the pursued goal Blocked for a reason found outside the tracker (a path planner found no
+  // path within its budget). Without a pursued goal nothing changes.
+  [[nodiscard]] GoalReport block(std::string reason);
+
   // Cancels the pursued goal when goal_id is empty or names it: [Cancelled]. Otherwise no change.
   [[nodiscard]] GoalReport cancel(const std::string& goal_id, std::string reason);
 

@@ -1,5 +1,7 @@
 #include "services/behavior/dds/behavior_node.hpp"
 
+#include "services/behavior/dds/map_conversion.hpp"
+
 #include "common/msg/text_limits.hpp"
 
 #include "services/behavior/core/mission/plan_library.hpp"
@@ -29,67 +31,6 @@ msg::GoalState to_msg(GoalState s) {
   return msg::GoalState::Blocked;
 }
 
-const char* event_name(MissionEvent::Kind k) {
-  switch (k) {
-    case MissionEvent::Kind::Started: return "started";
-    case MissionEvent::Kind::Transition: return "transition";
-    case MissionEvent::Kind::PlanChosen: return "plan_chosen";
-    case MissionEvent::Kind::NoViablePlan: return "no_viable_plan";
-    case MissionEvent::Kind::Finished: return "finished";
-  }
-  return "?";
-}
-
-// The map sample as the planner's world. Shapes another process got wrong (a crossing polygon,
-// a raster whose cells do not add up) are left out with a warning rather than stopping the robot.
-WorldMap world_of(const msg::WorldMap& m) {
-  WorldMap w{m.width, m.height, {}, {}, {}, {}};
-  for (const auto& r : m.obstacles) {
-    if (r.valid() && std::isfinite(r.min_x) && std::isfinite(r.min_y) && std::isfinite(r.max_x) &&
-        std::isfinite(r.max_y)) {
-      w.obstacles.push_back(r);
-    } else {
-      spdlog::warn("map '{}': obstacle rectangle ({}, {})-({}, {}) is not valid; ignored", m.name, r.min_x, r.min_y,
-                   r.max_x, r.max_y);
-    }
-  }
-  for (const auto& p : m.polygons) {
-    geometry::Polygon polygon{p.name, {}};
-    for (const auto& v : p.vertices) polygon.vertices.emplace_back(v.x, v.y);
-    if (const auto problem = geometry::polygon_problem(polygon.vertices)) {
-      spdlog::warn("map '{}': polygon '{}' ignored: {}", m.name, p.name, *problem);
-      continue;
-    }
-    w.polygons.push_back(std::move(polygon));
-  }
-  for (const auto& r : m.rasters) {
-    const std::size_t cells = static_cast<std::size_t>(r.cols) * r.rows;
-    if (cells == 0 || r.blocked.size() != cells || !std::isfinite(r.resolution) || r.resolution <= 0.0 ||
-        !std::isfinite(r.origin_x) || !std::isfinite(r.origin_y)) {
-      spdlog::warn("map '{}': raster '{}' ignored: {} x {} cells at {} m, {} cell values", m.name, r.name, r.cols,
-                   r.rows, r.resolution, r.blocked.size());
-      continue;
-    }
-    auto raster = std::make_shared<grid::OccupancyRaster>(static_cast<int>(r.cols), static_cast<int>(r.rows),
-                                                          r.resolution, grid::RasterOrigin{r.origin_x, r.origin_y, 0.0});
-    for (int row = 0; row < raster->height(); ++row) {
-      for (int col = 0; col < raster->width(); ++col) {
-        if (r.blocked[raster->index({col, row})] != 0) raster->set_blocked({col, row}, true);
-      }
-    }
-    w.rasters.push_back(std::move(raster));
-  }
-  for (const auto& d : m.doors) {
-    if (d.id.empty() || !std::isfinite(d.x) || !std::isfinite(d.y) || !std::isfinite(d.width) || d.width <= 0.0 ||
-        !std::isfinite(d.heading)) {
-      spdlog::warn("map '{}': door '{}' ignored: doorway ({}, {}) width {} heading {}", m.name, d.id, d.x, d.y, d.width,
-                   d.heading);
-      continue;
-    }
-    w.doors.push_back({d.id, geometry::Vec2(d.x, d.y), d.width, d.heading});
-  }
-  return w;
-}
 
 }  // namespace
 
@@ -138,14 +79,28 @@ BehaviorNode::BehaviorNode(service::Service& service, BehaviorNodeOptions option
     }
   });
 
+  // The range scan: the mission's perception, and the avoid schema beside a planned path.
+  const bool follows_paths = !options_.mission && options_.path.planner == GoToPlanner::Ompl;
+  if (options_.mission || follows_paths) {
+    const auto& p = service.participant();
+    const std::string me = options_.robot_id;
+    scan_topic_ = std::make_unique<dds::Topic<msg::RangeScan>>(p, dds::topics::range_scan);
+    scan_reader_ = std::make_unique<dds::Reader<msg::RangeScan>>(p, *scan_topic_);
+    loop.on_samples<msg::RangeScan>(*scan_reader_, [this, me](auto samples) {
+      for (auto& s : samples)
+        if (s.valid && s.value.robot_id == me && (!scan_ || s.value.tick >= scan_->tick)) scan_ = std::move(s.value);
+    });
+  }
+  if (follows_paths) {
+    // Reproducible runs: OMPL takes a seed only before its first plan in the process.
+    seed_ompl(static_cast<std::uint32_t>(std::hash<std::string>{}(options_.robot_id)));
+  }
   if (options_.mission) {
     const auto& p = service.participant();
     pose_topic_ = std::make_unique<dds::Topic<msg::PoseEstimate>>(p, dds::topics::pose_estimate);
-    scan_topic_ = std::make_unique<dds::Topic<msg::RangeScan>>(p, dds::topics::range_scan);
     link_topic_ = std::make_unique<dds::Topic<msg::RadioLink>>(p, dds::topics::radio_link);
     inbox_topic_ = std::make_unique<dds::Topic<msg::TeamDelivery>>(p, dds::topics::team_inbox);
     pose_reader_ = std::make_unique<dds::Reader<msg::PoseEstimate>>(p, *pose_topic_);
-    scan_reader_ = std::make_unique<dds::Reader<msg::RangeScan>>(p, *scan_topic_);
     link_reader_ = std::make_unique<dds::Reader<msg::RadioLink>>(p, *link_topic_);
     inbox_reader_ = std::make_unique<dds::Reader<msg::TeamDelivery>>(p, *inbox_topic_);
     const std::string me = options_.robot_id;
@@ -153,10 +108,6 @@ BehaviorNode::BehaviorNode(service::Service& service, BehaviorNodeOptions option
       for (auto& s : samples)
         if (s.valid && s.value.robot_id == me && (!pose_estimate_ || s.value.tick >= pose_estimate_->tick))
           pose_estimate_ = std::move(s.value);
-    });
-    loop.on_samples<msg::RangeScan>(*scan_reader_, [this, me](auto samples) {
-      for (auto& s : samples)
-        if (s.valid && s.value.robot_id == me && (!scan_ || s.value.tick >= scan_->tick)) scan_ = std::move(s.value);
     });
     loop.on_samples<msg::RadioLink>(*link_reader_, [this, me](auto samples) {
       for (auto& s : samples) {
@@ -260,6 +211,16 @@ void BehaviorNode::become_ready_when_possible() {
   tracker_.emplace(std::move(grid), options_.tracker);
   controller_.emplace(st.kinematics == msg::Kinematics::Holonomic ? Kinematics::Holonomic : Kinematics::Unicycle,
                       MotionLimits{st.max_speed, st.max_omega}, options_.go_to);
+  if (options_.path.planner == GoToPlanner::Ompl) {
+    options_.path.ompl.turn_in_place_at_start =
+        options_.path.unicycle_turns_in_place && controller_->kinematics() == Kinematics::Unicycle;
+    follower_.emplace(controller_->kinematics(), controller_->limits(), options_.path.follower);
+    update_map_obstacles();
+    spdlog::info("robot {}: go-to paths by OMPL {} in {} (turning radius {:.2f} m, budget {:.0f} ms{})",
+                 options_.robot_id, options_.path.ompl.planner, to_string(options_.path.ompl.curve),
+                 options_.path.ompl.turning_radius_m, options_.path.budget_s * 1e3,
+                 options_.path.ompl.turn_in_place_at_start ? ", turning in place at the start" : "");
+  }
   spdlog::info("robot {} ready at ({:.2f}, {:.2f}) on map '{}'", options_.robot_id, st.x, st.y, map_->name);
   service_.set_ready();
   if (options_.initial_goal) queued_goal_ = options_.initial_goal;
@@ -311,95 +272,6 @@ void BehaviorNode::on_cancels(std::vector<dds::Sample<msg::NavCancel>> samples) 
   }
 }
 
-void BehaviorNode::accept_goal(const msg::NavGoal& goal) {
-  spdlog::info("goal {} for robot {}: ({:.2f}, {:.2f}) tolerance {} constraints '{}'",
-               msg::clipped_for_log(goal.goal_id), goal.robot_id, goal.x, goal.y, goal.tolerance,
-               msg::clipped_for_log(goal.constraint_set));
-  const double now_s = lockstep_.clock().now_s();
-  std::string error;
-  auto problem = tracker_->validate(goal.goal_id, goal.x, goal.y, goal.tolerance);
-  if (!problem) problem = msg::length_problem("constraint_set", goal.constraint_set, msg::kMaxTextLength);
-  if (problem) {
-    publish(tracker_->reject(goal.goal_id, goal.x, goal.y, *problem));
-    return;
-  }
-  const auto set = parse_constraint_set(goal.constraint_set, &error);
-  if (!set) {
-    publish(tracker_->reject(goal.goal_id, goal.x, goal.y, error));
-    return;
-  }
-  const OccupancyGrid& grid = tracker_->grid();
-  const geometry::Vec2 target(goal.x, goal.y);
-  // Stored plans were computed with every door open: only while no door is known closed.
-  if (options_.plans && doors_.closed().empty()) {
-    if (const StoredPlan* stored = options_.plans->match(target, set->name(), grid.geometry(), grid.inflation_radius_m())) {
-      if (!stored->map_name.empty() && map_ && stored->map_name != map_->name) {
-        spdlog::warn("stored plan '{}' was computed on map '{}', not '{}': computing instead", stored->name,
-                     stored->map_name, map_->name);
-      } else {
-        spdlog::info("goal {}: using stored plan '{}' ({})", goal.goal_id, stored->name, stored->constraint_set);
-        pursue(goal, *set, tracker_->set_goal(goal.goal_id, goal.x, goal.y, goal.tolerance, now_s, stored->field()));
-        return;
-      }
-    }
-  }
-  if (set->layers.empty()) {
-    pursue(goal, *set, tracker_->set_goal(goal.goal_id, goal.x, goal.y, goal.tolerance, now_s));
-    return;
-  }
-  auto field = field_for(target, *set, &error);
-  if (!field) {
-    publish(tracker_->reject(goal.goal_id, goal.x, goal.y, error));
-    return;
-  }
-  pursue(goal, *set, tracker_->set_goal(goal.goal_id, goal.x, goal.y, goal.tolerance, now_s, std::move(*field)));
-}
-
-void BehaviorNode::pursue(const msg::NavGoal& goal, const ConstraintSet& set, const GoalReport& report) {
-  // A rejected goal leaves the pursued one running, and with it that goal's constraint set.
-  if (const auto target = tracker_->target(); target && target->id == goal.goal_id) pursued_constraints_ = set;
-  publish(report);
-}
-
-std::optional<CostToGoField> BehaviorNode::field_for(const geometry::Vec2& target, const ConstraintSet& set,
-                                                     std::string* error) const {
-  const OccupancyGrid& grid = tracker_->grid();  // the obstacles and the doors known closed
-  if (set.layers.empty()) return CostToGoField(grid, target);
-  const auto world = apply_constraints(doors_.apply(world_), set, options_.layers, error);
-  if (!world) return std::nullopt;
-  const OccupancyGrid constrained(*world, grid.geometry().resolution_m(), grid.inflation_radius_m());
-  return CostToGoField(constrained, target);
-}
-
-void BehaviorNode::update_door_knowledge(double now_s) {
-  std::vector<DoorSighting> sightings;
-  for (const auto& [id, angle] : door_sightings_) {
-    const bool on_map =
-        std::any_of(world_.doors.begin(), world_.doors.end(), [&](const Doorway& d) { return d.id == id; });
-    if (on_map)
-      sightings.push_back({id, angle});
-    else if (unknown_doors_.insert(id).second)
-      spdlog::warn("robot {} sees door '{}', which the map does not have; ignored", options_.robot_id, id);
-  }
-  door_sightings_.clear();
-  if (!doors_.update(sightings, now_s, world_)) return;
-  const std::vector<std::string> closed = doors_.closed();
-  const std::string closures = closed.empty() ? "" : describe_closed_doors(closed);
-  spdlog::info("robot {}: {}; replanning", options_.robot_id, describe_closed_doors(closed));
-  const OccupancyGrid& old = tracker_->grid();
-  tracker_->set_grid(OccupancyGrid(doors_.apply(world_), old.geometry().resolution_m(), old.inflation_radius_m()),
-                     closures);
-  const auto target = tracker_->target();
-  if (!target || !pursued_constraints_) return;
-  std::string error;
-  auto field = field_for(target->goal, *pursued_constraints_, &error);
-  if (!field) {  // the layers were known when the goal was accepted; keep the current route
-    spdlog::warn("goal {}: cannot replan: {}", target->id, error);
-    return;
-  }
-  publish(tracker_->replan(std::move(*field), now_s));
-}
-
 void BehaviorNode::on_tick(const msg::SimClock& clock) {
   // Until the robot is attached and the map known, the tick stays unanswered: the world waits
   // (up to the ack timeout) so that a run starts identically however slow this process is.
@@ -413,86 +285,6 @@ void BehaviorNode::control_pending_tick() {
   pending_tick_.reset();
   const uint32_t sent = executor_ ? control_mission(tick) : control_goal(tick);
   lockstep_.acknowledge(tick, sent);
-}
-
-uint32_t BehaviorNode::control_goal(int64_t tick) {
-  const geometry::Pose2 pose{state_->x, state_->y, state_->theta};
-  const double now_s = static_cast<double>(state_->sim_time_ns) * 1e-9;
-  // What the robot saw this tick first, so that a goal is judged on the doors as they are now.
-  update_door_knowledge(now_s);
-  publish(tracker_->update(pose, now_s, state_->in_collision));
-
-  if (tracker_->active()) {
-    const GoToDecision decision = controller_->command(pose, *tracker_->field(), tracker_->tolerance_m());
-    send_command(decision.command, tick);
-    return 1;
-  }
-  if (!stopped_robot_) {
-    send_command({}, tick);  // the goal ended: stop now rather than when the command expires
-    return 1;
-  }
-  return 0;
-}
-
-Perception BehaviorNode::perceive() const {
-  const msg::RobotState& st = *state_;
-  Perception p;
-  p.time_s = static_cast<double>(st.sim_time_ns) * 1e-9;
-  p.pose = {st.x, st.y, st.theta};
-  // The robot's own estimate when its pose sensor publishes one for this tick (or the previous).
-  if (pose_estimate_ && pose_estimate_->tick >= st.tick - 1)
-    p.pose = {pose_estimate_->x, pose_estimate_->y, pose_estimate_->theta};
-  p.kinematics = st.kinematics == msg::Kinematics::Holonomic ? Kinematics::Holonomic : Kinematics::Unicycle;
-  p.velocity = p.kinematics == Kinematics::Holonomic
-                   ? geometry::Vec2(st.vx, st.vy)
-                   : geometry::Vec2(st.vx * std::cos(st.theta), st.vx * std::sin(st.theta));
-  p.limits = {st.max_speed, st.max_omega};
-  if (scan_) {
-    p.rays.reserve(scan_->ranges.size());
-    for (std::size_t i = 0; i < scan_->ranges.size(); ++i) {
-      p.rays.push_back({scan_->angle_min + static_cast<double>(i) * scan_->angle_increment,
-                        static_cast<double>(scan_->ranges[i]), scan_->max_range});
-    }
-  }
-  for (const std::string& id : options_.mission->teammates) {
-    TeammateState t;
-    t.id = id;
-    if (const auto link = link_connected_.find(id); link != link_connected_.end()) {
-      t.in_contact = link->second;
-    } else if (!last_heard_s_.empty()) {
-      const auto heard = last_heard_s_.find(id);
-      t.in_contact = heard != last_heard_s_.end() && p.time_s - heard->second <= options_.contact_freshness_s;
-    } else {
-      t.in_contact = true;  // no radio model running: everyone is in contact
-    }
-    if (const auto pos = last_known_position_.find(id); pos != last_known_position_.end()) t.position = pos->second;
-    p.teammates.push_back(std::move(t));
-  }
-  return p;
-}
-
-uint32_t BehaviorNode::control_mission(int64_t tick) {
-  // Teammates' positions are known while in contact (as if they reported them), kept when lost.
-  Perception p = perceive();
-  for (TeammateState& t : p.teammates) {
-    t.in_contact = contact_.update(t.id, p.time_s, t.in_contact);
-    const auto st = teammate_states_.find(t.id);
-    if (t.in_contact && st != teammate_states_.end()) {
-      last_known_position_[t.id] = geometry::Vec2(st->second.x, st->second.y);
-      t.position = last_known_position_[t.id];
-    }
-  }
-  const bool was_finished = executor_->finished();
-  const MissionStep step = executor_->step(p);
-  for (const MissionEvent& e : step.events) {
-    spdlog::info("mission {}: {}", options_.mission->name, e.to_string());
-    publish_mission(e, tick);
-  }
-  if (!was_finished || !stopped_robot_) {
-    send_command(step.finished ? VelocityCommand{} : step.command, tick);
-    return 1;
-  }
-  return 0;
 }
 
 void BehaviorNode::send_command(const VelocityCommand& command, int64_t tick) {
@@ -511,18 +303,6 @@ void BehaviorNode::publish(const GoalReport& report) {
                    change.reason.empty() ? "" : ": ", change.reason);
     goal_status_writer_.write(s);
   }
-}
-
-void BehaviorNode::publish_mission(const MissionEvent& e, int64_t tick) {
-  msg::MissionStatus s;
-  s.robot_id = options_.robot_id;
-  s.mission = options_.mission->name;
-  s.state = e.state;
-  s.event = event_name(e.kind);
-  s.reason = e.kind == MissionEvent::Kind::Transition ? e.from + " -> " + e.state + ": " + e.reason : e.reason;
-  s.finished = e.kind == MissionEvent::Kind::Finished || executor_->finished();
-  s.tick = tick;
-  mission_status_writer_.write(s);
 }
 
 }  // namespace autonomy::behavior

@@ -9,6 +9,11 @@
 //    file's `layers`) and from --plans (stored plans). A stored plan is used when its goal,
 //    constraint set, grid and inflation match; otherwise the field is computed. An unknown
 //    constraint set rejects the goal, naming it.
+//    Go-to paths (GoToPathOptions, --path-planner): the grid field's controller (default), or a
+//    path planned by OMPL in SE(2) on the robot's grid (doors believed closed included) and
+//    followed by the tracking schema (pure pursuit with avoid-obstacles on the range scan);
+//    replanned when the doors known closed change or the robot strays; no path within the
+//    budget ends the goal Blocked with the planner's reason.
 //  - Mission mode (--mission): MissionExecutor::step on a Perception filled each tick from the
 //    robot's state (or autonomy/robot/pose_estimate when published), range rays from
 //    autonomy/robot/range_scan (empty when none), teammates' contact from autonomy/radio/link
@@ -25,6 +30,8 @@
 #include "services/behavior/core/door_knowledge.hpp"
 #include "services/behavior/core/mission/contact_judge.hpp"
 #include "services/behavior/core/mission/mission_executor.hpp"
+#include "services/behavior/core/path/ompl_path_planner.hpp"
+#include "services/behavior/core/path/path_follower.hpp"
 #include "services/behavior/core/plan_resource.hpp"
 
 #include <chrono>
@@ -36,6 +43,22 @@
 #include <utility>
 
 namespace autonomy::behavior {
+
+enum class GoToPlanner {
+  GridField,  // GoToController on the goal's cost-to-go field
+  Ompl,       // OmplPathPlanner's path, followed by PathFollower
+};
+
+struct GoToPathOptions {
+  GoToPlanner planner = GoToPlanner::GridField;
+  OmplPlannerSettings ompl;
+  double budget_s = 0.05;         // > 0: planning time per (re)plan
+  PathFollowerConfig follower;
+  double replan_interval_s = 1.0;  // a robot that strayed replans at most this often
+  // A unicycle's paths start with a turn in place (OmplPlannerSettings::turn_in_place_at_start);
+  // holonomic robots and robots of other kinds ignore it.
+  bool unicycle_turns_in_place = true;
+};
 
 struct BehaviorNodeOptions {
   std::string robot_id;
@@ -50,6 +73,7 @@ struct BehaviorNodeOptions {
   double contact_freshness_s = 5.0;      // team inbox: a teammate heard within this is in contact
   ContactJudgeSettings contact;          // how long a link must stay down (up) to lose (regain) contact
   DoorKnowledgeSettings doors;           // goal mode: doors seen closed are planned around
+  GoToPathOptions path;                  // goal mode: how go-to paths are planned and followed
 };
 
 class BehaviorNode {
@@ -77,6 +101,16 @@ class BehaviorNode {
   // Computes and sends the command for pending_tick_ once the state of that tick is here.
   void control_pending_tick();
   uint32_t control_goal(int64_t tick);
+  // Planned paths (GoToPlanner::Ompl), goal_path.cpp. plan_path() plans the pursued goal from
+  // the robot's pose now; no path within the budget blocks the goal (published). A start in the
+  // inflation margin leaves path_wanted_ set: the grid controller escapes first.
+  void plan_path(const char* why);
+  // The command of a planned path, or nullopt when the grid controller should drive this tick.
+  std::optional<VelocityCommand> follow_path(const geometry::Pose2& pose, double now_s);
+  std::shared_ptr<const OccupancyGrid> path_grid(std::string* error) const;
+  // The range rays that hit something the map does not have (map_obstacles_ filters).
+  std::vector<RangeRay> range_rays() const;
+  void update_map_obstacles();
   uint32_t control_mission(int64_t tick);
   Perception perceive() const;
   void publish(const GoalReport& report);
@@ -99,6 +133,13 @@ class BehaviorNode {
   std::optional<ConstraintSet> pursued_constraints_;  // of the goal being pursued
   std::optional<GoalTracker> tracker_;
   std::optional<GoToController> controller_;
+  std::optional<PathFollower> follower_;  // GoToPlanner::Ompl
+  bool path_wanted_ = false;              // the pursued goal needs a (new) path
+  double last_plan_s_ = -1e18;            // sim time of the last plan
+  // The map's obstacles (doors believed closed included) grown by a few centimetres: range hits
+  // there are the map's own, already planned around; the avoid schema sees only the others.
+  std::optional<OccupancyGrid> map_obstacles_;
+
   std::optional<MissionExecutor> executor_;
   ContactJudge contact_;  // the mission's view of contact: link flags with hysteresis
   std::optional<msg::NavGoal> queued_goal_;  // arrived before the robot was ready

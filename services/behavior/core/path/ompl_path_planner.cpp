@@ -112,6 +112,111 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// The route's direction at pose i, over about +-0.3 m: the 8-connected route turns in 45 degree
+// steps, a heading averaged over a few cells is what a curve through it should have.
+double route_heading(const std::vector<geometry::Pose2>& route, std::size_t i, std::size_t half) {
+  const std::size_t a = i >= half ? i - half : 0;
+  const std::size_t b = std::min(route.size() - 1, i + half);
+  const geometry::Vec2 d = route[b].position() - route[a].position();
+  return d.norm() > 1e-9 ? std::atan2(d.y(), d.x()) : route[i].theta;
+}
+
+// The grid route as a guide (OmplPlannerSettings::route_guide): greedy hops from the start to
+// the farthest route pose within `reach_m` that one valid motion reaches, then on from there; the
+// last hop ends in `goal`. Empty when a hop finds no reachable pose or time runs out.
+std::optional<og::PathGeometric> route_guided_path(const ob::SpaceInformationPtr& si,
+                                                   const std::vector<geometry::Pose2>& route,
+                                                   const ob::State* start, const ob::State* goal,
+                                                   double resolution_m, double reach_m,
+                                                   const ob::PlannerTerminationCondition& stop) {
+  if (route.size() < 2) return std::nullopt;
+  const auto space = si->getStateSpace();
+  const std::size_t half = std::max<std::size_t>(1, static_cast<std::size_t>(0.3 / resolution_m));
+  // Candidates every ~0.2 m of the route (route poses are cell to cell), the goal last.
+  const std::size_t stride = std::max<std::size_t>(1, static_cast<std::size_t>(0.2 / resolution_m));
+  std::vector<std::size_t> index;
+  std::vector<double> along;  // metres along the route to each candidate
+  double s = 0.0;
+  for (std::size_t i = 1; i + 1 < route.size(); ++i) {
+    s += (route[i].position() - route[i - 1].position()).norm();
+    if (i % stride == 0) {
+      index.push_back(i);
+      along.push_back(s);
+    }
+  }
+  s += (route.back().position() - route[route.size() - 2].position()).norm();
+  index.push_back(route.size() - 1);
+  along.push_back(s);
+
+  std::vector<ob::State*> states;
+  for (std::size_t k = 0; k + 1 < index.size(); ++k) {
+    ob::State* st = si->allocState();
+    auto* se2 = st->as<ob::SE2StateSpace::StateType>();
+    se2->setXY(route[index[k]].x, route[index[k]].y);
+    se2->setYaw(route_heading(route, index[k], half));
+    space->enforceBounds(st);
+    states.push_back(st);
+  }
+  const auto candidate = [&](std::size_t k) -> const ob::State* {
+    return k + 1 == index.size() ? goal : states[k];
+  };
+  // The farthest candidate one motion from `from` reaches, scanning back from `reach_m` ahead.
+  const auto farthest = [&](const ob::State* from, std::size_t next,
+                            double from_along) -> std::optional<std::size_t> {
+    std::size_t last = next;
+    while (last + 1 < index.size() && along[last + 1] - from_along <= reach_m) ++last;
+    for (std::size_t k = last + 1; k-- > next;) {
+      if (si->isValid(candidate(k)) && si->checkMotion(from, candidate(k))) return k;
+    }
+    return std::nullopt;
+  };
+  // Stuck (typically at the start: facing a wall, too close to turn on the curve): a short
+  // manoeuvre first, straight forward or back by up to half a metre, turning by up to 90 degrees.
+  ob::State* via = si->allocState();
+  const auto manoeuvre = [&](const ob::State* from, std::size_t next,
+                             double from_along) -> std::optional<std::size_t> {
+    const auto* f = from->as<ob::SE2StateSpace::StateType>();
+    for (const double d : {-0.3, 0.3, -0.5, 0.5, 0.0}) {
+      for (const double turn : {0.0, M_PI / 4, -M_PI / 4, M_PI / 2, -M_PI / 2}) {
+        if (d == 0.0 && turn == 0.0) continue;
+        auto* v = via->as<ob::SE2StateSpace::StateType>();
+        v->setXY(f->getX() + d * std::cos(f->getYaw()), f->getY() + d * std::sin(f->getYaw()));
+        v->setYaw(f->getYaw() + turn);
+        space->enforceBounds(via);
+        if (!si->isValid(via) || !si->checkMotion(from, via)) continue;
+        if (auto k = farthest(via, next, from_along)) return k;
+      }
+    }
+    return std::nullopt;
+  };
+  std::optional<og::PathGeometric> path(std::in_place, si, start);
+  const ob::State* from = start;
+  double from_along = 0.0;
+  std::size_t next = 0;  // first candidate not behind `from`
+  while (from != goal) {
+    if (stop()) {
+      path.reset();
+      break;
+    }
+    std::optional<std::size_t> reached = farthest(from, next, from_along);
+    if (!reached) {
+      reached = manoeuvre(from, next, from_along);
+      if (reached) path->append(via);
+    }
+    if (!reached) {
+      path.reset();
+      break;
+    }
+    from = candidate(*reached);
+    from_along = along[*reached];
+    next = *reached + 1;
+    path->append(from);
+  }
+  si->freeState(via);
+  for (ob::State* st : states) si->freeState(st);
+  return path;
+}
+
 }  // namespace
 
 const char* to_string(CurveModel m) {
@@ -136,9 +241,8 @@ std::optional<CurveModel> parse_curve_model(const std::string& text) {
 // LazyPRMstar is not offered: in OMPL 1.5.2 (Debian 12) its solve() leaks the states it clones
 // (LeakSanitizer, in libompl's own frames), so every query would leak.
 const std::vector<std::string>& ompl_planner_names() {
-  static const std::vector<std::string> names{"RRTConnect",      "RRT",     "RRTstar",
-                                              "InformedRRTstar", "PRMstar",
-                                              "BITstar",         "KPIECE1"};
+  static const std::vector<std::string> names{"RRTConnect", "RRT",     "RRTstar", "InformedRRTstar",
+                                              "PRMstar",    "BITstar", "KPIECE1"};
   return names;
 }
 
@@ -155,6 +259,8 @@ std::optional<std::string> settings_problem(const OmplPlannerSettings& s) {
   }
   if (!(s.motion_step_m > 0.0 && s.motion_step_m <= 0.05))
     return "motion step must be in (0, 0.05] m";
+  if (!(s.route_guide_reach_m > 0.0 && std::isfinite(s.route_guide_reach_m)))
+    return "route guide reach must be positive and finite";
   if (!(s.good_enough_ratio >= 1.0 && std::isfinite(s.good_enough_ratio))) {
     return "good-enough ratio must be finite and at least 1";
   }
@@ -235,7 +341,16 @@ PathResult OmplPathPlanner::plan(const PathRequest& request) {
 
   ob::ScopedState<ob::SE2StateSpace> start(impl_->space), goal(impl_->space);
   start->setXY(request.start.x, request.start.y);
-  start->setYaw(request.start.theta);
+  // A robot that turns on the spot starts its curves facing along the route (the path's first
+  // pose is then the turn in place).
+  const bool spin_first =
+      settings_.turn_in_place_at_start && settings_.curve != CurveModel::Holonomic;
+  start->setYaw(
+      spin_first
+          ? route_heading(route.poses, 0,
+                          std::max<std::size_t>(
+                              1, static_cast<std::size_t>(0.3 / grid.geometry().resolution_m())))
+          : request.start.theta);
   goal->setXY(request.goal.x(), request.goal.y());
   goal->setYaw(request.goal_heading ? *request.goal_heading
                                     : arrival_heading(route.poses, request.start.theta));
@@ -261,24 +376,40 @@ PathResult OmplPathPlanner::plan(const PathRequest& request) {
   try {
     ss.setup();
     // Most of the budget plans; what is left (at least a fifth) simplifies.
-    const ob::PlannerStatus solved =
-        ss.solve(ob::timedPlannerTerminationCondition(0.8 * request.budget_s));
-    if (solved != ob::PlannerStatus::EXACT_SOLUTION) {
-      PathResult r =
-          failure(PathStatus::NotFound, std::string(settings_.planner) + " found no path in " +
-                                            std::to_string(request.budget_s) + " s (" +
-                                            solved.asString() + ")");
-      r.planning_s = seconds_since(t0);
-      return r;
+    const double plan_s = 0.8 * request.budget_s;
+    std::optional<og::PathGeometric> guided;
+    if (settings_.route_guide) {
+      guided = route_guided_path(si, route.poses, ss.getProblemDefinition()->getStartState(0),
+                                 goal.get(), res, settings_.route_guide_reach_m,
+                                 ob::timedPlannerTerminationCondition(plan_s));
     }
-    og::PathGeometric path = ss.getSolutionPath();
+    if (!guided) {
+      const ob::PlannerStatus solved = ss.solve(
+          ob::timedPlannerTerminationCondition(std::max(1e-4, plan_s - seconds_since(t0))));
+      if (solved != ob::PlannerStatus::EXACT_SOLUTION) {
+        PathResult r =
+            failure(PathStatus::NotFound, std::string(settings_.planner) + " found no path in " +
+                                              std::to_string(request.budget_s) + " s (" +
+                                              solved.asString() + ")");
+        r.planning_s = seconds_since(t0);
+        return r;
+      }
+    }
+    og::PathGeometric path = guided ? *guided : ss.getSolutionPath();
     if (settings_.simplify) {
       og::PathSimplifier simplifier(si, ss.getGoal(), objective);
+      // A guided path has few vertices, most of them needless: dropping those first is cheap and
+      // leaves the simplifier's time for the cusps of the first hop.
+      if (guided) {
+        simplifier.reduceVertices(path);
+        simplifier.collapseCloseVertices(path);
+      }
       const double left = std::max(0.2 * request.budget_s, request.budget_s - seconds_since(t0));
       simplifier.simplify(path, left);
     }
     PathResult r;
     r.status = PathStatus::Found;
+    r.route_guided = guided.has_value();
     // The poses are exactly the states the motion validator checked along each motion (same
     // segment count, same interpolation), so the final check tests what the planner accepted.
     const auto pose_of = [](const ob::State* st) {
@@ -286,13 +417,27 @@ PathResult OmplPathPlanner::plan(const PathRequest& request) {
       return geometry::Pose2{se2->getX(), se2->getY(), se2->getYaw()};
     };
     ob::ScopedState<ob::SE2StateSpace> between(impl_->space);
+    const auto* reeds_shepp = dynamic_cast<const ob::ReedsSheppStateSpace*>(impl_->space.get());
+    const auto* dubins = dynamic_cast<const ob::DubinsStateSpace*>(impl_->space.get());
+    if (spin_first) r.poses.push_back(request.start);
     r.poses.push_back(pose_of(path.getState(0)));
     for (std::size_t i = 1; i < path.getStateCount(); ++i) {
       const ob::State* a = path.getState(i - 1);
       const ob::State* b = path.getState(i);
       const int n = std::max(1, static_cast<int>(impl_->space->validSegmentCount(a, b)));
+      // The curve spaces compute the segment's curve once (their caching interpolate): one curve
+      // per pose made the conversion of a 200 m path cost more than planning it.
+      bool first = true;
+      ob::ReedsSheppStateSpace::ReedsSheppPath rs_path;
+      ob::DubinsStateSpace::DubinsPath dubins_path;
       for (int k = 1; k < n; ++k) {
-        impl_->space->interpolate(a, b, static_cast<double>(k) / n, between.get());
+        const double t = static_cast<double>(k) / n;
+        if (reeds_shepp)
+          reeds_shepp->interpolate(a, b, t, first, rs_path, between.get());
+        else if (dubins)
+          dubins->interpolate(a, b, t, first, dubins_path, between.get());
+        else
+          impl_->space->interpolate(a, b, t, between.get());
         r.poses.push_back(pose_of(between.get()));
       }
       r.poses.push_back(pose_of(b));

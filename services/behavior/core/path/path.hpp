@@ -36,6 +36,7 @@ struct PathResult {
                                        // for OMPL paths, cell to cell for grid paths
   double length_m = 0.0;               // along the poses
   double planning_s = 0.0;             // time spent (OMPL planners; 0 for the grid)
+  bool route_guided = false;           // OMPL: the grid route's guide found it, no sampling
 
   bool found() const { return status == PathStatus::Found; }
 };

@@ -38,6 +38,20 @@ TEST(GoalCancel, CancelActiveGoalEndsItAsCancelled) {
   EXPECT_TRUE(tracker.update(Pose2{2.0, 1.0, 0.0}, 1.0).changes.empty());
 }
 
+// A path planner that finds no path blocks the goal from outside, with its reason; once.
+TEST(GoalCancel, BlockEndsThePursuedGoalWithTheGivenReason) {
+  GoalTracker tracker(test_grid());
+  EXPECT_TRUE(tracker.block("no path").changes.empty());
+  (void)tracker.set_goal("g1", 8.0, 1.0, 0.2, 0.0);
+  const auto r = tracker.block("RRTConnect found no path in 0.05 s");
+  EXPECT_EQ(states(r.changes), (std::vector<GoalState>{GoalState::Blocked}));
+  EXPECT_EQ(r.changes[0].goal_id, "g1");
+  EXPECT_EQ(r.changes[0].reason, "RRTConnect found no path in 0.05 s");
+  EXPECT_FALSE(tracker.active());
+  EXPECT_TRUE(tracker.block("again").changes.empty());
+  EXPECT_TRUE(tracker.update(Pose2{1.0, 1.0, 0.0}, 1.0).changes.empty());
+}
+
 TEST(GoalCancel, EmptyIdCancelsWhateverIsPursuedAndAcceptedGoalsToo) {
   GoalTracker tracker(test_grid());
   (void)tracker.set_goal("g1", 8.0, 1.0, 0.2, 0.0);  // accepted, not yet active

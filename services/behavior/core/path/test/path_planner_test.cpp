@@ -109,6 +109,69 @@ INSTANTIATE_TEST_SUITE_P(AllCurves, OmplCurves,
                          ::testing::Values(CurveModel::Dubins, CurveModel::ReedsShepp,
                                            CurveModel::Holonomic));
 
+// The grid route as a guide: the Reeds-Shepp path through the doorway comes from hops along the
+// route (no sampling), clear of the walls and within 1.1x the grid optimum; without the guide the
+// sampler still finds one.
+TEST(OmplPathPlanner, RouteGuideGivesAShortReedsSheppPathWithoutSampling) {
+  const auto w = walled_room();
+  const auto grid = grid_of(w);
+  GridPathPlanner grid_planner(grid);
+  const auto optimum = grid_planner.plan(through_doorway());
+  ASSERT_TRUE(optimum.found());
+  OmplPlannerSettings s;
+  s.turning_radius_m = 0.4;
+  OmplPathPlanner guided(grid, s);
+  const auto r = guided.plan(through_doorway());
+  expect_clear_through_doorway(w, r);
+  EXPECT_TRUE(r.route_guided);
+  EXPECT_LE(r.length_m, 1.1 * optimum.length_m);
+  // Kinematics: no turn tighter than the turning radius. Steps across a cusp are left out: there
+  // the chord between two poses is shorter than the way driven (forward, then back).
+  const auto step = [&](std::size_t i) -> geometry::Vec2 {
+    return r.poses[i].position() - r.poses[i - 1].position();
+  };
+  for (std::size_t i = 1; i < r.poses.size(); ++i) {
+    const double ds = step(i).norm();
+    if (ds < 1e-4) continue;
+    if ((i > 1 && step(i - 1).dot(step(i)) < 0.0) ||
+        (i + 1 < r.poses.size() && step(i + 1).dot(step(i)) < 0.0))
+      continue;
+    EXPECT_LE(std::abs(geometry::wrap_angle(r.poses[i].theta - r.poses[i - 1].theta)) / ds,
+              1.0 / 0.4 * 1.02)
+        << "pose " << i;
+  }
+  EXPECT_FALSE(first_collision(*grid, r.poses, 0.05).has_value());
+
+  s.route_guide = false;
+  OmplPathPlanner sampling(grid, s);
+  const auto r2 = sampling.plan(through_doorway());
+  expect_clear_through_doorway(w, r2);
+  EXPECT_FALSE(r2.route_guided);
+
+  s.route_guide_reach_m = 0.0;
+  EXPECT_THROW(OmplPathPlanner(grid, s), std::invalid_argument);
+}
+
+// A unicycle facing away from its route turns in place first: the path's first two poses share
+// the start position, the second faces along the route, and the rest is the guided curve.
+TEST(OmplPathPlanner, TurnInPlaceAtStartFacesTheRouteBeforeTheCurves) {
+  const auto w = walled_room();
+  OmplPlannerSettings s;
+  s.turning_radius_m = 0.4;
+  s.turn_in_place_at_start = true;
+  OmplPathPlanner planner(grid_of(w), s);
+  PathRequest q = through_doorway();
+  q.start.theta = M_PI;  // the route leaves towards the doorway, up and to the right
+  const auto r = planner.plan(q);
+  expect_clear_through_doorway(w, r);
+  ASSERT_GE(r.poses.size(), 3u);
+  EXPECT_NEAR(r.poses[0].theta, M_PI, 1e-9);
+  EXPECT_NEAR(r.poses[1].x, q.start.x, 1e-9);
+  EXPECT_NEAR(r.poses[1].y, q.start.y, 1e-9);
+  EXPECT_LT(std::abs(geometry::wrap_angle(r.poses[1].theta)), M_PI / 2);  // facing right now
+  EXPECT_TRUE(r.route_guided);
+}
+
 TEST(OmplPathPlanner, EveryPlannerNameFindsTheDoorway) {
   const auto w = walled_room();
   for (const auto& name : ompl_planner_names()) {
