@@ -228,13 +228,17 @@ class IterativeRepair final : public SearchEngine {
     return false;
   }
 
-  bool apply(TokenNetwork& net, Step& s, std::size_t o, SearchStatistics& stats) {
+  bool apply(TokenNetwork& net, Step& s, std::size_t o, bool repair, SearchStatistics& stats) {
     ++stats.decisions;
     s.tried[o] = 1;
     const Decision& d = s.options[o];
     std::vector<std::size_t> touched = decision_timelines(net, d);
-    if (options_.on_decision) options_.on_decision(d, memory_hit(s) == o);
-    if (net.apply(d)) {
+    const auto choice = repair                ? EngineOptions::Choice::kRepair
+                        : memory_hit(s) == o ? EngineOptions::Choice::kRemembered
+                                             : EngineOptions::Choice::kHeuristic;
+    const bool applied = net.apply(d);
+    if (options_.on_decision) options_.on_decision(d, choice, applied);
+    if (applied) {
       s.chosen = o;
       s.touched = std::move(touched);
       memory_[s.flaw] = s.option_keys[o];
@@ -304,7 +308,7 @@ SearchOutcome IterativeRepair::solve(TokenNetwork& net, const Termination& term)
     bool placed = false;
     for (std::size_t o : order) {
       if (stop()) return finish(SearchStatus::kOutOfBudget);
-      if ((placed = apply(net, s, o, stats))) break;
+      if ((placed = apply(net, s, o, false, stats))) break;
     }
     if (placed) {
       plan_.push_back(std::move(s));
@@ -332,14 +336,14 @@ SearchOutcome IterativeRepair::solve(TokenNetwork& net, const Termination& term)
           if (o != old && !c.proved[o] && bool(c.tried[o]) != bool(fresh)) alternatives.push_back(o);
       for (std::size_t o : alternatives) {
         if (stop()) return finish(SearchStatus::kOutOfBudget);
-        if ((repaired = apply(net, c, o, stats))) break;
+        if ((repaired = apply(net, c, o, true, stats))) break;
       }
       if (repaired) break;
       // No other option applies here: keep the old one (the memory replays what followed
       // and the next dead end looks elsewhere), unless it is proved to fail too.
       if (!c.proved[old]) {
         if (stop()) return finish(SearchStatus::kOutOfBudget);
-        if ((repaired = apply(net, c, old, stats))) break;
+        if ((repaired = apply(net, c, old, false, stats))) break;
       }
       failing = c.flaw_timelines;
       plan_.pop_back();  // its options all fail: the state before it has no plan

@@ -56,9 +56,11 @@ struct EngineOptions {
   unsigned seed = 1;              // for engines that sample
   std::size_t discrepancies = 2;  // limited discrepancy search: the most allowed per probe
   std::size_t restarts = 1000;    // iterative sampling: probes per solve()
-  // Iterative repair: called before each decision it applies, with whether its memory of the
-  // previous plan chose that option (a replayed choice) rather than the heuristic or a repair.
-  std::function<void(const Decision&, bool remembered)> on_decision;
+  // Iterative repair reports each decision it applies, why it took that option (the memory of
+  // the previous plan's choice, the heuristic's order, or a repair of a culprit) and whether
+  // it applied (its propagation succeeded).
+  enum class Choice { kRemembered, kHeuristic, kRepair };
+  std::function<void(const Decision&, Choice, bool applied)> on_decision;
 };
 
 // "chronological" (depth-first with chronological backtracking, the Remote Agent's),
