@@ -123,10 +123,9 @@ TEST(RepairEngine, TheSameSeedRunsTheSameSearch) {
   }
 }
 
-// A repair changes one decision; the flaws that follow take the option the previous plan had
-// (the memory), not the heuristic's. Anytime job-shop: each tighter solve starts from the
-// last schedule's choices.
-TEST(RepairEngine, ARepairChangesOneDecisionAndReplaysTheRestOfThePlan) {
+// The memory of the previous plan: anytime job-shop, each tighter solve re-applies the last
+// schedule's choices (repairing them where the bound breaks them) instead of starting over.
+TEST(RepairEngine, EachTighterSolveReplaysTheLastSchedulesChoices) {
   auto ft06 = load_jobshop("ft06");
   ASSERT_TRUE(ft06);
   RepairRun run = plan_by_repair(*ft06, 1, 50000);
@@ -141,16 +140,18 @@ TEST(RepairEngine, ARepairChangesOneDecisionAndReplaysTheRestOfThePlan) {
               run.decisions.size(), repairs, remembered, heuristic);
   EXPECT_GT(run.result.improvements, 1u);
   // The first solve has no memory; every later one begins with the previous plan's choice.
-  for (const Recorded& r : run.decisions)
-    if (r.solve == 0) EXPECT_NE(r.choice, Choice::kRemembered);
+  for (const Recorded& r : run.decisions) {
+    if (r.solve == 0) {
+      EXPECT_NE(r.choice, Choice::kRemembered);
+    }
+  }
   for (std::size_t s = 1; s < run.result.improvements; ++s) {
     auto first = std::find_if(run.decisions.begin(), run.decisions.end(),
                               [&](const Recorded& r) { return r.solve == s; });
     ASSERT_NE(first, run.decisions.end()) << "solve " << s;
     EXPECT_EQ(first->choice, Choice::kRemembered) << "solve " << s;
   }
-  // After each applied repair, the next decision (if the plan is not complete yet) replays
-  // the memory as long as it holds: most decisions outside the first solve are replays.
+  // Most decisions after the first solve are replays.
   std::size_t later = 0, later_remembered = 0;
   for (const Recorded& r : run.decisions)
     if (r.solve > 0) ++later, later_remembered += r.choice == Choice::kRemembered;
@@ -174,18 +175,6 @@ TEST(RepairEngine, TheDs1DayIsRepairedIntoAValidPlan) {
   EXPECT_GT(remembered, repairs);
   std::printf("DS1 day by repair: %zu decisions, %zu repairs, %zu remembered\n",
               run.decisions.size(), repairs, remembered);
-  if (getenv("PROBE")) {
-    std::size_t counts[3][2] = {};
-    for (const Recorded& r : run.decisions) ++counts[int(r.choice)][r.applied];
-    for (int c = 0; c < 3; ++c) std::printf("choice %d: %zu ok %zu failed\n", c, counts[c][1], counts[c][0]);
-    std::string line;
-    for (const Recorded& r : run.decisions) {
-      if (r.choice == Choice::kRepair) { std::printf("%s\n", line.c_str()); line.clear(); }
-      line += "RMH"[int(r.choice)];
-      if (!r.applied) line += "x";
-    }
-    std::printf("%s\n", line.c_str());
-  }
 }
 
 // The engine alone on a network: both ends of the termination condition stop it and leave
