@@ -261,8 +261,8 @@ int main(int argc, char** argv) {
       std::printf("%s%s %s", engine == search_engine_names().front() ? "" : " | ", "ds1 day",
                   engine.c_str());
       if (er.plan)
-        std::printf(": %.3f s (%.2fx chronological), %zu decisions, %zu backtracks", m,
-                    m / median, er.statistics.decisions, er.statistics.backtracks);
+        std::printf(": %.3f s (%.2fx chronological), %zu decisions, %zu backtracks", m, m / median,
+                    er.statistics.decisions, er.statistics.backtracks);
       else
         std::printf(": no plan (%s in %zu decisions, %.3f s)", to_string(er.status),
                     er.statistics.decisions, m);
@@ -272,9 +272,9 @@ int main(int argc, char** argv) {
 
   // Job-shop at one decision budget for every engine (deterministic: the same figures on any
   // machine): the makespan each finds, against the optimum.
-  for (const auto& [name, optimum] : {std::pair{"ft06", 55}, std::pair{"la01", 666},
-                                      std::pair{"la02", 655}, std::pair{"la03", 597},
-                                      std::pair{"la04", 590}, std::pair{"la05", 593}}) {
+  for (const auto& [name, optimum] :
+       {std::pair{"ft06", 55}, std::pair{"la01", 666}, std::pair{"la02", 655},
+        std::pair{"la03", 597}, std::pair{"la04", 590}, std::pair{"la05", 593}}) {
     Diagnostics errors;
     const std::string file = jobshop_dir + "/" + name;
     auto text = read_text_file(file, &errors);

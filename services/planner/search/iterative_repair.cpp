@@ -7,13 +7,13 @@
 //    masters), drawn with weights 1, 0.8, 0.64, 0.51 from the seeded generator; when no decision
 //    touched them, the most recent one that still has an alternative.
 //  - The engine undoes to just before the culprit, takes another option there (one not tried
-//    at that point yet, drawn at random, else one not proved to fail) and goes on resolving flaws. For every
-//    flaw it first offers the option it chose last time for the same flaw (a memory keyed by
-//    signatures that survive undo: tokens named by their problem fact or by their master's
-//    name and their place among its slaves, options by what they do, not by positions). So a
-//    repair changes one decision and re-applies the rest of the previous plan wherever it
-//    still applies. The memory outlives solve(): the anytime loop's next, tighter solve starts
-//    from the last plan's choices and repairs them.
+//    at that point yet, drawn at random, else one not proved to fail) and goes on resolving flaws.
+//    For every flaw it first offers the option it chose last time for the same flaw (a memory keyed
+//    by signatures that survive undo: tokens named by their problem fact or by their master's name
+//    and their place among its slaves, options by what they do, not by positions). So a repair
+//    changes one decision and re-applies the rest of the previous plan wherever it still applies.
+//    The memory outlives solve(): the anytime loop's next, tighter solve starts from the last
+//    plan's choices and repairs them.
 //  - Incomplete, like sampling: the culprit jumps non-chronologically, so what is below a
 //    replaced decision is never proved empty. It proves infeasibility only the way
 //    chronological backtracking would: a flaw with no working option proves the state before
@@ -22,13 +22,13 @@
 //    when that chain reaches the root does it answer kExhausted; otherwise kOutOfBudget.
 //
 // Statistics: decisions (every option applied, replays included), backtracks (the repairs:
-// each change of a culprit decision), dead ends (options whose propagation failed and flaws
+// each undo to a culprit decision), dead ends (options whose propagation failed and flaws
 // left without options), plans.
 #include "iterative_repair.hpp"
 
 #include <algorithm>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <optional>
 #include <random>
@@ -75,8 +75,8 @@ class TokenNames {
         std::size_t rank = 0;
         for (TokenId o = t.master + 1; o < id; ++o) {
           const Token& u = tokens[o];
-          rank += u.master == t.master && u.predicate == t.predicate &&
-                  u.timeline == t.timeline && u.relation == t.relation;
+          rank += u.master == t.master && u.predicate == t.predicate && u.timeline == t.timeline &&
+                  u.relation == t.relation;
         }
         k = mix(mix(mix(mix(mix(2, names_[t.master]), Key(t.predicate)), Key(t.timeline)),
                     Key(t.relation)),
@@ -193,7 +193,9 @@ class IterativeRepair final : public SearchEngine {
         if (o != chosen && !proved[o]) return true;
       return false;
     }
-    bool all_proved() const { return std::all_of(proved.begin(), proved.end(), [](char p) { return p; }); }
+    bool all_proved() const {
+      return std::all_of(proved.begin(), proved.end(), [](char p) { return p; });
+    }
   };
 
   std::size_t pick_culprit(const std::vector<std::size_t>& failing) {
@@ -210,7 +212,8 @@ class IterativeRepair final : public SearchEngine {
     }
     if (candidates.empty()) return latest_eligible;  // plan_.size(): none
     std::vector<double> weights;
-    for (std::size_t r = 0; r < candidates.size(); ++r) weights.push_back(std::pow(kCulpritDecay, double(r)));
+    for (std::size_t r = 0; r < candidates.size(); ++r)
+      weights.push_back(std::pow(kCulpritDecay, double(r)));
     std::discrete_distribution<std::size_t> pick(weights.begin(), weights.end());
     return candidates[pick(rng_)];
   }
@@ -239,7 +242,7 @@ class IterativeRepair final : public SearchEngine {
     s.tried[o] = 1;
     const Decision& d = s.options[o];
     std::vector<std::size_t> touched = decision_timelines(net, d);
-    const auto choice = repair                ? EngineOptions::Choice::kRepair
+    const auto choice = repair               ? EngineOptions::Choice::kRepair
                         : memory_hit(s) == o ? EngineOptions::Choice::kRemembered
                                              : EngineOptions::Choice::kHeuristic;
     const bool applied = net.apply(d);

@@ -36,8 +36,7 @@ std::optional<Loaded> load_files(const std::string& model_name, const std::strin
   return Loaded{*model, *problem};
 }
 
-std::optional<Loaded> load_shipped(const std::string& model_name,
-                                   const std::string& problem_name) {
+std::optional<Loaded> load_shipped(const std::string& model_name, const std::string& problem_name) {
   Diagnostics errors;
   const std::string file = std::string(PLANNER_EXAMPLES_DIR "/") + problem_name;
   auto text = read_text_file(file, &errors);
@@ -99,8 +98,7 @@ TEST(RepairEngine, PlansTheShippedModelsWithEverySeedAndTheValidatorAgrees) {
       RepairRun run = plan_by_repair(*c, seed, 50000);
       ASSERT_TRUE(run.result.plan) << "seed " << seed << ": " << to_string(run.result.status);
       EXPECT_NE(run.result.status, PlanStatus::kInfeasible);
-      EXPECT_EQ(validate_plan(c->model, c->problem, *run.result.plan),
-                std::vector<std::string>{})
+      EXPECT_EQ(validate_plan(c->model, c->problem, *run.result.plan), std::vector<std::string>{})
           << "seed " << seed;
     }
   }
