@@ -8,8 +8,8 @@
 #include <iostream>
 
 #include "gantt_svg.hpp"
-#include "plan_json.hpp"
 #include "jobshop_instance.hpp"
+#include "plan_json.hpp"
 #include "plan_validator.hpp"
 #include "planner.hpp"
 #include "planner_language.hpp"
