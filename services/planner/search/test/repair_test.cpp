@@ -167,8 +167,9 @@ TEST(RepairEngine, TheDs1DayIsRepairedIntoAValidPlan) {
     repairs += r.choice == Choice::kRepair && r.applied;
     remembered += r.choice == Choice::kRemembered && r.applied;
   }
-  // The day needs repairs, and after them the plan's other choices come back from memory
-  // rather than being searched again.
+  // The day needs repairs. Within one solve the memory only holds the choices of decisions a
+  // repair undid, so every remembered decision is one the previous plan had, re-applied after
+  // a repair instead of being searched again; they outnumber the repairs.
   EXPECT_GT(repairs, 0u);
   EXPECT_GT(remembered, repairs);
   std::printf("DS1 day by repair: %zu decisions, %zu repairs, %zu remembered\n",
