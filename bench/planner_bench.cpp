@@ -3,6 +3,9 @@
 //    timepoints, against recomputing all bounds by Bellman-Ford;
 //  - the DS1-like day (about 100 goals) and the rover, planned by the chronological engine,
 //    beside the Remote Agent's 11 min 25 s on board Deep Space One (May 1999);
+//  - the DS1-like day by every engine (iterative sampling gives up on it), against the
+//    chronological engine;
+//  - job-shop ft06 and la01-la05 by every engine within one decision budget: the makespans;
 //  - job-shop ft06 and la01-la05 to a proof of optimality, against MiniZinc with Gecode on
 //    the standard disjunctive model (bench/jobshop.mzn; bench/install-minizinc.sh installs it;
 //    skipped, with how to install it, when minizinc is absent).
@@ -132,6 +135,10 @@ int main(int argc, char** argv) {
   app.add_option("--jobshop-seconds", jobshop_seconds, "time limit per instance and solver");
   app.add_option("--jobshop-engines", jobshop_engines, "planner engines timed on job-shop");
   app.add_option("--repeats", repeats, "runs per model (the median is printed)");
+  std::size_t budget_decisions = 20000, ds1_decisions = 200000;
+  app.add_option("--budget-decisions", budget_decisions,
+                 "decision budget of the every-engine job-shop comparison");
+  app.add_option("--ds1-decisions", ds1_decisions, "decision budget of each engine on the DS1 day");
   CLI11_PARSE(app, argc, argv);
   if (jobshop_dir.empty()) jobshop_dir = examples + "/jobshop";
 
@@ -231,6 +238,74 @@ int main(int argc, char** argv) {
     if (std::string(model_name) == "ds1.model")
       std::printf("; Remote Agent on board DS1 (1999): 11 min 25 s, %.0fx",
                   kRemoteAgentSeconds / median);
+    std::printf("\n");
+    if (std::string(model_name) != "ds1.model") continue;
+    // The day by every engine, against the chronological engine's median above.
+    for (const std::string& engine : search_engine_names()) {
+      PlanningOptions options;
+      options.engine = engine;
+      options.termination.max_decisions = ds1_decisions;
+      std::vector<double> engine_times;
+      PlanResult er;
+      for (int k = 0; k < std::max(repeats, 1); ++k) {
+        const auto start = Clock::now();
+        er = make_plan(*model, *problem, options);
+        engine_times.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+      }
+      if (er.plan && !validate_plan(*model, *problem, *er.plan).empty()) {
+        std::fprintf(stderr, "%s: invalid plan from %s\n", problem_name, engine.c_str());
+        return 3;
+      }
+      std::sort(engine_times.begin(), engine_times.end());
+      const double m = engine_times[engine_times.size() / 2];
+      std::printf("%s%s %s", engine == search_engine_names().front() ? "" : " | ", "ds1 day",
+                  engine.c_str());
+      if (er.plan)
+        std::printf(": %.3f s (%.2fx chronological), %zu decisions, %zu backtracks", m, m / median,
+                    er.statistics.decisions, er.statistics.backtracks);
+      else
+        std::printf(": no plan (%s in %zu decisions, %.3f s)", to_string(er.status),
+                    er.statistics.decisions, m);
+    }
+    std::printf("\n");
+  }
+
+  // Job-shop at one decision budget for every engine (deterministic: the same figures on any
+  // machine): the makespan each finds, against the optimum.
+  for (const auto& [name, optimum] :
+       {std::pair{"ft06", 55}, std::pair{"la01", 666}, std::pair{"la02", 655},
+        std::pair{"la03", 597}, std::pair{"la04", 590}, std::pair{"la05", 593}}) {
+    Diagnostics errors;
+    const std::string file = jobshop_dir + "/" + name;
+    auto text = read_text_file(file, &errors);
+    auto inst = text ? parse_jobshop(*text, file, &errors) : std::nullopt;
+    auto model = inst ? build_domain_model(jobshop_model(*inst), &errors) : std::nullopt;
+    auto problem = model ? build_problem(*model, jobshop_problem(*inst), &errors) : std::nullopt;
+    if (!problem) {
+      std::fprintf(stderr, "%s", to_string(errors).c_str());
+      return 2;
+    }
+    std::printf("%s in %zu decisions (optimum %d):", name, budget_decisions, optimum);
+    for (const std::string& engine : search_engine_names()) {
+      PlanningOptions options;
+      options.engine = engine;
+      options.termination.max_decisions = budget_decisions;
+      const auto start = Clock::now();
+      PlanResult r = make_plan(*model, *problem, options);
+      const double sec = std::chrono::duration<double>(Clock::now() - start).count();
+      if (r.plan && !validate_plan(*model, *problem, *r.plan).empty()) {
+        std::fprintf(stderr, "%s: invalid schedule from %s\n", name, engine.c_str());
+        return 3;
+      }
+      if (!r.plan) {
+        std::printf(" %s none (%s)", engine.c_str(), to_string(r.status));
+        continue;
+      }
+      std::printf(" %s %lld (+%.1f%%%s, %.2f s)", engine.c_str(),
+                  static_cast<long long>(r.plan->makespan),
+                  100.0 * double(r.plan->makespan - optimum) / optimum,
+                  r.status == PlanStatus::kOptimal ? ", proved" : "", sec);
+    }
     std::printf("\n");
   }
 

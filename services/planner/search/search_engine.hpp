@@ -56,11 +56,18 @@ struct EngineOptions {
   unsigned seed = 1;              // for engines that sample
   std::size_t discrepancies = 2;  // limited discrepancy search: the most allowed per probe
   std::size_t restarts = 1000;    // iterative sampling: probes per solve()
+  // Iterative repair reports each decision it applies, why it took that option (the memory of
+  // the previous plan's choice, the heuristic's order, or a repair of a culprit) and whether
+  // it applied (its propagation succeeded).
+  enum class Choice { kRemembered, kHeuristic, kRepair };
+  std::function<void(const Decision&, Choice, bool applied)> on_decision;
 };
 
 // "chronological" (depth-first with chronological backtracking, the Remote Agent's),
-// "discrepancy" (limited discrepancy search, Harvey 1995) or "sampling" (heuristic-biased
-// iterative sampling with seeded restarts; incomplete). Null for an unknown name.
+// "discrepancy" (limited discrepancy search, Harvey 1995), "sampling" (heuristic-biased
+// iterative sampling with seeded restarts; incomplete) or "repair" (iterative repair: at a dead
+// end one culprit decision changes and the rest of the plan is re-applied; incomplete, its
+// backtracks count the repairs; iterative_repair.cpp). Null for an unknown name.
 std::unique_ptr<SearchEngine> make_search_engine(const std::string& name,
                                                  const EngineOptions& options = {});
 std::vector<std::string> search_engine_names();

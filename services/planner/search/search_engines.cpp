@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <random>
 
+#include "iterative_repair.hpp"
 #include "search_engine.hpp"
 
 namespace autonomy::planner {
@@ -229,11 +230,12 @@ std::unique_ptr<SearchEngine> make_search_engine(const std::string& name,
   if (name == "chronological") return std::make_unique<ChronologicalBacktracking>(options);
   if (name == "discrepancy") return std::make_unique<LimitedDiscrepancy>(options);
   if (name == "sampling") return std::make_unique<IterativeSampling>(options);
+  if (name == "repair") return make_iterative_repair(options);
   return nullptr;
 }
 
 std::vector<std::string> search_engine_names() {
-  return {"chronological", "discrepancy", "sampling"};
+  return {"chronological", "discrepancy", "sampling", "repair"};
 }
 
 }  // namespace autonomy::planner
