@@ -7,19 +7,12 @@
 
 #include <algorithm>
 
+#include "services/courier/core/execution/test/paper_floor.hpp"
+
 namespace autonomy::courier {
 namespace {
 
-Floor paper_floor() {
-  Floor f;
-  f.places["meeting-table"] = {4.0, 10.7, "A-111", 1.0};
-  f.places["librarian-desk"] = {3.5, 4.5, "A-110", 1.0};
-  f.places["a114-desk"] = {19.0, 2.6, "A-114", 1.0};
-  f.places["michael-desk"] = {37.5, 2.6, "A-120", 1.0};
-  f.places["hallway-west"] = {1.5, 8.0, "", 1.0};
-  for (const char* room : {"A-110", "A-111", "A-114", "A-120"}) f.door_of_room[room] = room;
-  return f;
-}
+using test_support::paper_floor;
 
 // Serves the jobs in the order of the request (forced ones first); a job behind a closed door is
 // unschedulable. Each stop takes 60 s.

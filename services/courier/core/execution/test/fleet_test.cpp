@@ -9,19 +9,12 @@
 
 #include <algorithm>
 
+#include "services/courier/core/execution/test/paper_floor.hpp"
+
 namespace autonomy::courier {
 namespace {
 
-Floor office_floor() {
-  Floor f;
-  f.places["meeting-table"] = {4.0, 10.7, "A-111", 1.0};
-  f.places["librarian-desk"] = {3.5, 4.5, "A-110", 1.0};
-  f.places["a114-desk"] = {19.0, 2.6, "A-114", 1.0};
-  f.places["michael-desk"] = {37.5, 2.6, "A-120", 1.0};
-  f.places["hallway-west"] = {1.5, 8.0, "", 1.0};
-  for (const char* room : {"A-110", "A-111", "A-114", "A-120"}) f.door_of_room[room] = room;
-  return f;
-}
+using test_support::paper_floor;
 
 // Jobs aboard stay with their carrier; the others go to the robot `prefer` names when it is
 // planned for, else to the robot with the fewest jobs so far. 60 s per stop. Records requests.
@@ -71,7 +64,7 @@ Job delivery(const std::string& id, const std::string& object, const std::string
 
 class FleetTest : public ::testing::Test {
  protected:
-  FleetTest() : exec_(office_floor(), scheduler_) {}
+  FleetTest() : exec_(paper_floor(), scheduler_) {}
 
   Orders step() {
     Orders o = exec_.step(now_);
