@@ -117,9 +117,9 @@ CourierNode::CourierNode(service::Service& service, CourierNodeOptions options)
       executive_->restore_job(job);
     }
   }
-  for (const HandoverOrder& h : journalled.unanswered) {
-    if (executive_->has_robot(h.robot)) executive_->restore_pending_handover(h);
-  }
+  // Robots join later (their heartbeats): the executive keeps each order until its robot does,
+  // then asks again with the same id before anything else is sent to that robot.
+  for (const HandoverOrder& h : journalled.unanswered) executive_->restore_pending_handover(h);
   spdlog::info("journal {}: {} jobs ({} unfinished), {} handover requests to ask again", options_.journal_path,
                journalled.jobs.size(), unfinished, journalled.unanswered.size());
   // A restarted courier's job states are gone from the wire with its old writer: publish them again.
