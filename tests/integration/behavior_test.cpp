@@ -13,6 +13,7 @@
 //     86    TeamTest.KeepsContactWithParallelCommunicationPlans
 //     87    TeamTest.OnObstaclePlansLosesContactInTheAlley
 //     88    BehaviorTest.OverlongIdAndNegativeToleranceAreRejectedAndTheServiceGoesOn
+#include "tests/support/goal_statuses.hpp"
 #include "tests/support/process_test.hpp"
 
 #include <gtest/gtest.h>
@@ -30,16 +31,6 @@ namespace {
 
 using namespace std::chrono_literals;
 using msg::GoalState;
-
-std::string states_text(const std::vector<msg::GoalStatus>& v) {
-  std::string out;
-  for (const auto& s : v) {
-    if (!out.empty()) out += " -> ";
-    out += msg::to_string(s.state);
-    if (!s.reason.empty()) out += " (" + s.reason + ")";
-  }
-  return out.empty() ? "(none)" : out;
-}
 
 std::optional<msg::RobotState> last_state_of(const Recorder<msg::RobotState>& r, const std::string& robot) {
   std::optional<msg::RobotState> last;

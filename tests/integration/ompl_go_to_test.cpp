@@ -9,6 +9,7 @@
 //    181    OmplGoToTest.GoalInAnObstacleEndsBlockedWithTheReason
 //    182    OmplGoToTest.DoorSeenClosedBlocksTheGoalWithTheDoorNamed
 //    183    OmplGoToTest.CourierDeliversThePapersTwoJobsOnOmplPaths
+#include "tests/support/goal_statuses.hpp"
 #include "tests/support/process_test.hpp"
 
 #include "simulator/scenario/scenario_loader.hpp"
@@ -28,16 +29,6 @@ const std::string kOffice = std::string(AUTONOMY_SOURCE_DIR) + "/deploy/scenario
 // rhino starts in the hallway at (1.5, 8); A-110 (the library) lies south, behind its 1 m door at
 // x in [1.1, 2.1] of the wall y in [6.9, 7.1].
 constexpr double kLibraryX = 5.5, kLibraryY = 5.0;
-
-std::string states_text(const std::vector<msg::GoalStatus>& v) {
-  std::string out;
-  for (const auto& s : v) {
-    if (!out.empty()) out += " -> ";
-    out += msg::to_string(s.state);
-    if (!s.reason.empty()) out += " (" + s.reason + ")";
-  }
-  return out.empty() ? "(none)" : out;
-}
 
 class OmplGoToTest : public ProcessTest {
  protected:

@@ -18,6 +18,7 @@
 //     70    SystemTest.SpawnBadPoseIsRejected
 //     59    SystemTest.LockstepStalledBehaviorRejoinsAndStaysInStep
 // (ctest names them integration.<suite>.<test>.)
+#include "tests/support/goal_statuses.hpp"
 #include "tests/support/process_test.hpp"
 
 #include <gtest/gtest.h>
@@ -67,16 +68,6 @@ double distance_to_rect(double x, double y, double min_x, double min_y, double m
 
 double distance_to_wall(const msg::RobotState& s) {
   return distance_to_rect(s.x, s.y, kWallMinX, kWallMinY, kWallMaxX, kWallMaxY);
-}
-
-std::string states_text(const std::vector<msg::GoalStatus>& v) {
-  std::string out;
-  for (const auto& s : v) {
-    if (!out.empty()) out += " -> ";
-    out += msg::to_string(s.state);
-    if (!s.reason.empty()) out += " (" + s.reason + ")";
-  }
-  return out.empty() ? "(none)" : out;
 }
 
 
