@@ -266,6 +266,7 @@ void SimulatorNode::on_registrations(std::vector<dds::Sample<msg::LockstepRegist
       continue;
     }
     if (s.valid && s.value.active && s.instance_state == dds::InstanceState::Alive) {
+      registered_once_.insert(name);
       if (barrier_.add(name)) spdlog::info("participant {} joined lockstep at tick {}", name, tick_);
     } else {
       barrier_.remove(name);
@@ -294,9 +295,10 @@ void SimulatorNode::on_spawn_requests(std::vector<dds::Sample<msg::SpawnRequest>
 
 bool SimulatorNode::holding_start() const {
   if (!lockstep() || tick_ != 0) return false;
-  const auto members = barrier_.participants();
+  // Registered once is enough: a participant that held the start and then left (a test or a
+  // script releasing the world) must not keep it held while the others come.
   return std::any_of(options_.wait_for_participants.begin(), options_.wait_for_participants.end(),
-                     [&](const std::string& p) { return !std::binary_search(members.begin(), members.end(), p); });
+                     [&](const std::string& p) { return registered_once_.count(p) == 0; });
 }
 
 void SimulatorNode::on_timer() {

@@ -38,6 +38,7 @@
 #include <optional>
 #include <random>
 #include <utility>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -109,6 +110,7 @@ class SimulatorNode {
   World world_;
   SimulatorRunOptions options_;
   LockstepBarrier barrier_;
+  std::set<std::string> registered_once_;  // for --wait-for: who has registered since the start
   int64_t tick_ = 0;
   std::chrono::steady_clock::time_point last_advance_;
   std::map<int64_t, std::vector<msg::VelocityCommand>> commands_by_tick_;  // lockstep, per tick
