@@ -4,6 +4,7 @@
 #include "common/dds/type_traits.hpp"
 #include "common/msg/clock.hpp"
 #include "common/msg/courier.hpp"
+#include "common/msg/executive.hpp"
 #include "common/msg/navigation.hpp"
 #include "common/msg/office.hpp"
 #include "common/msg/planner.hpp"
@@ -16,6 +17,7 @@
 #include "common/msg/spacecraft.hpp"
 #include "idl/clock.h"
 #include "idl/courier.h"
+#include "idl/executive.h"
 #include "idl/navigation.h"
 #include "idl/office.h"
 #include "idl/planner.h"
@@ -101,6 +103,9 @@ AUTONOMY_DDS_TYPE(msg::PlanningReply, autonomy_PlanningReply)
 AUTONOMY_DDS_TYPE(msg::PlanningProgress, autonomy_PlanningProgress)
 AUTONOMY_DDS_TYPE(msg::PlanningCancel, autonomy_PlanningCancel)
 AUTONOMY_DDS_TYPE(msg::LatestPlan, autonomy_LatestPlan)
+// The executive: its events and status.
+AUTONOMY_DDS_TYPE(msg::ExecutiveEvent, autonomy_ExecutiveEvent)
+AUTONOMY_DDS_TYPE(msg::ExecutiveStatus, autonomy_ExecutiveStatus)
 
 }  // namespace autonomy::dds
 

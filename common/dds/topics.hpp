@@ -69,6 +69,9 @@ inline constexpr TopicSpec<msg::PlanningReply> planner_reply{"autonomy/planner/r
 inline constexpr TopicSpec<msg::PlanningProgress> planner_progress{"autonomy/planner/progress", QosClass::Event};
 inline constexpr TopicSpec<msg::PlanningCancel> planner_cancel{"autonomy/planner/cancel", QosClass::Command};
 inline constexpr TopicSpec<msg::LatestPlan> planner_plan{"autonomy/planner/plan", QosClass::State};
+// The executive: what it did and why (events), and where it is (status, one per executive).
+inline constexpr TopicSpec<msg::ExecutiveEvent> executive_event{"autonomy/executive/event", QosClass::Event};
+inline constexpr TopicSpec<msg::ExecutiveStatus> executive_status{"autonomy/executive/status", QosClass::State};
 
 // Calls visit(spec) for every topic of the catalogue: tools use it to find a topic's type by name.
 template <typename Visitor>
@@ -115,6 +118,8 @@ void for_each_topic(Visitor&& visit) {
   visit(planner_progress);
   visit(planner_cancel);
   visit(planner_plan);
+  visit(executive_event);
+  visit(executive_status);
 }
 
 }  // namespace autonomy::dds::topics

@@ -97,7 +97,7 @@ std::vector<CatalogueEntry> catalogue() {
 }
 
 TEST(TopicsTest, ForEachTopicVisitsEveryTopic) {
-  EXPECT_EQ(catalogue().size(), 42u);  // + 9 of the simulator world v2, + 3 of the office, + 5 of the courier, + 5 of the spacecraft, + 5 of the planner
+  EXPECT_EQ(catalogue().size(), 44u);  // + 9 of the simulator world v2, + 3 of the office, + 5 of the courier, + 5 of the spacecraft, + 5 of the planner, + 2 of the executive
 }
 
 TEST(TopicsTest, NamesAreUniqueAndPrefixed) {

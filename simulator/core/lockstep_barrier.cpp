@@ -2,10 +2,10 @@
 
 namespace autonomy::sim {
 
-bool LockstepBarrier::add(const std::string& participant) {
+bool LockstepBarrier::add(const std::string& participant, bool from_current) {
   dropped_.erase(participant);
   // While a tick is open the newcomer may have missed its clock sample: wait for it from the next.
-  const Tick first = current_ ? *current_ + 1 : 0;
+  const Tick first = current_ ? *current_ + (from_current ? 0 : 1) : 0;
   return members_.emplace(participant, first).second;
 }
 

@@ -15,7 +15,8 @@
 //     current tick later rejoins (its ack counts for that tick); one that called remove() (left
 //     on purpose) must add() itself again.
 //  A participant added while tick k is open is waited for from tick k+1 on (it may not have
-//  seen tick k), unless it acks k anyway. Acks and commands for ticks before the current one
+//  seen tick k), unless it acks k anyway or is added `from_current` (registered while the
+//  start was held: the world has not begun, so it takes part from tick 0). Acks and commands for ticks before the current one
 //  are stale and ignored.
 #include <cstdint>
 #include <map>
@@ -38,7 +39,9 @@ class LockstepBarrier {
   };
 
   // Registers a participant (idempotent). Returns false when it was already registered.
-  bool add(const std::string& participant);
+  // `from_current`: wait for it at the open tick too (it registered before the world started,
+  // while tick 0 was held for it, and reads that tick's clock sample from the durable topic).
+  bool add(const std::string& participant, bool from_current = false);
   // A participant leaves on purpose: not waited for, and an ack does not bring it back.
   void remove(const std::string& participant);
 

@@ -266,8 +266,12 @@ void SimulatorNode::on_registrations(std::vector<dds::Sample<msg::LockstepRegist
       continue;
     }
     if (s.valid && s.value.active && s.instance_state == dds::InstanceState::Alive) {
+      // Those who register while the start is held take part from tick 0: an executive that
+      // holds a tick for its first plan must be waited for at the very first one.
+      const bool before_start = holding_start();
       registered_once_.insert(name);
-      if (barrier_.add(name)) spdlog::info("participant {} joined lockstep at tick {}", name, tick_);
+      if (barrier_.add(name, before_start))
+        spdlog::info("participant {} joined lockstep at tick {}{}", name, tick_, before_start ? " (from this tick)" : "");
     } else {
       barrier_.remove(name);
       spdlog::info("participant {} left lockstep at tick {}", name, tick_);

@@ -150,7 +150,7 @@ TEST_F(SpacecraftTest, LockstepCommandsAreConfirmedInTelemetry) {
   LockstepDriver driver(participant());
   ASSERT_TRUE(driver.join());
   ASSERT_TRUE(run_until("tick 0", driver, [&] { return driver.poll().has_value(); }));
-  driver.send("turn-1", "adcs", "turn", {"asteroid-1"});
+  driver.send("turn-1", "adcs", "turn", {"braille"});
 
   // Confirmed at the tick it was sent for, seen in the next tick's telemetry, turning.
   ASSERT_TRUE(run_until("turn-1 confirmed", driver, [&] {
@@ -165,23 +165,23 @@ TEST_F(SpacecraftTest, LockstepCommandsAreConfirmedInTelemetry) {
   EXPECT_EQ(confirmed.tick, k0 + 1);
   EXPECT_EQ(device(confirmed, "adcs")->confirmed_tick, k0);
   EXPECT_EQ(device(confirmed, "adcs")->mode, "turning");
-  EXPECT_EQ(confirmed.attitude.turn_target, "asteroid-1");
+  EXPECT_EQ(confirmed.attitude.turn_target, "braille");
   ASSERT_TRUE(status_of(*status_, "turn-1"));
   EXPECT_TRUE(status_of(*status_, "turn-1")->accepted);
   EXPECT_EQ(status_of(*status_, "turn-1")->tick, k0);
 
-  // 36.87 deg at 0.2 deg/s: 185 one-second steps.
-  ASSERT_TRUE(run_until("pointing at asteroid-1", driver, [&] {
+  // 41.03 deg (earth to braille) at 0.5 deg/s: 83 one-second steps.
+  ASSERT_TRUE(run_until("pointing at braille", driver, [&] {
     return !!first(*telemetry_,
-                   [](const auto& t) { return t.attitude.pointing_target == "asteroid-1"; });
+                   [](const auto& t) { return t.attitude.pointing_target == "braille"; });
   }));
   const auto pointed =
-      *first(*telemetry_, [](const auto& t) { return t.attitude.pointing_target == "asteroid-1"; });
-  EXPECT_EQ(pointed.tick - k0, 185);
+      *first(*telemetry_, [](const auto& t) { return t.attitude.pointing_target == "braille"; });
+  EXPECT_EQ(pointed.tick - k0, 83);
   EXPECT_EQ(device(pointed, "adcs")->mode, "pointing");
   EXPECT_LT(*reading(pointed, "pointing_error_deg"), 1e-6);
 
-  driver.send("img-1", "camera", "take_image", {"asteroid-1"});
+  driver.send("img-1", "camera", "take_image", {"braille"});
   ASSERT_TRUE(run_until("image on target", driver, [&] {
     return !!first(*telemetry_, [](const auto& t) { return t.camera.images_on_target == 1; });
   }));
@@ -215,7 +215,7 @@ TEST_F(SpacecraftTest, BadCommandsAreRejectedWithTheirReasons) {
             0u);
   EXPECT_EQ(reason("bad-target"), "unknown target 'moon'");
   EXPECT_EQ(reason("bad-level"), "thrust level '99' is out of range 1..15");
-  EXPECT_EQ(reason("bad-mode"), "no ground station in view (next: dss-14 at 21600 s)");
+  EXPECT_EQ(reason("bad-mode"), "no ground station in view (next: dsn-1 at 4800 s)");
   ASSERT_TRUE(status_of(*status_, "good"));
   EXPECT_TRUE(status_of(*status_, "good")->accepted);
   ASSERT_TRUE(run_until("counts in telemetry", driver, [&] {
@@ -342,7 +342,7 @@ TEST_F(SpacecraftTest, ScenarioFaultOnACommandInPacedTime) {
 TEST_F(SpacecraftTest, BadSpacecraftSectionStopsTheSimulatorWithItsPosition) {
   join(kDomainBadFile);
   std::string text = read_file(kDs1);
-  const std::string target = "initial_target: \"thrust-attitude\"";
+  const std::string target = "initial_target: \"earth\"";
   ASSERT_NE(text.find(target), std::string::npos);
   text.replace(text.find(target), target.size(), "initial_target: \"pluto\"");
   const std::string file = dir().file("bad-ds1.pbtxt");
@@ -352,7 +352,7 @@ TEST_F(SpacecraftTest, BadSpacecraftSectionStopsTheSimulatorWithItsPosition) {
   ASSERT_TRUE(sim.status()->exited);
   EXPECT_NE(sim.status()->code, 0);
   const std::string out = read_file(sim.log_file());
-  EXPECT_NE(out.find(file + ":25:5: attitude: initial_target 'pluto' is not a target"),
+  EXPECT_NE(out.find(file + ":31:5: attitude: initial_target 'pluto' is not a target"),
             std::string::npos)
       << out;
 }

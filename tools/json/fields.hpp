@@ -10,6 +10,7 @@
 #include "common/msg/courier.hpp"
 #include "common/msg/navigation.hpp"
 #include "common/msg/office.hpp"
+#include "common/msg/executive.hpp"
 #include "common/msg/planner.hpp"
 #include "common/msg/robot.hpp"
 #include "common/msg/simulation.hpp"
@@ -1014,6 +1015,45 @@ struct Fields<msg::LatestPlan> {
     v.field("engine", m.engine);
     v.field("plan_origin", m.plan_origin);
     v.field("plan", m.plan);
+  }
+};
+
+template <>
+struct Fields<msg::ExecutiveEvent> {
+  static constexpr const char* name = "ExecutiveEvent";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("executive", m.executive);
+    v.field("number", m.number);
+    v.field("tick", m.tick);
+    v.field("sim_time_ns", m.sim_time_ns);
+    v.field("kind", m.kind);
+    v.field("text", m.text);
+    v.field("plan_id", m.plan_id);
+  }
+};
+
+template <>
+struct Fields<msg::ExecutiveStatus> {
+  static constexpr const char* name = "ExecutiveStatus";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.key("executive", m.executive);
+    v.field("state", m.state);
+    v.field("plan_id", m.plan_id);
+    v.field("tick", m.tick);
+    v.field("plan_origin_s", m.plan_origin_s);
+    v.field("horizon_end_s", m.horizon_end_s);
+    v.field("executing", m.executing);
+    v.field("goals_achieved", m.goals_achieved);
+    v.field("goals_lost", m.goals_lost);
+    v.field("disabled_devices", m.disabled_devices);
+    v.field("ignored_sensors", m.ignored_sensors);
+    v.field("replans", m.replans);
+    v.field("horizons", m.horizons);
+    v.field("decision_us_mean", m.decision_us_mean);
+    v.field("decision_us_max", m.decision_us_max);
+    v.field("watchdog_alarm", m.watchdog_alarm);
   }
 };
 

@@ -21,7 +21,8 @@ struct DeviceCommand {
 
 // timeline == predicate(...) -> device command(arguments). An argument "?N" is the token's
 // N-th parameter. end_mode: the device mode whose report ends the token (the world controls
-// the end, e.g. a turn); empty: the executive ends the token by time. expect_mode: the mode
+// the end, e.g. a turn; a report before the end's window opens is held until it opens: the
+// plan's bound includes settling); empty: the executive ends the token by time. expect_mode: the mode
 // the device should report while the token executes (what monitoring compares). A rule with
 // no command only declares that expectation (camera == ready).
 struct CommandRule {
@@ -31,6 +32,9 @@ struct CommandRule {
   std::vector<std::string> arguments;
   Time confirm_timeout = 5;
   std::string end_mode;
+  // Sent to `device` when the token ends, unless the next token of its timeline has begun by
+  // then (it commands the device itself): engine standby after the last thrust arc.
+  std::string end_command;
 };
 
 class CommandMap {
@@ -57,6 +61,7 @@ class CommandTracker {
   std::vector<DeviceCommand> expire(Time now);
   void disable(const std::string& device) { disabled_.insert(device); }
   bool disabled(const std::string& device) const { return disabled_.count(device) > 0; }
+  const std::set<std::string>& disabled_devices() const { return disabled_; }
   std::size_t awaiting() const { return pending_.size(); }
   bool awaiting(const std::string& device) const;
 

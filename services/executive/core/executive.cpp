@@ -48,18 +48,49 @@ Executive::Executive(Dispatcher dispatcher, CommandMap commands,
       faults_(std::move(faults)),
       options_(std::move(options)) {}
 
+std::size_t Executive::next_on_timeline(std::size_t token) const {
+  for (const planner::PlanTimeline& line : dispatcher_.plan().timelines)
+    for (std::size_t k = 0; k < line.tokens.size(); ++k)
+      if (line.tokens[k] == token) return k + 1 < line.tokens.size() ? line.tokens[k + 1] : SIZE_MAX;
+  return SIZE_MAX;
+}
+
+std::vector<std::string> Executive::executing() const {
+  std::vector<std::string> out;
+  const auto& tokens = dispatcher_.plan().tokens;
+  for (std::size_t i = 0; i < tokens.size(); ++i)
+    if (dispatcher_.executing(i)) out.push_back(describe(tokens[i]));
+  return out;
+}
+
 bool Executive::confirm(const std::string& device, const std::string& command) {
   return tracker_.confirm(device, command);
 }
 
 void Executive::stop_commanding(const std::string& device) {
   tracker_.disable(device);
-  // Its tokens can no longer be observed ending: they end by time, so the plan goes on.
+  // Its tokens can no longer be observed ending: they end by time, so the plan goes on; those
+  // running now were not carried out by the device.
   const auto& tokens = dispatcher_.plan().tokens;
   for (std::size_t i = 0; i < tokens.size(); ++i) {
     const CommandRule* r = commands_.rule_for(tokens[i]);
-    if (r && r->device == device) dispatcher_.set_observed(i, false, false);
+    if (!r || r->device != device) continue;
+    dispatcher_.set_observed(i, false, false);
+    if (dispatcher_.executing(i) && !r->command.empty())
+      uncommanded_.emplace(i, device + " no longer commanded");
   }
+}
+
+void Executive::goal_ended(std::size_t token, Time now, Tick* tick) {
+  const planner::PlanToken& t = dispatcher_.plan().tokens[token];
+  const std::size_t at = t.origin.find("goal ");
+  const std::string label =
+      at == std::string::npos ? "#" + std::to_string(t.id) : t.origin.substr(at + 5);
+  auto why = uncommanded_.find(token);
+  if (why == uncommanded_.end())
+    tick->events.push_back({"goal_achieved", now, label + ": " + describe(t)});
+  else
+    tick->events.push_back({"goal_lost", now, label + ": " + describe(t) + ": " + why->second});
 }
 
 PlanState Executive::plan_state(Time now) const {
@@ -136,12 +167,15 @@ Tick Executive::step(const Observations& input) {
   for (std::size_t i = 0; i < tokens.size(); ++i) {
     if (!dispatcher_.executing(i) || !dispatcher_.observed(i, false)) continue;
     const CommandRule* r = commands_.rule_for(tokens[i]);
+    // Before the end's window opens the report waits: the plan's bound covers settling.
     auto mode = seen.device_modes.find(r->device);
-    if (mode != seen.device_modes.end() && mode->second == r->end_mode)
+    if (mode != seen.device_modes.end() && mode->second == r->end_mode &&
+        now >= dispatcher_.lower(i, false))
       dispatcher_.observe(i, false, now);
   }
 
   std::string broken;
+  std::vector<std::size_t> ended_with_command;
   for (const DispatchEvent& e : dispatcher_.step(now)) {
     if (e.kind == DispatchEvent::Kind::kViolation) {
       tick.events.push_back({"violation", e.time, e.reason});
@@ -151,18 +185,37 @@ Tick Executive::step(const Observations& input) {
     const planner::PlanToken& t = tokens[e.token];
     bool start = e.kind == DispatchEvent::Kind::kStarted;
     tick.events.push_back({start ? "started" : "ended", e.time, describe(t)});
-    if (!start || is_initial(t)) continue;  // initial values hold already
+    if (!start) {
+      const CommandRule* r = commands_.rule_for(t);
+      if (r && !r->end_command.empty()) ended_with_command.push_back(e.token);
+      if (is_goal(t)) goal_ended(e.token, now, &tick);
+      continue;
+    }
+    if (is_initial(t)) continue;  // initial values hold already
     std::string error;
     auto c = commands_.command_for(t, e.token, now, &error);
     if (!error.empty()) tick.events.push_back({"violation", now, error});
     if (!c) continue;
     if (tracker_.disabled(c->device)) {
+      uncommanded_.emplace(e.token, c->device + " no longer commanded");
       tick.events.push_back({"skipped", now, describe(*c) + ": device no longer commanded"});
       continue;
     }
     tracker_.sent(*c, commands_.rule_for(t)->confirm_timeout);
     tick.events.push_back({"command", now, describe(*c)});
     tick.commands.push_back(std::move(*c));
+  }
+
+  // A token's end command (engine standby after a thrust arc, transmitter off after a
+  // downlink) goes out unless the next token of its timeline has begun: that one commands.
+  for (std::size_t i : ended_with_command) {
+    const CommandRule* r = commands_.rule_for(tokens[i]);
+    const std::size_t next = next_on_timeline(i);
+    if (tracker_.disabled(r->device) || (next != SIZE_MAX && dispatcher_.executed(next, true))) continue;
+    DeviceCommand end{r->device, r->end_command, {}, i, now};
+    tracker_.sent(end, r->confirm_timeout);
+    tick.events.push_back({"command", now, describe(end)});
+    tick.commands.push_back(std::move(end));
   }
 
   PlanState state = plan_state(now);

@@ -15,7 +15,8 @@
 namespace autonomy::executive {
 
 struct ExecutiveEvent {
-  // "started", "ended", "command", "confirmed", "violation", "fault <action kind>", "aborted"
+  // "started", "ended", "command", "skipped", "violation", "fault <action kind>", "aborted",
+  // "goal_achieved", "goal_lost"
   std::string kind;
   Time time = 0;
   std::string text;
@@ -60,10 +61,20 @@ class Executive {
   // A command confirmed in telemetry; false when none was awaited.
   bool confirm(const std::string& device, const std::string& command);
 
+  // Never command `device` again and stop comparing it with the plan (a fault known from an
+  // earlier plan); its tokens end by time.
+  void disable_device(const std::string& device) { stop_commanding(device); }
+
   bool aborted() const { return aborted_; }
   bool finished() const { return dispatcher_.finished(); }
   bool disabled(const std::string& device) const { return tracker_.disabled(device); }
   bool ignored(const std::string& sensor) const { return ignored_sensors_.count(sensor) > 0; }
+  // A sensor judged false under an earlier plan stays ignored.
+  void ignore_sensor(const std::string& sensor) { ignored_sensors_.insert(sensor); }
+  const std::set<std::string>& ignored_sensors() const { return ignored_sensors_; }
+  const std::set<std::string>& disabled_devices() const { return tracker_.disabled_devices(); }
+  // "timeline == predicate(args) #id" of each token executing now.
+  std::vector<std::string> executing() const;
   const Dispatcher& dispatcher() const { return dispatcher_; }
 
  private:
@@ -72,7 +83,10 @@ class Executive {
   PlanState plan_state(Time now) const;
   ReplanRequest replan_request(const Observations& seen, std::string reason) const;
   void stop_commanding(const std::string& device);
+  std::size_t next_on_timeline(std::size_t token) const;  // SIZE_MAX for the last
   void abort(const Observations& seen, std::string reason, Tick* tick);
+  // A goal token ended: achieved unless its device was not commanded for it.
+  void goal_ended(std::size_t token, Time now, Tick* tick);
 
   Dispatcher dispatcher_;
   CommandMap commands_;
@@ -80,6 +94,9 @@ class Executive {
   std::vector<std::unique_ptr<FaultResponse>> faults_;
   ExecutiveOptions options_;
   std::set<std::string> ignored_sensors_;
+  // Tokens whose device was not commanded for them (skipped, or disabled while they ran), with
+  // why: a goal among them ends lost, not achieved.
+  std::map<std::size_t, std::string> uncommanded_;
   bool aborted_ = false;
 };
 

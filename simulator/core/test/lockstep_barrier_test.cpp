@@ -134,6 +134,18 @@ TEST_F(Barrier, ParticipantAddedDuringATickIsWaitedForFromTheNext) {
   EXPECT_TRUE(barrier.complete(2));
 }
 
+TEST_F(Barrier, ParticipantAddedFromTheCurrentTickIsWaitedForAtOnce) {
+  // Registered while the start was held: it takes part in the open tick.
+  EXPECT_TRUE(barrier.add("c", true));
+  EXPECT_EQ(barrier.on_ack("a", 1, 0), Ack::Counted);
+  EXPECT_EQ(barrier.on_ack("b", 1, 0), Ack::Counted);
+  EXPECT_FALSE(barrier.complete(1));
+  EXPECT_EQ(barrier.on_ack("c", 1, 1), Ack::Counted);
+  EXPECT_FALSE(barrier.complete(1));  // its announced command is still owed
+  EXPECT_TRUE(barrier.on_command("c", 1));
+  EXPECT_TRUE(barrier.complete(1));
+}
+
 TEST(BarrierWithoutParticipants, CompletesAtOnce) {
   LockstepBarrier barrier;
   barrier.begin_tick(0, 0.0);

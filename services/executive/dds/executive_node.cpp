@@ -1,0 +1,430 @@
+#include "executive_node.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "plan_message.hpp"
+
+namespace autonomy::executive {
+namespace {
+
+using WallClock = PlannerLink::Clock;
+
+std::chrono::nanoseconds seconds(double s) {
+  return std::chrono::nanoseconds(static_cast<std::int64_t>(s * 1e9));
+}
+
+double wall_s(WallClock::duration d) { return std::chrono::duration<double>(d).count(); }
+
+// A token's parameters as a state value, when each is one value (not a set or an interval).
+std::optional<msg::PlannerTimelineValue> value_of(const planner::PlanToken& t) {
+  msg::PlannerTimelineValue v{t.timeline(), t.predicate, {}};
+  for (const std::string& p : t.parameters) {
+    if (p.empty() || p.find_first_of("[{, ") != std::string::npos) return std::nullopt;
+    v.parameters.push_back(p);
+  }
+  return v;
+}
+
+bool usable(const msg::PlanningReply& r) {
+  const bool status_has_plan = r.status == msg::PlanningStatus::Optimal ||
+                               r.status == msg::PlanningStatus::PlanFound ||
+                               r.status == msg::PlanningStatus::OutOfTime ||
+                               r.status == msg::PlanningStatus::Cancelled;
+  return status_has_plan && r.has_plan && r.violations.empty();
+}
+
+}  // namespace
+
+ExecutiveNode::ExecutiveNode(service::Service& service, ExecutiveNodeOptions options,
+                             ExecutiveConfig config, Mission mission)
+    : service_(service),
+      options_(std::move(options)),
+      config_(std::move(config)),
+      mission_(std::move(mission)),
+      name_("executive/" + service.options().instance),
+      spacecraft_(service.participant(), name_, options_.spacecraft),
+      planner_(service.participant(), name_),
+      event_topic_(service.participant(), dds::topics::executive_event),
+      status_topic_(service.participant(), dds::topics::executive_status),
+      event_writer_(service.participant(), event_topic_),
+      status_writer_(service.participant(), status_topic_),
+      lockstep_(service.participant(), service.loop(), name_,
+                [this](const msg::SimClock& clock) { on_tick(clock); }),
+      watchdog_(seconds(options_.watchdog_s),
+                [this](WallClock::duration busy) { safe_from_watchdog(busy); },
+                [this] { spdlog::info("watchdog: ticks are answered again"); }) {
+  auto& loop = service.loop();
+  loop.on_condition(planner_.reply_reader().data_condition(), [this] { on_reply(); });
+  loop.every(std::chrono::milliseconds(20), [this] { on_timer(); });
+  loop.every(std::chrono::seconds(1), [this] { publish_status(); });
+  lockstep_.register_participant();
+  spdlog::info("executive {}: mission {} ({} goals, horizon {} s, plans of {} s), {} command rules",
+               name_, config_.problem_path, mission_.goal_labels().size(), mission_.horizon(),
+               config_.horizon_s > 0 ? config_.horizon_s : mission_.horizon(), config_.rules.size());
+  service.set_ready();
+}
+
+const char* ExecutiveNode::state_name() const {
+  switch (state_) {
+    case State::kWaitingForPlan: return "waiting_for_plan";
+    case State::kExecuting: return "executing";
+    case State::kSafeWaiting: return "safe_waiting_for_plan";
+    case State::kFinished: return "finished";
+  }
+  return "?";
+}
+
+void ExecutiveNode::event(const std::string& kind, Time now, const std::string& text) {
+  msg::ExecutiveEvent e{name_, ++events_, last_tick_, now * 1000000000LL, kind, text, plan_id_};
+  if (kind.rfind("fault", 0) == 0 || kind == "aborted" || kind == "violation" ||
+      kind.rfind("plan_", 0) == 0 || kind == "goal_lost" || kind == "rejected")
+    spdlog::info("{} at {} s: {}", kind, now, text);
+  else
+    spdlog::debug("{} at {} s: {}", kind, now, text);
+  event_writer_.write(e);
+}
+
+void ExecutiveNode::on_tick(const msg::SimClock& clock) {
+  if (clock.tick <= last_tick_) return;
+  if (held_) {  // the world went on without our ack (we were dropped): answer the held one
+    lockstep_.acknowledge(held_->clock.tick, 0);
+    held_.reset();
+  }
+  run_tick(clock);
+}
+
+void ExecutiveNode::run_tick(const msg::SimClock& clock) {
+  watchdog_.tick_started();
+  last_tick_ = clock.tick;
+  watched_tick_.store(clock.tick);
+  now_ = static_cast<Time>(std::floor(static_cast<double>(clock.sim_time_ns) * 1e-9 + 1e-6));
+  if (auto t = spacecraft_.take_telemetry()) {
+    for (const Confirmation& c : spacecraft_.confirmations(*t))
+      if (executive_ && executive_->confirm(c.device, c.command))
+        event("confirmed", now_, c.device + " " + c.command + " (" + c.command_id + ")");
+    telemetry_ = std::move(t);
+  }
+  for (const std::string& r : spacecraft_.take_rejections()) event("rejected", now_, r);
+
+  std::vector<DeviceCommand> out;
+  ask_first();
+  if (state_ == State::kExecuting) dispatch(now_, out);
+  finish_tick(clock, spacecraft_.send(out, clock.tick));
+  watchdog_.tick_ended();
+}
+
+void ExecutiveNode::finish_tick(const msg::SimClock& clock, std::uint32_t sent) {
+  // In lockstep the world waits for the plan: planning takes no simulated time.
+  const bool waiting = state_ == State::kWaitingForPlan || state_ == State::kSafeWaiting ||
+                       (state_ == State::kExecuting && now_ >= horizon_end_ && !next_plan_ &&
+                        horizon_end_ < mission_.horizon());
+  if (waiting && clock.mode == msg::ClockMode::Lockstep &&
+      WallClock::now() - wait_since_ < seconds(options_.plan_hold_s)) {
+    held_ = HeldTick{clock, held_ ? held_->since : WallClock::now()};
+    held_commands_ = sent;
+    spdlog::debug("tick {} held for a plan", clock.tick);
+  } else {
+    held_.reset();
+    lockstep_.acknowledge(clock.tick, sent);
+  }
+}
+
+void ExecutiveNode::ask_first() {
+  // The first horizon is asked for at the first tick with a planner there to hear it.
+  if (state_ != State::kWaitingForPlan || planner_.waiting() || !asked_purpose_.empty() ||
+      last_tick_ < 0 || planner_.planners() == 0)
+    return;
+  const Time end = config_.horizon_s > 0 ? now_ + config_.horizon_s : mission_.horizon();
+  ask_for_plan(now_, end, {}, "first horizon");
+}
+
+void ExecutiveNode::dispatch(Time now, std::vector<DeviceCommand>& out) {
+  Observations seen = telemetry_ ? observations_of(*telemetry_, now) : Observations{};
+  seen.time = now;
+  // The plan's own step first: at its horizon's end its last tokens end there.
+  if (!step_plan(seen, out)) return;
+  if (now >= horizon_end_ && next_plan_) {
+    msg::PlanningReply next = std::move(*next_plan_);
+    next_plan_.reset();
+    const Time origin = horizon_end_;
+    const Time end = std::min(origin + config_.horizon_s, mission_.horizon());
+    ++horizons_;
+    next_asked_ = false;
+    start_plan(next, origin, end, next_goals_);
+    event("horizon_joined", now, "plan " + plan_id_ + " for [" + std::to_string(origin) + ", " +
+                                     std::to_string(end) + ") s joined at " + std::to_string(now) + " s");
+    if (!step_plan(seen, out)) return;
+  }
+  if (now >= horizon_end_ && horizon_end_ >= mission_.horizon()) {
+    state_ = State::kFinished;
+    event("finished", now, std::to_string(achieved_.size()) + " goals achieved, " +
+                               std::to_string(lost_.size()) + " lost");
+    publish_status();
+    return;
+  }
+  if (!next_asked_ && horizon_end_ < mission_.horizon() &&
+      now >= horizon_end_ - config_.request_lead_s && !planner_.waiting()) {
+    next_asked_ = true;
+    ask_for_plan(horizon_end_, std::min(horizon_end_ + config_.horizon_s, mission_.horizon()),
+                 held_values(), "next horizon");
+  }
+}
+
+bool ExecutiveNode::step_plan(const Observations& seen, std::vector<DeviceCommand>& out) {
+  const auto t0 = WallClock::now();
+  Tick result = executive_->step(seen);
+  const double us = std::chrono::duration<double, std::micro>(WallClock::now() - t0).count();
+  decision_us_sum_ += us;
+  decision_us_max_ = std::max(decision_us_max_, us);
+  ++decisions_;
+  for (const ExecutiveEvent& e : result.events) {
+    event(e.kind, e.time, e.text);
+    note_goals(e);
+  }
+  for (DeviceCommand& c : result.commands) out.push_back(std::move(c));
+  for (const std::string& d : executive_->disabled_devices())
+    if (!disabled_.count(d)) disabled_[d] = "no longer commanded (a command was not confirmed)";
+  for (const std::string& s : executive_->ignored_sensors()) ignored_sensors_.insert(s);
+  if (!result.replan) return true;
+
+  // Aborted: safing is in `out`; ask for the rest of the horizon from now.
+  const ReplanRequest& r = *result.replan;
+  fault_seen_ = WallClock::now();
+  ++replans_;
+  for (const auto& [device, mode] : r.known_faults)
+    if (mode != "failed" && !disabled_.count(device)) disabled_[device] = device + " " + mode;
+  next_plan_.reset();
+  next_asked_ = false;
+  state_ = State::kSafeWaiting;
+  planner_.forget();
+  ask_for_plan(seen.time, horizon_end_, current_values(r), "replan: " + r.reason);
+  return false;
+}
+
+std::vector<msg::PlannerTimelineValue> ExecutiveNode::held_values() const {
+  std::vector<msg::PlannerTimelineValue> state;
+  const std::set<std::string> carried = mission_.state_timelines();
+  const planner::FlexiblePlan& plan = executive_->dispatcher().plan();
+  for (const planner::PlanTimeline& line : plan.timelines) {
+    if (line.tokens.empty() || !carried.count(line.name)) continue;
+    const planner::PlanToken& last = plan.tokens[line.tokens.back()];
+    // A last token that cannot last to the horizon (a thrust arc) leaves its timeline at rest.
+    auto v = last.end_ub < plan.horizon ? mission_.initial_value(line.name) : value_of(last);
+    if (v) state.push_back(*v);
+  }
+  return state;
+}
+
+std::vector<msg::PlannerTimelineValue> ExecutiveNode::current_values(const ReplanRequest& r) const {
+  std::vector<msg::PlannerTimelineValue> state;
+  for (const ReplanRequest::TimelineValue& v : r.state) {
+    bool single = true;
+    for (const std::string& p : v.parameters) single = single && !p.empty() && p.find_first_of("[{, ") == std::string::npos;
+    if (single) state.push_back({v.timeline, v.predicate, v.parameters});
+  }
+  for (const TimelineValue& safe : config_.safe_values) {
+    auto it = std::find_if(state.begin(), state.end(),
+                           [&](const auto& v) { return v.timeline == safe.timeline; });
+    msg::PlannerTimelineValue v{safe.timeline, safe.predicate, safe.parameters};
+    if (it != state.end()) *it = v;
+    else state.push_back(v);
+  }
+  return state;
+}
+
+void ExecutiveNode::ask_for_plan(Time origin, Time end, std::vector<msg::PlannerTimelineValue> state,
+                                 const std::string& purpose) {
+  std::map<std::string, std::string> impossible;
+  for (const std::string& label : mission_.goal_labels()) {
+    const std::string timeline = mission_.goal_timeline(label);
+    for (const std::string& device : config_.devices_of(timeline))
+      if (auto d = disabled_.find(device); d != disabled_.end()) impossible[timeline] = d->second;
+  }
+  std::set<std::string> settled;
+  for (const auto& [label, how] : achieved_) settled.insert(label);
+  for (const auto& [label, why] : lost_) settled.insert(label);
+  std::set<std::string> executing;
+  if (executive_ && purpose.rfind("replan", 0) == 0) {
+    const planner::FlexiblePlan& plan = executive_->dispatcher().plan();
+    for (std::size_t i = 0; i < plan.tokens.size(); ++i) {
+      const std::string& o = plan.tokens[i].origin;
+      if (o.rfind("goal ", 0) == 0 && executive_->dispatcher().executing(i)) executing.insert(o.substr(5));
+    }
+  }
+  // The next horizon leaves the current plan's goals to it.
+  const bool next_horizon = state_ == State::kExecuting;
+  if (next_horizon) settled.insert(current_goals_.begin(), current_goals_.end());
+  GoalWindowCut cut = mission_.request(origin, end, state, settled, impossible, executing);
+  asked_goals_ = cut.goals;
+  lose_goals(cut.lost, now_);
+  cut.request.engine = config_.planner_engine;
+  cut.request.budget_ms = config_.planner_budget_ms;
+  asked_origin_ = origin;
+  asked_end_ = end;
+  asked_state_ = state;
+  asked_purpose_ = purpose;
+  wait_since_ = WallClock::now();
+  std::string values;
+  for (const auto& v : state) {
+    values += (values.empty() ? "" : "; ") + v.timeline + " == " + v.predicate + "(";
+    for (std::size_t i = 0; i < v.parameters.size(); ++i) values += (i ? ", " : "") + v.parameters[i];
+    values += ")";
+  }
+  spdlog::debug("asking for [{}, {}) s from state {}", origin, end, values.empty() ? "(the problem's)" : values);
+  const std::string id = planner_.ask(std::move(cut.request), purpose);
+  event("plan_requested", now_, purpose + ": " + std::to_string(cut.goals.size()) + " goals for [" +
+                                    std::to_string(origin) + ", " + std::to_string(end) + ") s as " + id);
+}
+
+void ExecutiveNode::ask_again() {
+  // A safe spacecraft waiting in paced time plans from now, not from when it first asked.
+  Time origin = asked_origin_;
+  if (state_ == State::kSafeWaiting && now_ > origin) origin = now_;
+  const std::string why = "no reply within " + std::to_string(options_.plan_timeout_s) + " s (" +
+                          std::to_string(planner_.planners()) + " planner(s) matched)";
+  event("plan_late", now_, why + ": asking again");
+  planner_.forget();
+  ask_for_plan(origin, asked_end_, asked_state_, asked_purpose_);
+}
+
+void ExecutiveNode::on_timer() {
+  ask_first();
+  if (planner_.waiting() && planner_.waited() > seconds(options_.plan_timeout_s)) ask_again();
+  if (held_ && WallClock::now() - wait_since_ > seconds(options_.plan_hold_s)) {
+    event("plan_late", now_, "no plan within " + std::to_string(options_.plan_hold_s) +
+                                 " s: the world goes on with the spacecraft safe");
+    lockstep_.acknowledge(held_->clock.tick, held_commands_);
+    held_.reset();
+  }
+}
+
+void ExecutiveNode::on_reply() {
+  auto reply = planner_.take_reply();
+  if (!reply) return;
+  const bool for_next = state_ == State::kExecuting;
+  if (!usable(*reply)) {
+    std::string why = reply->reason.empty() ? "no usable plan" : reply->reason;
+    if (!reply->detail.empty()) why += ": " + reply->detail;
+    for (const std::string& v : reply->violations) why += "; " + v;
+    event("plan_refused", now_, reply->request_id + ": " + why);
+    if (reply->status == msg::PlanningStatus::Infeasible) {
+      // Nothing in this window can be planned as asked: its goals are lost, the rest goes on.
+      std::map<std::string, std::string> lost;
+      GoalWindowCut cut = mission_.request(asked_origin_, asked_end_, asked_state_, {}, {});
+      for (const std::string& g : cut.goals)
+        if (!achieved_.count(g)) lost[g] = "the planner found no plan: " + reply->detail;
+      lose_goals(lost, now_);
+      ask_for_plan(asked_origin_, asked_end_, asked_state_, asked_purpose_ + " (without the lost goals)");
+    }
+    return;  // otherwise the timer asks again
+  }
+  if (for_next) {
+    next_plan_ = std::move(*reply);
+    next_goals_ = asked_goals_;
+    event("plan_received", now_, next_plan_->request_id + ": next horizon from " +
+                                     std::to_string(asked_origin_) + " s, " +
+                                     std::to_string(next_plan_->plan.tokens.size()) + " tokens");
+    return;
+  }
+  const bool replan = state_ == State::kSafeWaiting;
+  start_plan(*reply, asked_origin_, asked_end_, asked_goals_);
+  if (state_ != State::kExecuting) return;
+  if (replan)
+    event("plan_executing", now_, plan_id_ + ": new plan from " + std::to_string(asked_origin_) +
+                                      " s executing " +
+                                      std::to_string(wall_s(WallClock::now() - fault_seen_)) +
+                                      " s (wall) after the fault was detected");
+  else
+    event("plan_executing", now_, plan_id_ + ": plan for [" + std::to_string(asked_origin_) + ", " +
+                                      std::to_string(asked_end_) + ") s executing");
+  if (held_) {  // finish the held tick with the new plan's first commands (or hold it again)
+    const msg::SimClock clock = held_->clock;
+    watchdog_.tick_started();
+    std::vector<DeviceCommand> out;
+    dispatch(now_, out);
+    finish_tick(clock, held_commands_ + spacecraft_.send(out, clock.tick));
+    watchdog_.tick_ended();
+  }
+  publish_status();
+}
+
+void ExecutiveNode::start_plan(const msg::PlanningReply& reply, Time origin, Time horizon_end,
+                               const std::vector<std::string>& goals) {
+  std::string error;
+  auto next = Executive::create(planner::from_plan_message(reply.plan), config_.command_map(),
+                                config_.fault_table(), ExecutiveOptions{config_.safing}, origin, &error);
+  if (!next) {
+    event("plan_refused", now_, reply.request_id + ": not dispatchable: " + error);
+    return;  // the timer asks again
+  }
+  for (const auto& [device, why] : disabled_) next->disable_device(device);
+  for (const std::string& s : ignored_sensors_) next->ignore_sensor(s);
+  executive_ = std::move(next);
+  current_goals_ = goals;
+  plan_id_ = reply.request_id;
+  plan_origin_ = origin;
+  horizon_end_ = horizon_end;
+  state_ = State::kExecuting;
+  decision_us_sum_ = decision_us_max_ = 0;
+  decisions_ = 0;
+  std::map<std::string, std::string> omitted;
+  for (const std::string& g : reply.plan.omitted_goals) omitted[g] = "left out by the planner (optional)";
+  lose_goals(omitted, now_);
+}
+
+void ExecutiveNode::note_goals(const ExecutiveEvent& e) {
+  if (e.kind != "goal_achieved" && e.kind != "goal_lost") return;
+  const std::string label = e.text.substr(0, e.text.find(':'));
+  if (e.kind == "goal_achieved")
+    achieved_[label] = e.text;
+  else
+    lost_[label] = e.text;
+}
+
+void ExecutiveNode::lose_goals(const std::map<std::string, std::string>& lost, Time now) {
+  for (const auto& [label, why] : lost) {
+    if (achieved_.count(label) || lost_.count(label)) continue;
+    lost_[label] = why;
+    event("goal_lost", now, label + ": " + why);
+  }
+}
+
+void ExecutiveNode::publish_status() {
+  msg::ExecutiveStatus s;
+  s.executive = name_;
+  s.state = state_name();
+  s.plan_id = plan_id_;
+  s.tick = last_tick_;
+  s.plan_origin_s = plan_origin_;
+  s.horizon_end_s = horizon_end_;
+  if (executive_ && state_ == State::kExecuting) s.executing = executive_->executing();
+  for (const auto& [label, how] : achieved_) s.goals_achieved.push_back(label);
+  for (const auto& [label, why] : lost_) s.goals_lost.push_back(label + ": " + why);
+  for (const auto& [device, why] : disabled_) s.disabled_devices.push_back(device);
+  s.ignored_sensors.assign(ignored_sensors_.begin(), ignored_sensors_.end());
+  s.replans = replans_;
+  s.horizons = horizons_;
+  s.decision_us_mean = decisions_ ? decision_us_sum_ / static_cast<double>(decisions_) : 0;
+  s.decision_us_max = decision_us_max_;
+  s.watchdog_alarm = watchdog_.alarmed();
+  status_writer_.write(s);
+}
+
+void ExecutiveNode::safe_from_watchdog(WallClock::duration busy) {
+  // Runs on the watchdog's thread while the loop is stuck: only writes samples.
+  spdlog::error("watchdog: a tick has been in progress for {:.2f} s: safing the spacecraft", wall_s(busy));
+  std::uint64_t n = 0;
+  for (const DeviceCommand& c : config_.safing) {
+    msg::SpacecraftCommand m{name_ + "-watchdog-" + std::to_string(++n), name_ + "-watchdog", 0,
+                             c.device, c.command, c.arguments};
+    spacecraft_.write_unrecorded(m);
+  }
+  msg::ExecutiveEvent e{name_, 0, watched_tick_.load(), 0, "watchdog",
+                        "dispatch stalled for " + std::to_string(wall_s(busy)) + " s: spacecraft safed", ""};
+  event_writer_.write(e);
+}
+
+}  // namespace autonomy::executive

@@ -1,0 +1,132 @@
+#pragma once
+// The executive's thin DDS shell: one event loop, lockstep ticks, the spacecraft link, the
+// planner link and the watchdog around the pure core (services/executive/core) and the mission
+// (services/executive/planning).
+//
+// Life of a run:
+//   waiting_for_plan   the first horizon's plan is asked for; in lockstep the first tick is
+//                      held (not acknowledged) for at most --plan-hold-s so that planning takes
+//                      no simulated time, then the world goes on with the spacecraft safe
+//   executing          each tick: telemetry -> confirmations -> Executive::step -> commands,
+//                      events; the next horizon is asked for request_lead_s before this one
+//                      ends and joined at its end (its origin is this plan's end: no gap)
+//   safe_waiting_for_plan
+//                      after an abort (safing sent): the rest of the horizon is asked for
+//                      from now, with the current values as state, the faulty devices never
+//                      commanded again; the tick is held as above; an unanswered request is
+//                      sent again every --plan-timeout-s (the planner may have died)
+//   finished           the mission's horizon is over
+// Every response, plan and goal is an event on autonomy/executive/event; the status
+// (autonomy/executive/status) follows every change and every second.
+#include <atomic>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+
+#include "common/dds/topics.hpp"
+#include "common/dds/writer.hpp"
+#include "common/service/lockstep_client.hpp"
+#include "common/service/service.hpp"
+#include "executive.hpp"
+#include "executive_config.hpp"
+#include "mission.hpp"
+#include "planner_link.hpp"
+#include "spacecraft_link.hpp"
+#include "watchdog.hpp"
+
+namespace autonomy::executive {
+
+struct ExecutiveNodeOptions {
+  std::string config_path;
+  std::string spacecraft;      // telemetry instance; "" = any
+  double plan_timeout_s = 5;   // ask again when a request stays unanswered this long (wall)
+  double plan_hold_s = 2;      // hold a lockstep tick at most this long for a plan (wall)
+  double watchdog_s = 2;       // a tick handler running longer raises the alarm and safes
+};
+
+class ExecutiveNode {
+ public:
+  ExecutiveNode(service::Service& service, ExecutiveNodeOptions options, ExecutiveConfig config,
+                Mission mission);
+  ExecutiveNode(const ExecutiveNode&) = delete;
+  ExecutiveNode& operator=(const ExecutiveNode&) = delete;
+
+ private:
+  enum class State { kWaitingForPlan, kExecuting, kSafeWaiting, kFinished };
+  struct HeldTick {
+    msg::SimClock clock;
+    PlannerLink::Clock::time_point since;
+  };
+
+  void on_tick(const msg::SimClock& clock);
+  void run_tick(const msg::SimClock& clock);  // the tick's work and its acknowledgement
+  // Acknowledges the tick with `sent` commands, or holds it while a plan is awaited.
+  void finish_tick(const msg::SimClock& clock, std::uint32_t sent);
+  void dispatch(Time now, std::vector<DeviceCommand>& out);
+  bool step_plan(const Observations& seen, std::vector<DeviceCommand>& out);  // false: aborted
+  void on_reply();
+  void on_timer();
+  void ask_first();
+  bool accept(const msg::PlanningReply& reply, Time now);
+  void start_plan(const msg::PlanningReply& reply, Time origin, Time horizon_end,
+                  const std::vector<std::string>& goals);
+  void ask_for_plan(Time origin, Time end, std::vector<msg::PlannerTimelineValue> state,
+                    const std::string& purpose);
+  void ask_again();
+  std::vector<msg::PlannerTimelineValue> held_values() const;  // the plan's values at its end
+  std::vector<msg::PlannerTimelineValue> current_values(const ReplanRequest& r) const;
+  void note_goals(const ExecutiveEvent& e);
+  void lose_goals(const std::map<std::string, std::string>& lost, Time now);
+  void event(const std::string& kind, Time now, const std::string& text);
+  void publish_status();
+  void safe_from_watchdog(PlannerLink::Clock::duration busy);
+  const char* state_name() const;
+
+  service::Service& service_;
+  ExecutiveNodeOptions options_;
+  ExecutiveConfig config_;
+  Mission mission_;
+  std::string name_;
+  SpacecraftLink spacecraft_;
+  PlannerLink planner_;
+  dds::Topic<msg::ExecutiveEvent> event_topic_;
+  dds::Topic<msg::ExecutiveStatus> status_topic_;
+  dds::Writer<msg::ExecutiveEvent> event_writer_;
+  dds::Writer<msg::ExecutiveStatus> status_writer_;
+  service::LockstepClient lockstep_;
+
+  State state_ = State::kWaitingForPlan;
+  std::unique_ptr<Executive> executive_;
+  std::string plan_id_;
+  Time plan_origin_ = 0, horizon_end_ = 0;
+  std::optional<msg::PlanningReply> next_plan_;  // the next horizon's, until it is joined
+  std::vector<std::string> next_goals_;           // the goals it was asked for
+  std::vector<std::string> current_goals_;        // those the executing plan was asked for
+  std::vector<std::string> asked_goals_;          // those of the outstanding request
+  bool next_asked_ = false;
+  Time asked_origin_ = 0, asked_end_ = 0;
+  std::vector<msg::PlannerTimelineValue> asked_state_;
+  std::string asked_purpose_;
+  std::optional<HeldTick> held_;
+  std::uint32_t held_commands_ = 0;      // already sent for the held tick
+  PlannerLink::Clock::time_point wait_since_ = PlannerLink::Clock::now();  // for a plan
+  std::optional<msg::SpacecraftTelemetry> telemetry_;
+  std::int64_t last_tick_ = -1;
+  std::atomic<std::int64_t> watched_tick_{-1};  // last_tick_ for the watchdog's thread
+  Time now_ = 0;
+
+  std::map<std::string, std::string> disabled_;  // device -> why (known faults)
+  std::set<std::string> ignored_sensors_;
+  std::map<std::string, std::string> achieved_, lost_;  // goal label -> how
+  std::uint64_t events_ = 0;
+  unsigned replans_ = 0, horizons_ = 0;
+  double decision_us_sum_ = 0, decision_us_max_ = 0;
+  std::uint64_t decisions_ = 0;
+  PlannerLink::Clock::time_point fault_seen_{};  // wall time of the last abort, for its figure
+
+  Watchdog watchdog_;  // last: its thread starts when everything above exists
+};
+
+}  // namespace autonomy::executive

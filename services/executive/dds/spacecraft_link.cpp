@@ -1,0 +1,71 @@
+#include "spacecraft_link.hpp"
+
+namespace autonomy::executive {
+
+SpacecraftLink::SpacecraftLink(const dds::Participant& participant, std::string source,
+                               std::string spacecraft)
+    : source_(std::move(source)),
+      spacecraft_(std::move(spacecraft)),
+      telemetry_topic_(participant, dds::topics::spacecraft_telemetry),
+      command_topic_(participant, dds::topics::spacecraft_command),
+      status_topic_(participant, dds::topics::spacecraft_command_status),
+      telemetry_reader_(participant, telemetry_topic_),
+      status_reader_(participant, status_topic_),
+      command_writer_(participant, command_topic_) {}
+
+std::optional<msg::SpacecraftTelemetry> SpacecraftLink::take_telemetry() {
+  std::optional<msg::SpacecraftTelemetry> newest;
+  for (auto& s : telemetry_reader_.take()) {
+    if (!s.valid || (!spacecraft_.empty() && s.value.spacecraft != spacecraft_)) continue;
+    if (!newest || s.value.tick >= newest->tick) newest = std::move(s.value);
+  }
+  return newest;
+}
+
+std::vector<Confirmation> SpacecraftLink::confirmations(const msg::SpacecraftTelemetry& t) {
+  std::vector<Confirmation> out;
+  for (const msg::DeviceReport& d : t.devices) {
+    auto it = unconfirmed_.find(d.confirmed_command_id);
+    if (it == unconfirmed_.end()) continue;
+    out.push_back({it->second.first, it->second.second, it->first});
+    unconfirmed_.erase(it);
+  }
+  return out;
+}
+
+std::vector<std::string> SpacecraftLink::take_rejections() {
+  std::vector<std::string> out;
+  for (auto& s : status_reader_.take()) {
+    if (!s.valid || s.value.source != source_ || s.value.accepted) continue;
+    out.push_back(s.value.device + " " + s.value.command + " (" + s.value.command_id +
+                  ") rejected: " + s.value.reason);
+  }
+  return out;
+}
+
+std::uint32_t SpacecraftLink::send(const std::vector<DeviceCommand>& commands, std::int64_t tick) {
+  std::uint32_t sent = 0;
+  for (const DeviceCommand& c : commands) {
+    msg::SpacecraftCommand m;
+    m.command_id = source_ + "-" + std::to_string(next_id_++);
+    m.source = source_;
+    m.tick = tick;
+    m.device = c.device;
+    m.command = c.command;
+    m.arguments = c.arguments;
+    unconfirmed_[m.command_id] = {c.device, c.command};
+    command_writer_.write(m);
+    ++sent;
+  }
+  return sent;
+}
+
+Observations observations_of(const msg::SpacecraftTelemetry& t, Time now) {
+  Observations o;
+  o.time = now;
+  for (const msg::DeviceReport& d : t.devices) o.device_modes[d.device] = d.mode;
+  for (const msg::SensorReading& r : t.readings) o.readings[r.sensor] = r.value;
+  return o;
+}
+
+}  // namespace autonomy::executive
