@@ -7,7 +7,7 @@ bool is_initial(const planner::PlanToken& t) {
   return t.origin.rfind("initial", 0) == 0;
 }
 bool is_goal(const planner::PlanToken& t) {
-  return t.origin.find("goal") != std::string::npos;
+  return !goal_label(t.origin).empty();
 }
 
 std::string describe(const planner::PlanToken& t) {
@@ -23,6 +23,14 @@ std::string describe(const DeviceCommand& c) {
 }
 
 }  // namespace
+
+std::string goal_label(const std::string& origin) {
+  // "goal <label>" first, then what merged into it ("; <relation> of token <id>").
+  if (origin.rfind("goal", 0) != 0) return "";
+  const std::string rest = origin.substr(4, origin.find(';') - 4);
+  const std::size_t first = rest.find_first_not_of(' ');
+  return first == std::string::npos ? "goal" : rest.substr(first);
+}
 
 std::unique_ptr<Executive> Executive::create(planner::FlexiblePlan plan, CommandMap commands,
                                              std::vector<std::unique_ptr<FaultResponse>> faults,
@@ -83,9 +91,7 @@ void Executive::stop_commanding(const std::string& device) {
 
 void Executive::goal_ended(std::size_t token, Time now, Tick* tick) {
   const planner::PlanToken& t = dispatcher_.plan().tokens[token];
-  const std::size_t at = t.origin.find("goal ");
-  const std::string label =
-      at == std::string::npos ? "#" + std::to_string(t.id) : t.origin.substr(at + 5);
+  const std::string label = goal_label(t.origin);
   auto why = uncommanded_.find(token);
   if (why == uncommanded_.end())
     tick->events.push_back({"goal_achieved", now, label + ": " + describe(t)});

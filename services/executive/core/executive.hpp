@@ -49,6 +49,10 @@ struct ExecutiveOptions {
   std::vector<DeviceCommand> safing;  // sent on abort (e.g. camera off, engine standby)
 };
 
+// The label of the goal a token achieves ("goal down1; containedBy of token 22" -> "down1"),
+// "" when it achieves none.
+std::string goal_label(const std::string& origin);
+
 class Executive {
  public:
   // Checks the plan (its network must be consistent); nullptr with a reason otherwise.

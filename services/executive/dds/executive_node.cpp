@@ -111,6 +111,8 @@ void ExecutiveNode::run_tick(const msg::SimClock& clock) {
 
   std::vector<DeviceCommand> out;
   ask_first();
+  settle();
+  reask();
   if (state_ == State::kExecuting) dispatch(now_, out);
   finish_tick(clock, spacecraft_.send(out, clock.tick));
   watchdog_.tick_ended();
@@ -121,8 +123,8 @@ void ExecutiveNode::finish_tick(const msg::SimClock& clock, std::uint32_t sent) 
   const bool waiting = state_ == State::kWaitingForPlan || state_ == State::kSafeWaiting ||
                        (state_ == State::kExecuting && now_ >= horizon_end_ && !next_plan_ &&
                         horizon_end_ < mission_.horizon());
-  if (waiting && clock.mode == msg::ClockMode::Lockstep &&
-      WallClock::now() - wait_since_ < seconds(options_.plan_hold_s)) {
+  if (waiting && (state_ == State::kWaitingForPlan || planner_.waiting()) &&
+      clock.mode == msg::ClockMode::Lockstep && WallClock::now() - wait_since_ < seconds(options_.plan_hold_s)) {
     held_ = HeldTick{clock, held_ ? held_->since : WallClock::now()};
     held_commands_ = sent;
     spdlog::debug("tick {} held for a plan", clock.tick);
@@ -174,6 +176,8 @@ void ExecutiveNode::dispatch(Time now, std::vector<DeviceCommand>& out) {
 }
 
 bool ExecutiveNode::step_plan(const Observations& seen, std::vector<DeviceCommand>& out) {
+  if (seen.time == stepped_at_) return true;  // a held tick finished later: stepped already
+  stepped_at_ = seen.time;
   const auto t0 = WallClock::now();
   Tick result = executive_->step(seen);
   const double us = std::chrono::duration<double, std::micro>(WallClock::now() - t0).count();
@@ -200,8 +204,46 @@ bool ExecutiveNode::step_plan(const Observations& seen, std::vector<DeviceComman
   next_asked_ = false;
   state_ = State::kSafeWaiting;
   planner_.forget();
-  ask_for_plan(seen.time, horizon_end_, current_values(r), "replan: " + r.reason);
+  // A token the world ends (a turn) goes on after the abort: the new plan starts from where
+  // it arrives, once it has (its report), not from a value no plan can start with.
+  settle_state_ = current_values(r);
+  settle_purpose_ = "replan: " + r.reason;
+  settling_.clear();
+  const planner::FlexiblePlan& plan = executive_->dispatcher().plan();
+  const CommandMap map = config_.command_map();
+  for (const planner::PlanTimeline& line : plan.timelines)
+    for (std::size_t k = 0; k + 1 < line.tokens.size(); ++k) {
+      const std::size_t i = line.tokens[k];
+      const CommandRule* rule = map.rule_for(plan.tokens[i]);
+      if (!executive_->dispatcher().executing(i) || !rule || rule->end_mode.empty() || disabled_.count(rule->device))
+        continue;
+      auto after = value_of(plan.tokens[line.tokens[k + 1]]);
+      if (!after) continue;
+      for (auto& v : settle_state_)
+        if (v.timeline == line.name) v = *after;
+      settling_[rule->device] = rule->end_mode;
+    }
+  settle_deadline_ = seen.time + kSettleLimit;
+  if (settling_.empty()) {
+    ask_for_plan(seen.time, horizon_end_for(seen.time), settle_state_, settle_purpose_);
+  } else {
+    std::string what;
+    for (const auto& [device, mode] : settling_) what += (what.empty() ? "" : ", ") + device + " " + mode;
+    event("settling", seen.time, "replanning once " + what + " (at most " + std::to_string(kSettleLimit) + " s)");
+  }
   return false;
+}
+
+void ExecutiveNode::settle() {
+  if (state_ != State::kSafeWaiting || settling_.empty() || !telemetry_) return;
+  for (const msg::DeviceReport& d : telemetry_->devices) {
+    auto it = settling_.find(d.device);
+    if (it != settling_.end() && it->second == d.mode) settling_.erase(it);
+  }
+  if (!settling_.empty() && now_ < settle_deadline_) return;
+  if (!settling_.empty()) event("settling", now_, "not settled in time: replanning anyway");
+  settling_.clear();
+  ask_for_plan(now_, horizon_end_for(now_), settle_state_, settle_purpose_);
 }
 
 std::vector<msg::PlannerTimelineValue> ExecutiveNode::held_values() const {
@@ -219,8 +261,12 @@ std::vector<msg::PlannerTimelineValue> ExecutiveNode::held_values() const {
 }
 
 std::vector<msg::PlannerTimelineValue> ExecutiveNode::current_values(const ReplanRequest& r) const {
+  // The spacecraft's state timelines carry their current value; on the others (a ground
+  // station's schedule) the goal under way is asked for again from now instead.
   std::vector<msg::PlannerTimelineValue> state;
+  const std::set<std::string> carried = mission_.state_timelines();
   for (const ReplanRequest::TimelineValue& v : r.state) {
+    if (!carried.count(v.timeline)) continue;
     bool single = true;
     for (const std::string& p : v.parameters) single = single && !p.empty() && p.find_first_of("[{, ") == std::string::npos;
     if (single) state.push_back({v.timeline, v.predicate, v.parameters});
@@ -236,7 +282,7 @@ std::vector<msg::PlannerTimelineValue> ExecutiveNode::current_values(const Repla
 }
 
 void ExecutiveNode::ask_for_plan(Time origin, Time end, std::vector<msg::PlannerTimelineValue> state,
-                                 const std::string& purpose) {
+                                 const std::string& purpose, bool every_goal_optional) {
   std::map<std::string, std::string> impossible;
   for (const std::string& label : mission_.goal_labels()) {
     const std::string timeline = mission_.goal_timeline(label);
@@ -250,15 +296,16 @@ void ExecutiveNode::ask_for_plan(Time origin, Time end, std::vector<msg::Planner
   if (executive_ && purpose.rfind("replan", 0) == 0) {
     const planner::FlexiblePlan& plan = executive_->dispatcher().plan();
     for (std::size_t i = 0; i < plan.tokens.size(); ++i) {
-      const std::string& o = plan.tokens[i].origin;
-      if (o.rfind("goal ", 0) == 0 && executive_->dispatcher().executing(i)) executing.insert(o.substr(5));
+      const std::string label = goal_label(plan.tokens[i].origin);
+      if (!label.empty() && executive_->dispatcher().executing(i)) executing.insert(label);
     }
   }
   // The next horizon leaves the current plan's goals to it.
   const bool next_horizon = state_ == State::kExecuting;
   if (next_horizon) settled.insert(current_goals_.begin(), current_goals_.end());
-  GoalWindowCut cut = mission_.request(origin, end, state, settled, impossible, executing);
+  GoalWindowCut cut = mission_.request(origin, end, state, settled, impossible, executing, every_goal_optional);
   asked_goals_ = cut.goals;
+  asked_optional_ = every_goal_optional;
   lose_goals(cut.lost, now_);
   cut.request.engine = config_.planner_engine;
   cut.request.budget_ms = config_.planner_budget_ms;
@@ -275,19 +322,39 @@ void ExecutiveNode::ask_for_plan(Time origin, Time end, std::vector<msg::Planner
   }
   spdlog::debug("asking for [{}, {}) s from state {}", origin, end, values.empty() ? "(the problem's)" : values);
   const std::string id = planner_.ask(std::move(cut.request), purpose);
-  event("plan_requested", now_, purpose + ": " + std::to_string(cut.goals.size()) + " goals for [" +
+  event("plan_requested", now_, purpose + ": " + std::to_string(cut.goals.size()) +
+                                    (every_goal_optional ? " goals, each optional, for [" : " goals for [") +
                                     std::to_string(origin) + ", " + std::to_string(end) + ") s as " + id);
 }
 
 void ExecutiveNode::ask_again() {
-  // A safe spacecraft waiting in paced time plans from now, not from when it first asked.
-  Time origin = asked_origin_;
-  if (state_ == State::kSafeWaiting && now_ > origin) origin = now_;
   const std::string why = "no reply within " + std::to_string(options_.plan_timeout_s) + " s (" +
                           std::to_string(planner_.planners()) + " planner(s) matched)";
   event("plan_late", now_, why + ": asking again");
   planner_.forget();
-  ask_for_plan(origin, asked_end_, asked_state_, asked_purpose_);
+  if (state_ == State::kExecuting) {  // the next horizon: its origin does not move
+    ask_for_plan(asked_origin_, asked_end_, asked_state_, asked_purpose_, asked_optional_);
+    return;
+  }
+  // A safe spacecraft plans from the tick it is at; a tick already answered is past, so the
+  // request waits for the next one (which it then holds) unless one is held now.
+  reask_ = true;
+  if (held_) reask();
+}
+
+void ExecutiveNode::reask() {
+  if (!reask_) return;
+  reask_ = false;
+  const Time origin = std::max(asked_origin_, now_);
+  ask_for_plan(origin, horizon_end_for(origin), asked_state_, asked_purpose_, asked_optional_);
+}
+
+Time ExecutiveNode::horizon_end_for(Time now) const {
+  // After a long wait the horizon may be over: plan to the end of the one `now` lies in.
+  const Time length = config_.horizon_s > 0 ? config_.horizon_s : mission_.horizon();
+  Time end = std::max<Time>(horizon_end_, 0);
+  while (end <= now && end < mission_.horizon()) end = std::min(end + length, mission_.horizon());
+  return end;
 }
 
 void ExecutiveNode::on_timer() {
@@ -310,12 +377,13 @@ void ExecutiveNode::on_reply() {
     if (!reply->detail.empty()) why += ": " + reply->detail;
     for (const std::string& v : reply->violations) why += "; " + v;
     event("plan_refused", now_, reply->request_id + ": " + why);
-    if (reply->status == msg::PlanningStatus::Infeasible) {
-      // Nothing in this window can be planned as asked: its goals are lost, the rest goes on.
+    if (reply->status == msg::PlanningStatus::Infeasible && !asked_optional_) {
+      // Not every goal can be had (a fault took what some need): the planner may leave goals
+      // out and keeps the rest.
+      ask_for_plan(asked_origin_, asked_end_, asked_state_, asked_purpose_, true);
+    } else if (reply->status == msg::PlanningStatus::Infeasible) {
       std::map<std::string, std::string> lost;
-      GoalWindowCut cut = mission_.request(asked_origin_, asked_end_, asked_state_, {}, {});
-      for (const std::string& g : cut.goals)
-        if (!achieved_.count(g)) lost[g] = "the planner found no plan: " + reply->detail;
+      for (const std::string& g : asked_goals_) lost[g] = "the planner found no plan: " + reply->detail;
       lose_goals(lost, now_);
       ask_for_plan(asked_origin_, asked_end_, asked_state_, asked_purpose_ + " (without the lost goals)");
     }
@@ -327,6 +395,7 @@ void ExecutiveNode::on_reply() {
     event("plan_received", now_, next_plan_->request_id + ": next horizon from " +
                                      std::to_string(asked_origin_) + " s, " +
                                      std::to_string(next_plan_->plan.tokens.size()) + " tokens");
+    finish_held_tick();  // a tick at the horizon's end waited for it
     return;
   }
   const bool replan = state_ == State::kSafeWaiting;
@@ -340,15 +409,18 @@ void ExecutiveNode::on_reply() {
   else
     event("plan_executing", now_, plan_id_ + ": plan for [" + std::to_string(asked_origin_) + ", " +
                                       std::to_string(asked_end_) + ") s executing");
-  if (held_) {  // finish the held tick with the new plan's first commands (or hold it again)
-    const msg::SimClock clock = held_->clock;
-    watchdog_.tick_started();
-    std::vector<DeviceCommand> out;
-    dispatch(now_, out);
-    finish_tick(clock, held_commands_ + spacecraft_.send(out, clock.tick));
-    watchdog_.tick_ended();
-  }
+  finish_held_tick();  // with the new plan's first commands (or hold it again)
   publish_status();
+}
+
+void ExecutiveNode::finish_held_tick() {
+  if (!held_) return;
+  const msg::SimClock clock = held_->clock;
+  watchdog_.tick_started();
+  std::vector<DeviceCommand> out;
+  if (state_ == State::kExecuting) dispatch(now_, out);
+  finish_tick(clock, held_commands_ + spacecraft_.send(out, clock.tick));
+  watchdog_.tick_ended();
 }
 
 void ExecutiveNode::start_plan(const msg::PlanningReply& reply, Time origin, Time horizon_end,
@@ -363,6 +435,7 @@ void ExecutiveNode::start_plan(const msg::PlanningReply& reply, Time origin, Tim
   for (const auto& [device, why] : disabled_) next->disable_device(device);
   for (const std::string& s : ignored_sensors_) next->ignore_sensor(s);
   executive_ = std::move(next);
+  stepped_at_ = -1;
   current_goals_ = goals;
   plan_id_ = reply.request_id;
   plan_origin_ = origin;
@@ -371,7 +444,9 @@ void ExecutiveNode::start_plan(const msg::PlanningReply& reply, Time origin, Tim
   decision_us_sum_ = decision_us_max_ = 0;
   decisions_ = 0;
   std::map<std::string, std::string> omitted;
-  for (const std::string& g : reply.plan.omitted_goals) omitted[g] = "left out by the planner (optional)";
+  for (const std::string& g : reply.plan.omitted_goals)
+    omitted[g] = asked_optional_ ? "left out by the planner: no plan has it with the faults known"
+                                 : "left out by the planner (optional)";
   lose_goals(omitted, now_);
 }
 

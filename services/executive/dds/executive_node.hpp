@@ -68,13 +68,17 @@ class ExecutiveNode {
   bool step_plan(const Observations& seen, std::vector<DeviceCommand>& out);  // false: aborted
   void on_reply();
   void on_timer();
+  void settle();  // after an abort: ask for the new plan once world-ended tokens have ended
   void ask_first();
   bool accept(const msg::PlanningReply& reply, Time now);
   void start_plan(const msg::PlanningReply& reply, Time origin, Time horizon_end,
                   const std::vector<std::string>& goals);
   void ask_for_plan(Time origin, Time end, std::vector<msg::PlannerTimelineValue> state,
-                    const std::string& purpose);
+                    const std::string& purpose, bool every_goal_optional = false);
+  void finish_held_tick();
   void ask_again();
+  void reask();                           // a late request asked again, at a tick
+  Time horizon_end_for(Time now) const;
   std::vector<msg::PlannerTimelineValue> held_values() const;  // the plan's values at its end
   std::vector<msg::PlannerTimelineValue> current_values(const ReplanRequest& r) const;
   void note_goals(const ExecutiveEvent& e);
@@ -105,10 +109,12 @@ class ExecutiveNode {
   std::vector<std::string> next_goals_;           // the goals it was asked for
   std::vector<std::string> current_goals_;        // those the executing plan was asked for
   std::vector<std::string> asked_goals_;          // those of the outstanding request
+  bool asked_optional_ = false;                   // ...asked for as optional (after infeasible)
   bool next_asked_ = false;
   Time asked_origin_ = 0, asked_end_ = 0;
   std::vector<msg::PlannerTimelineValue> asked_state_;
   std::string asked_purpose_;
+  bool reask_ = false;
   std::optional<HeldTick> held_;
   std::uint32_t held_commands_ = 0;      // already sent for the held tick
   PlannerLink::Clock::time_point wait_since_ = PlannerLink::Clock::now();  // for a plan
@@ -116,6 +122,13 @@ class ExecutiveNode {
   std::int64_t last_tick_ = -1;
   std::atomic<std::int64_t> watched_tick_{-1};  // last_tick_ for the watchdog's thread
   Time now_ = 0;
+
+  static constexpr Time kSettleLimit = 900;      // s of simulated time
+  std::map<std::string, std::string> settling_;  // device -> the mode that ends its token
+  std::vector<msg::PlannerTimelineValue> settle_state_;
+  std::string settle_purpose_;
+  Time settle_deadline_ = 0;
+  Time stepped_at_ = -1;                          // the current plan's last step
 
   std::map<std::string, std::string> disabled_;  // device -> why (known faults)
   std::set<std::string> ignored_sensors_;

@@ -92,7 +92,8 @@ GoalWindowCut Mission::request(MissionTime origin, MissionTime end,
                                const std::vector<msg::PlannerTimelineValue>& state,
                                const std::set<std::string>& settled,
                                const std::map<std::string, std::string>& impossible,
-                               const std::set<std::string>& executing) const {
+                               const std::set<std::string>& executing,
+                               bool every_goal_optional) const {
   GoalWindowCut cut;
   end = std::min(end, problem_.horizon());
   pb::Problem p = problem_;
@@ -117,6 +118,10 @@ GoalWindowCut Mission::request(MissionTime origin, MissionTime end,
         (g.has_end() && !shift(g.mutable_end(), origin))) {
       cut.lost[goal.label()] = "its window closed before " + std::to_string(origin) + " s";
       continue;
+    }
+    if (every_goal_optional && !g.optional()) {
+      g.set_optional(true);
+      g.set_penalty(1);
     }
     kept.insert(g.label());
     cut.goals.push_back(g.label());

@@ -46,12 +46,14 @@ class Mission {
   // start can still be at or after `origin` and may begin before `end`; the timelines in
   // `impossible` (their device is no longer commanded) get none. Goals in `executing` (begun
   // under the plan being replaced) start again at plan time 0. `state` replaces initial
-  // values (plan time 0 = origin).
+  // values (plan time 0 = origin). `every_goal_optional`: after an infeasible answer, the
+  // planner may leave goals out (penalty 1 each) and keeps what the faults still allow.
   GoalWindowCut request(MissionTime origin, MissionTime end,
                         const std::vector<msg::PlannerTimelineValue>& state,
                         const std::set<std::string>& settled,
                         const std::map<std::string, std::string>& impossible,
-                        const std::set<std::string>& executing = {}) const;
+                        const std::set<std::string>& executing = {},
+                        bool every_goal_optional = false) const;
   // Timelines the problem gives an initial value: the spacecraft's state, carried from one
   // plan into the next (the others, like a ground-station schedule, come from goals).
   std::set<std::string> state_timelines() const;

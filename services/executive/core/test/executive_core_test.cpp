@@ -849,3 +849,17 @@ TEST(ModeIdentification, AsAResponseItActsOnStableDiagnosesOnce) {
 
 }  // namespace
 }  // namespace autonomy::executive
+
+namespace autonomy::executive {
+namespace {
+
+TEST(GoalLabel, IsTheGoalsOwnLabelWhateverMergedIntoIt) {
+  EXPECT_EQ(goal_label("goal down1"), "down1");
+  EXPECT_EQ(goal_label("goal pass1; containedBy of token 22"), "pass1");
+  EXPECT_EQ(goal_label("goal"), "goal");
+  EXPECT_EQ(goal_label("initial dsone.camera"), "");
+  EXPECT_EQ(goal_label("before of token 3"), "");
+}
+
+}  // namespace
+}  // namespace autonomy::executive

@@ -112,5 +112,26 @@ TEST(Mission, EveryHorizonOfTheDayIsPlannedFromTheLastOnesValues) {
   EXPECT_EQ(settled.size(), m.goal_labels().size());
 }
 
+// With the camera no longer commanded (stuck on), the second block is planned without its
+// pictures, and without the downlink that needed them.
+TEST(Mission, AHorizonWithoutTheCamerasGoalsIsPlanned) {
+  const Mission m = ds1("ds1-4h.problem");
+  const std::set<std::string> first = {"hidden1", "pass1", "thrust1", "nav1_1", "nav1_2",
+                                       "nav1_3", "nav1_4", "down1"};
+  const std::vector<msg::PlannerTimelineValue> state = {
+      {"dsone.engine", "off", {}}, {"dsone.camera", "ready", {}}, {"dsone.attitude", "pointAt", {"earth"}}};
+  GoalWindowCut cut = m.request(7200, 14400, state, first, {{"dsone.camera", "camera imaging"}});
+  EXPECT_EQ(cut.goals, (std::vector<std::string>{"hidden2", "pass2", "thrust2", "down2"}));
+  EXPECT_EQ(cut.lost.size(), 4u);
+  // Downlinks need pictures (storage): as asked, the horizon has no plan...
+  EXPECT_EQ(plan(cut).status, msg::PlanningStatus::Infeasible);
+  // ...with every goal optional the planner keeps what the stuck camera still allows.
+  cut = m.request(7200, 14400, state, first, {{"dsone.camera", "camera imaging"}}, {}, true);
+  EXPECT_TRUE(goal(problem_of(cut), "thrust2")->optional());
+  const msg::PlanningReply reply = plan(cut);
+  ASSERT_TRUE(reply.has_plan) << reply.reason << " " << reply.detail;
+  EXPECT_EQ(reply.plan.omitted_goals, std::vector<std::string>{"down2"});
+}
+
 }  // namespace
 }  // namespace autonomy::executive

@@ -1,0 +1,332 @@
+// The Remote Agent Experiment of May 1999, reproduced over DDS: the planner, the executive and
+// the simulator (deploy/scenarios/ds1.pbtxt) as separate processes, in lockstep, flying the first
+// four hours of the DS1-like day (services/executive/examples/ds1-4h.pbtxt: two plans of two
+// hours each). The five faults of the experiment are switched on in the scenario one at a time
+// and all together; each test asserts the executive's response, what it did not do, and that
+// every goal a fault did not make impossible is achieved. A last test kills the planner while
+// a replan is owed and restarts it: the spacecraft stays safe and the executive asks again.
+//
+//   domain  test
+//   ------  -----------------------------------------------------------
+//    210    ExecutiveTest.WithoutFaultsEveryGoalIsAchievedAndTheHorizonsJoinWithoutAGap
+//    211    ExecutiveTest.CameraStuckOnAbortsSafesAndTheNewPlanGoesOnWithoutTheCamera
+//    212    ExecutiveTest.AFailedElectronicsUnitIsResetWithoutReplanning
+//    213    ExecutiveTest.AFalsePowerSensorIsRecognisedAndIgnored
+//    214    ExecutiveTest.AThrusterStuckClosedSwitchesTheAttitudeControlMode
+//    215    ExecutiveTest.AnUnconfirmedEngineCommandStopsCommandingTheEngineOnly
+//    216    ExecutiveTest.AllFiveFaultsTogetherEachGetTheirResponse
+//    217    ExecutiveTest.APlannerKilledMidReplanIsAskedAgainAndTheSpacecraftStaysSafe
+// (ctest names them integration.<suite>.<test>.)
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <csignal>
+#include <optional>
+#include <regex>
+
+#include "tests/support/process_test.hpp"
+
+namespace autonomy::test {
+namespace {
+
+const std::string kScenario = std::string(AUTONOMY_SOURCE_DIR) + "/deploy/scenarios/ds1.pbtxt";
+const std::string kConfig = std::string(AUTONOMY_SOURCE_DIR) + "/services/executive/examples/ds1-4h.pbtxt";
+constexpr const char* kExecutive = "executive/main";
+
+// The sixteen goals of ds1-4h.problem by what they need.
+const std::vector<std::string> kCameraGoals = {"nav1_1", "nav1_2", "nav1_3", "nav1_4",
+                                               "nav2_1", "nav2_2", "nav2_3", "nav2_4"};
+const std::vector<std::string> kThrustGoals = {"thrust1", "thrust2"};
+const std::vector<std::string> kDownlinkGoals = {"down1", "down2"};
+const std::vector<std::string> kScheduleGoals = {"hidden1", "pass1", "hidden2", "pass2"};
+
+std::vector<std::string> sorted(std::vector<std::string> v) {
+  std::sort(v.begin(), v.end());
+  return v;
+}
+std::vector<std::string> all_of(std::initializer_list<std::vector<std::string>> parts) {
+  std::vector<std::string> out;
+  for (const auto& p : parts) out.insert(out.end(), p.begin(), p.end());
+  return sorted(out);
+}
+
+class ExecutiveTest : public ProcessTest {
+ protected:
+  // The scenario with the named faults of its commented list switched on ("micas-stuck-on", ...).
+  std::string scenario_with(const std::vector<std::string>& faults) {
+    std::string text = read_file(kScenario);
+    for (const std::string& id : faults) {
+      const std::string line = "# faults { id: \"" + id + "\"";
+      const auto at = text.find(line);
+      EXPECT_NE(at, std::string::npos) << "no commented fault " << id << " in " << kScenario;
+      if (at != std::string::npos) text.erase(at, 2);
+    }
+    const std::string file = dir().file("ds1.pbtxt");
+    write_file(file, text);
+    return file;
+  }
+
+  void fly(int domain, const std::vector<std::string>& faults, std::vector<std::string> executive_args = {}) {
+    join(domain);
+    events_.emplace(participant(), dds::topics::executive_event);
+    status_.emplace(participant(), dds::topics::executive_status);
+    commands_.emplace(participant(), dds::topics::spacecraft_command);
+    truth_.emplace(participant(), dds::topics::truth_spacecraft_fault);
+    telemetry_.emplace(participant(), dds::topics::spacecraft_telemetry);
+    const std::string scenario = scenario_with(faults);
+    planner_ = &start_planner();
+    executive_args.insert(executive_args.begin(), {"--config", kConfig, "--domain", std::to_string(domain),
+                                                   "--log-dir", dir().path(), "--log-level", "debug"});
+    executive_ = &start("executive", AUTONOMY_EXECUTIVE_BIN, executive_args);
+    start_simulator({"--config", scenario, "--wait-for", kExecutive});
+  }
+  ChildProcess& start_planner(const std::string& name = "planner") {
+    return start(name, AUTONOMY_PLANNER_BIN,
+                 {"--domain", std::to_string(domain_), "--log-dir", dir().path()}, false);
+  }
+
+  void poll() {
+    events_->poll();
+    status_->poll();
+    commands_->poll();
+    truth_->poll();
+    for (auto& t : telemetry_->poll()) last_telemetry_ = t;
+  }
+  ::testing::AssertionResult finished() {
+    return await("the executive finished the four hours", [&] {
+      poll();
+      return !status_->matching([](const auto& s) { return s.state == "finished"; }).empty();
+    }, std::chrono::seconds(120));
+  }
+  const msg::ExecutiveStatus& final_status() {
+    static msg::ExecutiveStatus none;
+    auto done = status_->matching([](const auto& s) { return s.state == "finished"; });
+    if (done.empty()) return none;
+    last_final_ = done.back();
+    return last_final_;
+  }
+  std::vector<std::string> achieved() { return sorted(final_status().goals_achieved); }
+  std::vector<std::string> lost() {
+    std::vector<std::string> labels;
+    for (const std::string& g : final_status().goals_lost) labels.push_back(g.substr(0, g.find(':')));
+    return sorted(labels);
+  }
+  std::vector<msg::ExecutiveEvent> events(const std::string& kind) const {
+    return events_->matching([&](const auto& e) { return e.kind == kind; });
+  }
+  std::string story() const {
+    std::string s;
+    for (const auto& e : events_->all())
+      if (e.kind != "started" && e.kind != "ended" && e.kind != "confirmed" && e.kind != "command")
+        s += std::to_string(e.tick) + " " + e.kind + ": " + e.text + "\n";
+    return s;
+  }
+  // Commands the executive sent to `device` at or after `tick`.
+  std::vector<msg::SpacecraftCommand> commands_to(const std::string& device, int64_t tick = 0) const {
+    return commands_->matching([&](const auto& c) {
+      return c.source == kExecutive && c.device == device && c.tick >= tick;
+    });
+  }
+  // The event numbers are 1, 2, ... without a gap: nothing the executive said was lost.
+  void expect_every_event_seen() const {
+    std::vector<uint64_t> numbers;
+    for (const auto& e : events_->all())
+      if (e.number > 0) numbers.push_back(e.number);
+    std::sort(numbers.begin(), numbers.end());
+    ASSERT_FALSE(numbers.empty());
+    EXPECT_EQ(numbers.front(), 1u);
+    EXPECT_EQ(numbers.back(), numbers.size());
+  }
+
+  ChildProcess* planner_ = nullptr;
+  ChildProcess* executive_ = nullptr;
+  std::optional<Recorder<msg::ExecutiveEvent>> events_;
+  std::optional<Recorder<msg::ExecutiveStatus>> status_;
+  std::optional<Recorder<msg::SpacecraftCommand>> commands_;
+  std::optional<Recorder<msg::SpacecraftFaultState>> truth_;
+  std::optional<Recorder<msg::SpacecraftTelemetry>> telemetry_;
+  std::optional<msg::SpacecraftTelemetry> last_telemetry_;
+  msg::ExecutiveStatus last_final_;
+};
+
+#define FLY(domain, ...)    \
+  fly(domain, __VA_ARGS__); \
+  ASSERT_TRUE(finished()) << story()
+
+TEST_F(ExecutiveTest, WithoutFaultsEveryGoalIsAchievedAndTheHorizonsJoinWithoutAGap) {
+  FLY(210, {});
+  EXPECT_EQ(achieved(), all_of({kCameraGoals, kThrustGoals, kDownlinkGoals, kScheduleGoals})) << story();
+  EXPECT_TRUE(lost().empty()) << story();
+  EXPECT_TRUE(events("aborted").empty()) << story();
+  EXPECT_TRUE(events("violation").empty()) << story();
+  // Two plans: the second asked for before the first ended and joined at its end, 7200 s.
+  ASSERT_EQ(events("horizon_joined").size(), 1u) << story();
+  EXPECT_EQ(events("horizon_joined")[0].tick, 7200);
+  const auto asked = events("plan_requested");
+  ASSERT_EQ(asked.size(), 2u) << story();
+  EXPECT_LT(asked[1].tick, 7200);
+  EXPECT_NE(asked[1].text.find("next horizon"), std::string::npos);
+  EXPECT_EQ(final_status().horizons, 1u);
+  // What the world shows: eight images on target, two thrust arcs, two downlinks, the engine
+  // in standby at the end (never left thrusting).
+  ASSERT_TRUE(last_telemetry_);
+  EXPECT_GE(last_telemetry_->camera.images_on_target, 8u);
+  EXPECT_GE(last_telemetry_->propulsion.thrust_time_s, 2 * 2400.0);
+  EXPECT_GT(last_telemetry_->telecom.downlinked_mb, 0.0);
+  EXPECT_EQ(last_telemetry_->propulsion.thrust_level, 0u);
+  EXPECT_EQ(commands_to("ips").size(), 4u);  // thrust, standby, thrust, standby
+  expect_every_event_seen();
+}
+
+TEST_F(ExecutiveTest, CameraStuckOnAbortsSafesAndTheNewPlanGoesOnWithoutTheCamera) {
+  FLY(211, {"micas-stuck-on"});
+  const auto aborted = events("aborted");
+  ASSERT_EQ(aborted.size(), 1u) << story();
+  EXPECT_NE(aborted[0].text.find("camera reports imaging but the plan expects ready"), std::string::npos);
+  const int64_t t = aborted[0].tick;
+  // Detected within one tick of the picture's end: the first picture ends at 285 s.
+  EXPECT_LE(t, 287);
+  // Safed at once (engine standby), then a plan from the current state, spliced in.
+  EXPECT_FALSE(commands_->matching([&](const auto& c) {
+    return c.source == kExecutive && c.tick == t && c.device == "ips" && c.command == "standby";
+  }).empty());
+  const auto replans = events_->matching([&](const auto& e) {
+    return e.kind == "plan_requested" && e.text.rfind("replan", 0) == 0;
+  });
+  ASSERT_FALSE(replans.empty()) << story();
+  const auto executing = events_->matching([&](const auto& e) {
+    return e.kind == "plan_executing" && e.text.find("new plan") != std::string::npos;
+  });
+  ASSERT_EQ(executing.size(), 1u) << story();
+  EXPECT_GE(executing[0].tick, t);
+  EXPECT_EQ(final_status().replans, 1u);
+  // The stuck camera is never commanded again; what needed it is lost, the rest achieved.
+  EXPECT_TRUE(commands_to("camera", t).empty());
+  EXPECT_EQ(lost(), all_of({{"nav1_2", "nav1_3", "nav1_4", "nav2_1", "nav2_2", "nav2_3", "nav2_4"}, kDownlinkGoals}))
+      << story();
+  EXPECT_EQ(achieved(), all_of({{"nav1_1"}, kThrustGoals, kScheduleGoals})) << story();
+  // The new plan is carried out: the engine thrusts after the abort.
+  EXPECT_FALSE(commands_->matching([&](const auto& c) {
+    return c.source == kExecutive && c.tick > t && c.device == "ips" && c.command == "thrust";
+  }).empty());
+  EXPECT_EQ(final_status().disabled_devices, std::vector<std::string>{"camera"});
+}
+
+TEST_F(ExecutiveTest, AFailedElectronicsUnitIsResetWithoutReplanning) {
+  FLY(212, {"lpe-failed"});
+  const auto resets = events("fault reset");
+  ASSERT_EQ(resets.size(), 1u) << story();
+  EXPECT_NE(resets[0].text.find("lpe reports failed"), std::string::npos);
+  EXPECT_LE(resets[0].tick, 1001);  // failed at 1000 s
+  EXPECT_EQ(commands_to("lpe").size(), 1u);
+  EXPECT_EQ(commands_to("lpe")[0].command, "reset");
+  EXPECT_TRUE(events("aborted").empty()) << story();
+  EXPECT_EQ(final_status().replans, 0u);
+  const auto cured = truth_->matching([](const auto& f) { return f.fault_id == "lpe-failed" && !f.active; });
+  ASSERT_FALSE(cured.empty());
+  EXPECT_EQ(cured.back().ended_by, "reset");
+  EXPECT_EQ(achieved(), all_of({kCameraGoals, kThrustGoals, kDownlinkGoals, kScheduleGoals})) << story();
+}
+
+TEST_F(ExecutiveTest, AFalsePowerSensorIsRecognisedAndIgnored) {
+  FLY(213, {"power-sensor-false"});
+  const auto ignored = events("fault ignore_sensor");
+  ASSERT_EQ(ignored.size(), 1u) << story();
+  EXPECT_NE(ignored[0].text.find("camera_switch_status"), std::string::npos);
+  EXPECT_GE(ignored[0].tick, 10800);  // the sensor lies from 10800 s on
+  EXPECT_LE(ignored[0].tick, 10805);
+  EXPECT_EQ(final_status().ignored_sensors, std::vector<std::string>{"camera_switch_status"});
+  // Told apart from a failed switch by the voltages: no abort, the camera still used after.
+  EXPECT_TRUE(events("aborted").empty()) << story();
+  EXPECT_TRUE(final_status().disabled_devices.empty());
+  EXPECT_EQ(achieved(), all_of({kCameraGoals, kThrustGoals, kDownlinkGoals, kScheduleGoals})) << story();
+}
+
+TEST_F(ExecutiveTest, AThrusterStuckClosedSwitchesTheAttitudeControlMode) {
+  FLY(214, {"thruster-x-stuck"});
+  const auto switched = events("fault switch_control_mode");
+  ASSERT_EQ(switched.size(), 1u) << story();
+  EXPECT_NE(switched[0].text.find("thruster_x"), std::string::npos);
+  const auto set_mode = commands_->matching([](const auto& c) { return c.device == "adcs" && c.command == "set_mode"; });
+  ASSERT_EQ(set_mode.size(), 1u);
+  EXPECT_EQ(set_mode[0].arguments, std::vector<std::string>{"wheels_and_other_thrusters"});
+  ASSERT_TRUE(last_telemetry_);
+  EXPECT_EQ(last_telemetry_->attitude.control_mode, "wheels_and_other_thrusters");
+  // The turns after it are slower but within the plan's bounds: no abort, every goal.
+  EXPECT_TRUE(events("aborted").empty()) << story();
+  EXPECT_EQ(achieved(), all_of({kCameraGoals, kThrustGoals, kDownlinkGoals, kScheduleGoals})) << story();
+  EXPECT_GE(commands_->matching([&](const auto& c) {
+    return c.device == "adcs" && c.command == "turn" && c.tick > switched[0].tick;
+  }).size(), 4u);
+}
+
+TEST_F(ExecutiveTest, AnUnconfirmedEngineCommandStopsCommandingTheEngineOnly) {
+  FLY(215, {"ips-unconfirmed"});
+  const auto stopped = events("fault stop_commanding");
+  ASSERT_EQ(stopped.size(), 1u) << story();
+  EXPECT_NE(stopped[0].text.find("ips"), std::string::npos);
+  const int64_t t = stopped[0].tick;
+  // The thrust at 1137 s, never confirmed: its 5 s timeout.
+  EXPECT_TRUE(commands_to("ips", t).empty()) << "the engine was commanded after it was given up";
+  EXPECT_TRUE(events("aborted").empty()) << story();
+  EXPECT_EQ(final_status().disabled_devices, std::vector<std::string>{"ips"});
+  EXPECT_EQ(lost(), sorted(kThrustGoals)) << story();
+  EXPECT_EQ(achieved(), all_of({kCameraGoals, kDownlinkGoals, kScheduleGoals})) << story();
+}
+
+TEST_F(ExecutiveTest, AllFiveFaultsTogetherEachGetTheirResponse) {
+  FLY(216, {"micas-stuck-on", "lpe-failed", "power-sensor-false", "thruster-x-stuck", "ips-unconfirmed"});
+  EXPECT_EQ(events("aborted").size(), 1u) << story();
+  EXPECT_EQ(events("fault reset").size(), 1u) << story();
+  EXPECT_EQ(events("fault ignore_sensor").size(), 1u) << story();
+  EXPECT_EQ(events("fault switch_control_mode").size(), 1u) << story();
+  EXPECT_EQ(events("fault stop_commanding").size(), 1u) << story();
+  EXPECT_EQ(sorted(final_status().disabled_devices), (std::vector<std::string>{"camera", "ips"}));
+  // Only the goals the faults took are lost: the camera's (stuck), the downlinks (no images to
+  // send), the thrust arcs (the engine no longer commanded).
+  EXPECT_EQ(achieved(), all_of({{"nav1_1"}, kScheduleGoals})) << story();
+  EXPECT_EQ(lost().size(), 11u) << story();
+  expect_every_event_seen();
+}
+
+TEST_F(ExecutiveTest, APlannerKilledMidReplanIsAskedAgainAndTheSpacecraftStaysSafe) {
+  fly(217, {}, {"--plan-timeout-s", "1", "--plan-hold-s", "0.3"});
+  ASSERT_TRUE(await("the first plan executing", [&] {
+    poll();
+    return !events("plan_executing").empty();
+  })) << story();
+  planner_->signal(SIGKILL);
+  stop_watching(*planner_);
+  // The camera sticks at its next picture: the executive aborts and owes a plan nobody makes.
+  dds::Topic<msg::SpacecraftFaultInjection> topic(participant(), dds::topics::spacecraft_fault_injection);
+  dds::Writer<msg::SpacecraftFaultInjection> inject(participant(), topic);
+  ASSERT_TRUE(inject.wait_for_readers(1, kDeadline));
+  inject.write({"stuck", "test", "stuck_on", "camera", 0, false, false});
+  ASSERT_TRUE(await("asked again after no reply", [&] {
+    poll();
+    return events("plan_late").size() >= 2;
+  })) << story();
+  ASSERT_EQ(events("aborted").size(), 1u) << story();
+  const int64_t t = events("aborted")[0].tick;
+  start_planner("planner-again");
+  ASSERT_TRUE(finished()) << story();
+  const auto executing = events_->matching([&](const auto& e) {
+    return e.kind == "plan_executing" && e.text.find("new plan") != std::string::npos;
+  });
+  ASSERT_EQ(executing.size(), 1u) << story();
+  const int64_t resumed = executing[0].tick;
+  EXPECT_GT(resumed, t);
+  // Between the abort and the new plan only safing went out, and the engine stayed off.
+  const auto between = commands_->matching([&](const auto& c) {
+    return c.source == kExecutive && c.tick >= t && c.tick < resumed;
+  });
+  for (const auto& c : between) EXPECT_EQ(c.device + " " + c.command, "ips standby");
+  const auto asked = events_->matching([&](const auto& e) {
+    return e.kind == "plan_requested" && e.tick >= t && e.tick <= resumed;
+  });
+  EXPECT_GE(asked.size(), 2u) << story();
+  EXPECT_TRUE(events("watchdog").empty()) << story();
+}
+
+}  // namespace
+}  // namespace autonomy::test
