@@ -4,7 +4,8 @@
 #   bench/run.sh --quick    short runs, for a smoke test
 # Environment: BUILD_DIR (default <repo>/build-bench), BENCH_DOMAIN (default 160; the lockstep
 # bench uses the next few ids too, up to 169; paced_sim_bench uses BENCH_DOMAIN + 10, i.e. 170;
-# experiment_bench.sh uses BENCH_DOMAIN + 20 to + 23, the runner's four jobs),
+# experiment_bench.sh uses BENCH_DOMAIN + 20 to + 23, the runner's four jobs; executive_replan_bench
+# BENCH_DOMAIN + 24),
 # CYCLONEDDS_URI (default: the loopback profile),
 # LOCKSTEP_DDS_EXTRA (a Cyclone config snippet to compare against the default, optional).
 # The figures are noisy on a shared 2-core machine: read the ratios measured in the same run.
@@ -20,7 +21,8 @@ if [[ "${1:-}" == "--quick" ]]; then quick=(--quick); fi
 
 cmake -S "$repo" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 ninja -C "$build" dds_layer_bench lockstep_bench field_bench radio_bench world_bench paced_sim_bench simulator behavior experiment_runner \
-  courier_bench courier_fleet_bench planner_bench path_bench executive_bench
+  courier_bench courier_fleet_bench planner_bench path_bench executive_bench \
+  executive_replan_bench planner executive
 
 echo "load average: $(cut -d' ' -f1-3 /proc/loadavg), $(nproc) cores, CYCLONEDDS_URI=$CYCLONEDDS_URI"
 "$build/bin/dds_layer_bench" --domain "$domain" "${quick[@]}"
@@ -39,6 +41,7 @@ if [[ ${#quick[@]} -gt 0 ]]; then planner_quick=(--jobshop-seconds 5 --repeats 1
 "$build/bin/planner_bench" --examples-dir "$repo/services/planner/examples" \
   --minizinc-model "$repo/bench/jobshop.mzn" "${planner_quick[@]}"
 "$build/bin/executive_bench" "${quick[@]}"
+"$build/bin/executive_replan_bench" --domain "$((domain + 24))" "${quick[@]}"
 if [[ ${#quick[@]} -gt 0 ]]; then pairs=(--pairs 5); else pairs=(); fi
 # path_bench writes OMPL benchmark logs and a summary: into the build folder, not over docs/.
 "$build/bin/path_bench" "${pairs[@]}" --out "$build"

@@ -27,6 +27,8 @@ int main(int argc, char** argv) {
                        "keep it below the simulator's ack timeout)")
             ->check(CLI::Range(0.0, 60.0))
             ->capture_default_str();
+        app.add_option("--report-dir", options.report_dir,
+                       "Write plan.svg (planned against executed, faults) and report.md here when the mission ends");
         app.add_option("--watchdog-s", options.watchdog_s,
                        "A tick taking longer than this raises the alarm and safes the spacecraft (wall s)")
             ->check(CLI::Range(0.05, 600.0))

@@ -26,7 +26,12 @@ LockstepBarrier::AckOutcome LockstepBarrier::on_ack(const std::string& participa
   AckOutcome outcome = AckOutcome::Counted;
   auto member = members_.find(participant);
   if (member == members_.end()) {
-    if (dropped_.erase(participant) == 0) return AckOutcome::IgnoredUnknown;
+    if (dropped_.erase(participant) == 0) {
+      // Kept, not counted: a participant whose registration is still on its way (it read the
+      // held tick 0 from the durable clock and answered first) is added from the current tick.
+      ticks_[tick].announced[participant] = commands_sent;
+      return AckOutcome::IgnoredUnknown;
+    }
     member = members_.emplace(participant, tick).first;
     outcome = AckOutcome::Rejoined;
   }
@@ -38,9 +43,8 @@ LockstepBarrier::AckOutcome LockstepBarrier::on_ack(const std::string& participa
 
 bool LockstepBarrier::on_command(const std::string& source, Tick tick) {
   if (stale(tick)) return false;
-  if (members_.count(source) == 0 && dropped_.count(source) == 0) return false;
-  ++ticks_[tick].received[source];
-  return true;
+  ++ticks_[tick].received[source];  // kept for a registration still on its way (see on_ack)
+  return members_.count(source) > 0 || dropped_.count(source) > 0;
 }
 
 bool LockstepBarrier::done(const std::string& participant, Tick tick) const {

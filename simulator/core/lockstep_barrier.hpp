@@ -47,9 +47,11 @@ class LockstepBarrier {
 
   void begin_tick(Tick tick, double now_s);
   AckOutcome on_ack(const std::string& participant, Tick tick, std::uint32_t commands_sent);
-  // Counts one command from `source` for `tick`. False, and not counted, when the tick has
-  // already ended or `source` is neither registered nor dropped (a dropped participant's command
-  // counts: its ack for the same tick may be the one that rejoins it, and announces it).
+  // Counts one command from `source` for `tick`. False when the tick has already ended or
+  // `source` is neither registered nor dropped (a dropped participant's command counts: its ack
+  // for the same tick may be the one that rejoins it, and announces it). An unknown source's
+  // acks and commands are kept for the tick, so that one added `from_current` a moment later
+  // (its registration overtaken by its answer) is complete at once.
   bool on_command(const std::string& source, Tick tick);
 
   // Every participant waited for at `tick` (the current tick) has acked it and all its announced

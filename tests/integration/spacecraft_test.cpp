@@ -297,7 +297,7 @@ TEST_F(SpacecraftTest, ScenarioFaultOnACommandInPacedTime) {
   std::string text = read_file(kDs1);
   const std::string fault = "# faults { id: \"ips-unconfirmed\"";
   const std::string clock =
-      "simulation { mode: LOCKSTEP step_s: 1.0 seed: 1999 ack_timeout_s: 5.0 }";
+      "simulation { mode: LOCKSTEP step_s: 1.0 seed: 1999 ack_timeout_s: 30.0 }";
   ASSERT_NE(text.find(fault), std::string::npos);
   ASSERT_NE(text.find(clock), std::string::npos);
   text.replace(text.find(fault), 2, "");

@@ -244,6 +244,7 @@ std::optional<ExecutiveConfig> parse_executive_config(const std::string& text,
   if (file.planner_budget_ms() < 0) check.error(root.at("planner_budget_ms"), "planner_budget_ms must be >= 0");
   out.planner_engine = file.planner_engine();
   out.planner_budget_ms = file.planner_budget_ms();
+  if (!file.optional_engine().empty()) out.optional_engine = file.optional_engine();
   if (errors.size() != before) {
     configfile::sort_by_position(errors);
     return std::nullopt;

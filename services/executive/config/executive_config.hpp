@@ -41,6 +41,7 @@ struct ExecutiveConfig {
   Time request_lead_s = 600;
   std::string planner_engine;
   std::int64_t planner_budget_ms = 0;
+  std::string optional_engine = "discrepancy";
 
   CommandMap command_map() const;  // the rules, already checked
   // A fresh table (the parts keep state per plan run): stuck devices, resets, mode

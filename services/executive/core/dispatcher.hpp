@@ -39,6 +39,7 @@ class Dispatcher {
   // violation, and the time is still recorded (it is what happened).
   void observe(std::size_t token, bool start, Time time);
 
+  Time origin() const { return at_[0]; }  // when plan time 0 is
   bool broken() const { return broken_; }
   bool finished() const;  // every timepoint executed
   bool executed(std::size_t token, bool start) const { return done_[tp(token, start)]; }

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
 #include "plan_message.hpp"
 
@@ -85,6 +87,7 @@ void ExecutiveNode::event(const std::string& kind, Time now, const std::string& 
   else
     spdlog::debug("{} at {} s: {}", kind, now, text);
   event_writer_.write(e);
+  report_.add_event(now, kind, text);
 }
 
 void ExecutiveNode::on_tick(const msg::SimClock& clock) {
@@ -165,6 +168,7 @@ void ExecutiveNode::dispatch(Time now, std::vector<DeviceCommand>& out) {
     event("finished", now, std::to_string(achieved_.size()) + " goals achieved, " +
                                std::to_string(lost_.size()) + " lost");
     publish_status();
+    write_report();
     return;
   }
   if (!next_asked_ && horizon_end_ < mission_.horizon() &&
@@ -300,6 +304,9 @@ void ExecutiveNode::ask_for_plan(Time origin, Time end, std::vector<msg::Planner
       if (!label.empty() && executive_->dispatcher().executing(i)) executing.insert(label);
     }
   }
+  // With a device given up, some goals may be out of reach: the planner may leave goals out
+  // (rather than search the infeasible problem to exhaustion first).
+  if (!impossible.empty()) every_goal_optional = true;
   // The next horizon leaves the current plan's goals to it.
   const bool next_horizon = state_ == State::kExecuting;
   if (next_horizon) settled.insert(current_goals_.begin(), current_goals_.end());
@@ -307,7 +314,7 @@ void ExecutiveNode::ask_for_plan(Time origin, Time end, std::vector<msg::Planner
   asked_goals_ = cut.goals;
   asked_optional_ = every_goal_optional;
   lose_goals(cut.lost, now_);
-  cut.request.engine = config_.planner_engine;
+  cut.request.engine = every_goal_optional ? config_.optional_engine : config_.planner_engine;
   cut.request.budget_ms = config_.planner_budget_ms;
   asked_origin_ = origin;
   asked_end_ = end;
@@ -331,6 +338,7 @@ void ExecutiveNode::ask_again() {
   const std::string why = "no reply within " + std::to_string(options_.plan_timeout_s) + " s (" +
                           std::to_string(planner_.planners()) + " planner(s) matched)";
   event("plan_late", now_, why + ": asking again");
+  planner_.cancel();  // a planner still searching answers it with its best plan, then ignored
   planner_.forget();
   if (state_ == State::kExecuting) {  // the next horizon: its origin does not move
     ask_for_plan(asked_origin_, asked_end_, asked_state_, asked_purpose_, asked_optional_);
@@ -432,6 +440,7 @@ void ExecutiveNode::start_plan(const msg::PlanningReply& reply, Time origin, Tim
     event("plan_refused", now_, reply.request_id + ": not dispatchable: " + error);
     return;  // the timer asks again
   }
+  if (executive_) report_.add_plan(plan_id_, executive_->dispatcher(), now_);
   for (const auto& [device, why] : disabled_) next->disable_device(device);
   for (const std::string& s : ignored_sensors_) next->ignore_sensor(s);
   executive_ = std::move(next);
@@ -465,6 +474,21 @@ void ExecutiveNode::lose_goals(const std::map<std::string, std::string>& lost, T
     lost_[label] = why;
     event("goal_lost", now, label + ": " + why);
   }
+}
+
+void ExecutiveNode::write_report() {
+  if (options_.report_dir.empty()) return;
+  if (executive_) report_.add_plan(plan_id_, executive_->dispatcher(), now_);
+  std::vector<std::string> achieved, lost;
+  for (const auto& [label, how] : achieved_) achieved.push_back(label);
+  for (const auto& [label, why] : lost_) lost.push_back(label + ": " + why);
+  report_.set_goals(achieved, lost);
+  std::error_code ec;
+  std::filesystem::create_directories(options_.report_dir, ec);
+  const std::string svg = options_.report_dir + "/plan.svg", md = options_.report_dir + "/report.md";
+  std::ofstream(svg) << report_.svg(mission_.horizon());
+  std::ofstream(md) << report_.markdown("Flight of " + config_.problem_path, mission_.horizon());
+  spdlog::info("report: {} and {}", md, svg);
 }
 
 void ExecutiveNode::publish_status() {

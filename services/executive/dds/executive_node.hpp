@@ -33,6 +33,7 @@
 #include "executive_config.hpp"
 #include "mission.hpp"
 #include "planner_link.hpp"
+#include "run_report.hpp"
 #include "spacecraft_link.hpp"
 #include "watchdog.hpp"
 
@@ -42,8 +43,9 @@ struct ExecutiveNodeOptions {
   std::string config_path;
   std::string spacecraft;      // telemetry instance; "" = any
   double plan_timeout_s = 5;   // ask again when a request stays unanswered this long (wall)
-  double plan_hold_s = 2;      // hold a lockstep tick at most this long for a plan (wall)
+  double plan_hold_s = 10;     // hold a lockstep tick at most this long for a plan (wall)
   double watchdog_s = 2;       // a tick handler running longer raises the alarm and safes
+  std::string report_dir;      // where plan.svg and report.md go when the mission ends ("": none)
 };
 
 class ExecutiveNode {
@@ -85,6 +87,7 @@ class ExecutiveNode {
   void lose_goals(const std::map<std::string, std::string>& lost, Time now);
   void event(const std::string& kind, Time now, const std::string& text);
   void publish_status();
+  void write_report();
   void safe_from_watchdog(PlannerLink::Clock::duration busy);
   const char* state_name() const;
 
@@ -138,6 +141,8 @@ class ExecutiveNode {
   double decision_us_sum_ = 0, decision_us_max_ = 0;
   std::uint64_t decisions_ = 0;
   PlannerLink::Clock::time_point fault_seen_{};  // wall time of the last abort, for its figure
+
+  RunReport report_;
 
   Watchdog watchdog_;  // last: its thread starts when everything above exists
 };

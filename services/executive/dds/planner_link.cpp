@@ -8,7 +8,9 @@ PlannerLink::PlannerLink(const dds::Participant& participant, std::string reques
     : requester_(std::move(requester)),
       request_topic_(participant, dds::topics::planner_request),
       reply_topic_(participant, dds::topics::planner_reply),
+      cancel_topic_(participant, dds::topics::planner_cancel),
       request_writer_(participant, request_topic_),
+      cancel_writer_(participant, cancel_topic_),
       reply_reader_(participant, reply_topic_) {}
 
 std::string PlannerLink::ask(msg::PlanningRequest request, const std::string& purpose) {
@@ -25,6 +27,10 @@ std::string PlannerLink::ask(msg::PlanningRequest request, const std::string& pu
                purpose, request.plan_origin, request_writer_.matched_readers());
   request_writer_.write(request);
   return request.request_id;
+}
+
+void PlannerLink::cancel() {
+  if (outstanding_) cancel_writer_.write({outstanding_->id, requester_});
 }
 
 std::optional<msg::PlanningReply> PlannerLink::take_reply() {

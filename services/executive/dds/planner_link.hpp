@@ -25,6 +25,9 @@ class PlannerLink {
   std::optional<msg::PlanningReply> take_reply();
   // Forgets the outstanding request (its reply, if one ever comes, is then stale).
   void forget() { outstanding_.reset(); }
+  // Asks the planner to end the outstanding request's search (so that requests asked again
+  // do not queue up behind it).
+  void cancel();
 
   bool waiting() const { return outstanding_.has_value(); }
   const std::string& outstanding_id() const { return outstanding_->id; }
@@ -43,7 +46,9 @@ class PlannerLink {
   std::string requester_;
   dds::Topic<msg::PlanningRequest> request_topic_;
   dds::Topic<msg::PlanningReply> reply_topic_;
+  dds::Topic<msg::PlanningCancel> cancel_topic_;
   dds::Writer<msg::PlanningRequest> request_writer_;
+  dds::Writer<msg::PlanningCancel> cancel_writer_;
   dds::Reader<msg::PlanningReply> reply_reader_;
   std::optional<Outstanding> outstanding_;
   std::uint64_t next_ = 1;

@@ -146,6 +146,16 @@ TEST_F(Barrier, ParticipantAddedFromTheCurrentTickIsWaitedForAtOnce) {
   EXPECT_TRUE(barrier.complete(1));
 }
 
+TEST_F(Barrier, AnAnswerThatOvertookItsRegistrationCountsWhenItIsAddedFromTheCurrentTick) {
+  // d read the held tick's clock, sent its command and ack; its registration arrives after.
+  EXPECT_FALSE(barrier.on_command("d", 1));  // not registered: applied unsynchronised
+  EXPECT_EQ(barrier.on_ack("d", 1, 1), Ack::IgnoredUnknown);
+  EXPECT_TRUE(barrier.add("d", true));
+  EXPECT_EQ(barrier.on_ack("a", 1, 0), Ack::Counted);
+  EXPECT_EQ(barrier.on_ack("b", 1, 0), Ack::Counted);
+  EXPECT_TRUE(barrier.complete(1));  // d's answer was kept
+}
+
 TEST(BarrierWithoutParticipants, CompletesAtOnce) {
   LockstepBarrier barrier;
   barrier.begin_tick(0, 0.0);

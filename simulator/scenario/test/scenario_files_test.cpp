@@ -136,19 +136,19 @@ TEST(ShippedScenarios, StressMapHasAHundredRobotsOnAThousandMetres) {
   EXPECT_EQ(world.robots().size(), 100u);
 }
 
-TEST(ShippedScenarios, Ds1IsASpacecraftDayWithTwoPassesAndNoRobots) {
+TEST(ShippedScenarios, Ds1IsTheSpacecraftDayOfThePlannersModelWithoutRobots) {
   const Scenario s = load_shipped("ds1.pbtxt");
   ASSERT_TRUE(s.spacecraft.has_value());
   EXPECT_EQ(s.spacecraft->name, "ds1");
-  EXPECT_EQ(s.spacecraft->targets.size(), 5u);
-  EXPECT_EQ(s.spacecraft->telecom.windows.size(), 2u);
+  EXPECT_EQ(s.spacecraft->targets.size(), 9u);  // the sky of services/planner/examples/ds1.model
+  EXPECT_EQ(s.spacecraft->telecom.windows.size(), 12u);  // ds1-day.problem's passes
   EXPECT_TRUE(s.spacecraft->faults.empty());  // switched on per run
   EXPECT_TRUE(s.world.robots_at_start.empty());
   EXPECT_EQ(s.simulation.mode, ClockMode::Lockstep);
   EXPECT_DOUBLE_EQ(s.simulation.step_s, 1.0);
   const spacecraft::Spacecraft ds1(*s.spacecraft);
   EXPECT_EQ(ds1.mode("camera"), "ready");
-  EXPECT_EQ(ds1.attitude().pointing_target(), "thrust-attitude");
+  EXPECT_EQ(ds1.attitude().pointing_target(), "earth");
 }
 
 TEST(ShippedScenarios, DemoStillLoads) {

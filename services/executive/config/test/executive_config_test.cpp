@@ -63,10 +63,10 @@ TEST(ExecutiveConfig, MistakesAreReportedWhereTheyAre) {
             0u)
       << first(errors_with("problem: \"../../planner/examples/ds1-day.problem\"", "problem: \"nowhere.problem\""));
   EXPECT_NE(first(errors_with("timeline: \"dsone.engine\" predicate: \"off\"", "timeline: \"engine\" predicate: \"off\""))
-                .find(":23:12: command rule: timeline 'engine' is not object.attribute"),
+                .find(":24:12: command rule: timeline 'engine' is not object.attribute"),
             std::string::npos)
       << first(errors_with("timeline: \"dsone.engine\" predicate: \"off\"", "timeline: \"engine\" predicate: \"off\""));
-  EXPECT_NE(first(errors_with("arguments: \"?1\"", "arguments: \"?x\"")).find(":17:1: command rule for dsone.attitude == turning:"),
+  EXPECT_NE(first(errors_with("arguments: \"?1\"", "arguments: \"?x\"")).find(":18:1: command rule for dsone.attitude == turning:"),
             std::string::npos)
       << first(errors_with("arguments: \"?1\"", "arguments: \"?x\""));
   EXPECT_NE(first(errors_with("component: \"camera_switch\" mode: \"failed_open\"",
