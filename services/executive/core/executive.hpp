@@ -73,6 +73,10 @@ class Executive {
   bool finished() const { return dispatcher_.finished(); }
   bool disabled(const std::string& device) const { return tracker_.disabled(device); }
   bool ignored(const std::string& sensor) const { return ignored_sensors_.count(sensor) > 0; }
+  // The fault table, for the next plan: its parts remember what they answered (a control
+  // mode switched once, resets used) across plans. The executive answers no faults after.
+  std::vector<std::unique_ptr<FaultResponse>> release_fault_table() { return std::move(faults_); }
+  void set_fault_table(std::vector<std::unique_ptr<FaultResponse>> faults) { faults_ = std::move(faults); }
   // A sensor judged false under an earlier plan stays ignored.
   void ignore_sensor(const std::string& sensor) { ignored_sensors_.insert(sensor); }
   const std::set<std::string>& ignored_sensors() const { return ignored_sensors_; }

@@ -434,9 +434,12 @@ void ExecutiveNode::finish_held_tick() {
 void ExecutiveNode::start_plan(const msg::PlanningReply& reply, Time origin, Time horizon_end,
                                const std::vector<std::string>& goals) {
   std::string error;
+  // The fault table goes on from plan to plan (a thruster stuck closed is answered once).
+  auto faults = executive_ ? executive_->release_fault_table() : config_.fault_table();
   auto next = Executive::create(planner::from_plan_message(reply.plan), config_.command_map(),
-                                config_.fault_table(), ExecutiveOptions{config_.safing}, origin, &error);
+                                std::move(faults), ExecutiveOptions{config_.safing}, origin, &error);
   if (!next) {
+    if (executive_) executive_->set_fault_table(config_.fault_table());  // the old plan goes on
     event("plan_refused", now_, reply.request_id + ": not dispatchable: " + error);
     return;  // the timer asks again
   }
@@ -461,11 +464,13 @@ void ExecutiveNode::start_plan(const msg::PlanningReply& reply, Time origin, Tim
 
 void ExecutiveNode::note_goals(const ExecutiveEvent& e) {
   if (e.kind != "goal_achieved" && e.kind != "goal_lost") return;
-  const std::string label = e.text.substr(0, e.text.find(':'));
+  const std::size_t colon = e.text.find(':');
+  const std::string label = e.text.substr(0, colon);
+  const std::string how = colon == std::string::npos ? "" : e.text.substr(colon + 2);
   if (e.kind == "goal_achieved")
-    achieved_[label] = e.text;
+    achieved_[label] = how;
   else
-    lost_[label] = e.text;
+    lost_[label] = how;
 }
 
 void ExecutiveNode::lose_goals(const std::map<std::string, std::string>& lost, Time now) {
