@@ -71,6 +71,13 @@ std::vector<std::string> Executive::executing() const {
   return out;
 }
 
+bool Executive::rejected(const DeviceCommand& command, const std::string& reason) {
+  if (!tracker_.confirm(command.device, command.command)) return false;
+  if (command.token != SIZE_MAX)
+    uncommanded_.emplace(command.token, command.device + " " + command.command + " rejected: " + reason);
+  return true;
+}
+
 bool Executive::confirm(const std::string& device, const std::string& command) {
   return tracker_.confirm(device, command);
 }

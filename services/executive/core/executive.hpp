@@ -64,6 +64,10 @@ class Executive {
   Tick step(const Observations& seen);  // seen.time is now; ticks must not go back in time
   // A command confirmed in telemetry; false when none was awaited.
   bool confirm(const std::string& device, const std::string& command);
+  // A command the device refused (its status gave `reason`, e.g. "lpe has failed"): no longer
+  // awaited, so the device is not given up for a confirmation that cannot come; the token it
+  // served was not carried out (a goal among them ends lost). False when none was awaited.
+  bool rejected(const DeviceCommand& command, const std::string& reason);
 
   // Never command `device` again and stop comparing it with the plan (a fault known from an
   // earlier plan); its tokens end by time.

@@ -93,7 +93,7 @@ void ExecutiveNode::event(const std::string& kind, Time now, const std::string& 
 void ExecutiveNode::on_tick(const msg::SimClock& clock) {
   if (clock.tick <= last_tick_) return;
   if (held_) {  // the world went on without our ack (we were dropped): answer the held one
-    lockstep_.acknowledge(held_->clock.tick, 0);
+    lockstep_.acknowledge(held_->clock.tick, held_commands_);
     held_.reset();
   }
   run_tick(clock);
@@ -110,7 +110,10 @@ void ExecutiveNode::run_tick(const msg::SimClock& clock) {
         event("confirmed", now_, c.device + " " + c.command + " (" + c.command_id + ")");
     telemetry_ = std::move(t);
   }
-  for (const std::string& r : spacecraft_.take_rejections()) event("rejected", now_, r);
+  for (const auto& [command, reason] : spacecraft_.take_rejections()) {
+    if (executive_) executive_->rejected(command, reason);
+    event("rejected", now_, command.device + " " + command.command + " rejected: " + reason);
+  }
 
   std::vector<DeviceCommand> out;
   ask_first();

@@ -27,18 +27,20 @@ std::vector<Confirmation> SpacecraftLink::confirmations(const msg::SpacecraftTel
   for (const msg::DeviceReport& d : t.devices) {
     auto it = unconfirmed_.find(d.confirmed_command_id);
     if (it == unconfirmed_.end()) continue;
-    out.push_back({it->second.first, it->second.second, it->first});
+    out.push_back({it->second.device, it->second.command, it->first});
     unconfirmed_.erase(it);
   }
   return out;
 }
 
-std::vector<std::string> SpacecraftLink::take_rejections() {
-  std::vector<std::string> out;
+std::vector<std::pair<DeviceCommand, std::string>> SpacecraftLink::take_rejections() {
+  std::vector<std::pair<DeviceCommand, std::string>> out;
   for (auto& s : status_reader_.take()) {
     if (!s.valid || s.value.source != source_ || s.value.accepted) continue;
-    out.push_back(s.value.device + " " + s.value.command + " (" + s.value.command_id +
-                  ") rejected: " + s.value.reason);
+    auto it = unconfirmed_.find(s.value.command_id);
+    if (it == unconfirmed_.end()) continue;  // not ours any more (or a repeat)
+    out.emplace_back(it->second, s.value.reason);
+    unconfirmed_.erase(it);
   }
   return out;
 }
@@ -53,7 +55,7 @@ std::uint32_t SpacecraftLink::send(const std::vector<DeviceCommand>& commands, s
     m.device = c.device;
     m.command = c.command;
     m.arguments = c.arguments;
-    unconfirmed_[m.command_id] = {c.device, c.command};
+    unconfirmed_[m.command_id] = c;
     command_writer_.write(m);
     ++sent;
   }

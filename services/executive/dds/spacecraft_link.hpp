@@ -26,8 +26,8 @@ class SpacecraftLink {
   std::optional<msg::SpacecraftTelemetry> take_telemetry();
   // The commands this link sent whose confirmation `t` shows for the first time.
   std::vector<Confirmation> confirmations(const msg::SpacecraftTelemetry& t);
-  // Rejections of this link's commands since the last call ("camera take_image: lpe has failed").
-  std::vector<std::string> take_rejections();
+  // Rejections of this link's commands since the last call: the command and the reason.
+  std::vector<std::pair<DeviceCommand, std::string>> take_rejections();
 
   // Writes each command stamped with `tick`; returns how many were written.
   std::uint32_t send(const std::vector<DeviceCommand>& commands, std::int64_t tick);
@@ -46,7 +46,7 @@ class SpacecraftLink {
   dds::Reader<msg::SpacecraftCommandStatus> status_reader_;
   dds::Writer<msg::SpacecraftCommand> command_writer_;
   std::uint64_t next_id_ = 1;
-  std::map<std::string, std::pair<std::string, std::string>> unconfirmed_;  // id -> device, command
+  std::map<std::string, DeviceCommand> unconfirmed_;  // by command id
 };
 
 // Telemetry as the core reads it: each device's mode, each reading.

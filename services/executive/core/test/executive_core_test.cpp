@@ -531,6 +531,31 @@ TEST(Executive, AFailedUnitIsResetWithoutReplanning) {
   EXPECT_TRUE(exec->finished());
 }
 
+// The picture's command refused (its electronics unit failed a moment before): not awaited,
+// so the camera is not given up; the picture is lost with the reason, the rest goes on.
+TEST(Executive, ARejectedCommandLosesItsTokenButNotItsDevice) {
+  auto exec = ds1_executive();
+  ToySpacecraft sc;
+  Outcome r;
+  for (Time t = 0; t <= 100; ++t) {
+    for (const DeviceCommand& c : sc.to_confirm) {
+      if (c.device == "camera") EXPECT_TRUE(exec->rejected(c, "lpe has failed"));
+      else exec->confirm(c.device, c.command);
+    }
+    sc.to_confirm.clear();
+    Tick tick = exec->step(sc.observe(t));
+    sc.receive(tick.commands, t);
+    r.events.insert(r.events.end(), tick.events.begin(), tick.events.end());
+  }
+  EXPECT_FALSE(exec->disabled("camera"));
+  EXPECT_EQ(r.count("fault stop_commanding"), 0u);
+  const ExecutiveEvent* lost = r.first("goal_lost");
+  ASSERT_TRUE(lost);
+  EXPECT_NE(lost->text.find("camera take_image rejected: lpe has failed"), std::string::npos) << lost->text;
+  EXPECT_EQ(sent(sc), (std::vector<std::string>{"camera take_image@10", "ips thrust@30", "ips standby@40"}));
+  EXPECT_TRUE(exec->finished());
+}
+
 TEST(Executive, AFalseSensorIsRecognisedByRedundantEvidenceAndIgnored) {
   auto exec = ds1_executive();
   ToySpacecraft sc;
