@@ -36,6 +36,14 @@ std::unique_ptr<Executive> Executive::create(planner::FlexiblePlan plan, Command
                                              std::vector<std::unique_ptr<FaultResponse>> faults,
                                              ExecutiveOptions options, Time start,
                                              std::string* error) {
+  // A plan comes over the wire: every index it holds must name a token.
+  for (const planner::PlanTimeline& line : plan.timelines)
+    for (std::uint32_t i : line.tokens)
+      if (i >= plan.tokens.size()) {
+        *error = "timeline " + line.name + " names token " + std::to_string(i) + " of " +
+                 std::to_string(plan.tokens.size());
+        return nullptr;
+      }
   auto net = make_dispatchable(plan, error);
   if (!net) return nullptr;
   Dispatcher dispatcher(std::move(plan), std::move(*net), start);

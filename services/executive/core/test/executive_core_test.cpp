@@ -476,6 +476,14 @@ std::vector<std::string> sent(const ToySpacecraft& sc) {
   return out;
 }
 
+TEST(Executive, APlanNamingAMissingTokenIsRefusedWithTheReason) {
+  FlexiblePlan plan = ds1_plan();
+  plan.timelines[0].tokens.push_back(99);
+  std::string error;
+  EXPECT_FALSE(Executive::create(plan, CommandMap{}, {}, {}, 0, &error));
+  EXPECT_NE(error.find("names token 99 of"), std::string::npos) << error;
+}
+
 TEST(Executive, WithoutFaultsCommandsThePlanInOrderAndFinishes) {
   auto exec = ds1_executive();
   ToySpacecraft sc;
