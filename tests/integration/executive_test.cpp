@@ -290,7 +290,7 @@ TEST_F(ExecutiveTest, AllFiveFaultsTogetherEachGetTheirResponse) {
 }
 
 TEST_F(ExecutiveTest, APlannerKilledMidReplanIsAskedAgainAndTheSpacecraftStaysSafe) {
-  fly(217, {}, {"--plan-timeout-s", "1", "--plan-hold-s", "0.3"});
+  fly(217, {}, {"--plan-timeout-s", "1.5", "--plan-hold-s", "1"});
   ASSERT_TRUE(await("the first plan executing", [&] {
     poll();
     return !events("plan_executing").empty();

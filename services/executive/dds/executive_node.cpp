@@ -124,13 +124,20 @@ void ExecutiveNode::run_tick(const msg::SimClock& clock) {
   watchdog_.tick_ended();
 }
 
+PlannerLink::Clock::duration ExecutiveNode::hold_limit() const {
+  // Never longer than a request waits for its reply: a request asked again holds afresh, so a
+  // longer hold would hold the world for as long as the planner stays away.
+  return seconds(std::min(options_.plan_hold_s, options_.plan_timeout_s));
+}
+
 void ExecutiveNode::finish_tick(const msg::SimClock& clock, std::uint32_t sent) {
+  lockstep_mode_ = clock.mode == msg::ClockMode::Lockstep;
   // In lockstep the world waits for the plan: planning takes no simulated time.
   const bool waiting = state_ == State::kWaitingForPlan || state_ == State::kSafeWaiting ||
                        (state_ == State::kExecuting && now_ >= horizon_end_ && !next_plan_ &&
                         horizon_end_ < mission_.horizon());
   if (waiting && (state_ == State::kWaitingForPlan || planner_.waiting()) &&
-      clock.mode == msg::ClockMode::Lockstep && WallClock::now() - wait_since_ < seconds(options_.plan_hold_s)) {
+      clock.mode == msg::ClockMode::Lockstep && WallClock::now() - wait_since_ < hold_limit()) {
     held_ = HeldTick{clock, held_ ? held_->since : WallClock::now()};
     held_commands_ = sent;
     spdlog::debug("tick {} held for a plan", clock.tick);
@@ -354,7 +361,7 @@ void ExecutiveNode::ask_again() {
 }
 
 void ExecutiveNode::reask() {
-  if (!reask_) return;
+  if (!reask_ || WallClock::now() < reask_after_) return;
   reask_ = false;
   const Time origin = std::max(asked_origin_, now_);
   ask_for_plan(origin, horizon_end_for(origin), asked_state_, asked_purpose_, asked_optional_);
@@ -371,8 +378,8 @@ Time ExecutiveNode::horizon_end_for(Time now) const {
 void ExecutiveNode::on_timer() {
   ask_first();
   if (planner_.waiting() && planner_.waited() > seconds(options_.plan_timeout_s)) ask_again();
-  if (held_ && WallClock::now() - wait_since_ > seconds(options_.plan_hold_s)) {
-    event("plan_late", now_, "no plan within " + std::to_string(options_.plan_hold_s) +
+  if (held_ && WallClock::now() - wait_since_ > hold_limit()) {
+    event("plan_late", now_, "no plan within " + std::to_string(wall_s(hold_limit())) +
                                  " s: the world goes on with the spacecraft safe");
     lockstep_.acknowledge(held_->clock.tick, held_commands_);
     held_.reset();
@@ -397,8 +404,12 @@ void ExecutiveNode::on_reply() {
       for (const std::string& g : asked_goals_) lost[g] = "the planner found no plan: " + reply->detail;
       lose_goals(lost, now_);
       ask_for_plan(asked_origin_, asked_end_, asked_state_, asked_purpose_ + " (without the lost goals)");
+    } else {
+      // Rejected (busy, stopping, ...) or a plan that does not validate: asked again in a moment.
+      reask_ = true;
+      reask_after_ = WallClock::now() + seconds(std::min(1.0, options_.plan_timeout_s));
     }
-    return;  // otherwise the timer asks again
+    return;
   }
   if (for_next) {
     next_plan_ = std::move(*reply);
@@ -407,6 +418,14 @@ void ExecutiveNode::on_reply() {
                                      std::to_string(asked_origin_) + " s, " +
                                      std::to_string(next_plan_->plan.tokens.size()) + " tokens");
     finish_held_tick();  // a tick at the horizon's end waited for it
+    return;
+  }
+  if (lockstep_mode_ && !held_ && now_ > asked_origin_) {
+    // Its hold ran out and the world went on: a plan that should have begun in the past would
+    // only break at once. Asked again from the next tick (which that request then holds).
+    event("plan_refused", now_, reply->request_id + ": arrived " + std::to_string(now_ - asked_origin_) +
+                                    " s after its origin; asking again from now");
+    reask_ = true;
     return;
   }
   const bool replan = state_ == State::kSafeWaiting;

@@ -66,6 +66,7 @@ class ExecutiveNode {
   void run_tick(const msg::SimClock& clock);  // the tick's work and its acknowledgement
   // Acknowledges the tick with `sent` commands, or holds it while a plan is awaited.
   void finish_tick(const msg::SimClock& clock, std::uint32_t sent);
+  PlannerLink::Clock::duration hold_limit() const;
   void dispatch(Time now, std::vector<DeviceCommand>& out);
   bool step_plan(const Observations& seen, std::vector<DeviceCommand>& out);  // false: aborted
   void on_reply();
@@ -118,6 +119,8 @@ class ExecutiveNode {
   std::vector<msg::PlannerTimelineValue> asked_state_;
   std::string asked_purpose_;
   bool reask_ = false;
+  PlannerLink::Clock::time_point reask_after_{};  // not before (after a rejection)
+  bool lockstep_mode_ = true;  // of the last tick
   std::optional<HeldTick> held_;
   std::uint32_t held_commands_ = 0;      // already sent for the held tick
   PlannerLink::Clock::time_point wait_since_ = PlannerLink::Clock::now();  // for a plan
