@@ -75,8 +75,10 @@ class ExecutiveTest : public ProcessTest {
     telemetry_.emplace(participant(), dds::topics::spacecraft_telemetry);
     const std::string scenario = scenario_with(faults);
     planner_ = &start_planner();
+    // Every flight writes its report (plan.svg, report.md) into the test's folder.
     executive_args.insert(executive_args.begin(), {"--config", kConfig, "--domain", std::to_string(domain),
-                                                   "--log-dir", dir().path(), "--log-level", "debug"});
+                                                   "--log-dir", dir().path(), "--log-level", "debug",
+                                                   "--report-dir", dir().file("report")});
     executive_ = &start("executive", AUTONOMY_EXECUTIVE_BIN, executive_args);
     start_simulator({"--config", scenario, "--wait-for", kExecutive});
   }
@@ -176,6 +178,13 @@ TEST_F(ExecutiveTest, WithoutFaultsEveryGoalIsAchievedAndTheHorizonsJoinWithoutA
   EXPECT_EQ(last_telemetry_->propulsion.thrust_level, 0u);
   EXPECT_EQ(commands_to("ips").size(), 4u);  // thrust, standby, thrust, standby
   expect_every_event_seen();
+  // The report: both plans' timelines drawn, every goal listed.
+  const std::string md = read_file(dir().file("report/report.md")), svg = read_file(dir().file("report/plan.svg"));
+  EXPECT_NE(md.find("16 goals achieved, 0 lost"), std::string::npos) << md;
+  EXPECT_NE(md.find("- thrust2"), std::string::npos);
+  EXPECT_EQ(svg.rfind("<svg", 0), 0u);
+  EXPECT_NE(svg.find("dsone.attitude"), std::string::npos);
+  EXPECT_NE(svg.find("horizon_joined"), std::string::npos);
 }
 
 TEST_F(ExecutiveTest, CameraStuckOnAbortsSafesAndTheNewPlanGoesOnWithoutTheCamera) {

@@ -177,8 +177,8 @@ void ExecutiveNode::dispatch(Time now, std::vector<DeviceCommand>& out) {
     state_ = State::kFinished;
     event("finished", now, std::to_string(achieved_.size()) + " goals achieved, " +
                                std::to_string(lost_.size()) + " lost");
+    write_report();  // before the status says finished: whoever waits for it finds the report
     publish_status();
-    write_report();
     return;
   }
   if (!next_asked_ && horizon_end_ < mission_.horizon() &&
