@@ -20,14 +20,16 @@ std::chrono::nanoseconds seconds(double s) {
 
 double wall_s(WallClock::duration d) { return std::chrono::duration<double>(d).count(); }
 
-// A token's parameters as a state value, when each is one value (not a set or an interval).
+// Parameters a state value can carry: each one value, not a set or an interval.
+bool single_values(const std::vector<std::string>& parameters) {
+  return std::all_of(parameters.begin(), parameters.end(), [](const std::string& p) {
+    return !p.empty() && p.find_first_of("[{, ") == std::string::npos;
+  });
+}
+
 std::optional<msg::PlannerTimelineValue> value_of(const planner::PlanToken& t) {
-  msg::PlannerTimelineValue v{t.timeline(), t.predicate, {}};
-  for (const std::string& p : t.parameters) {
-    if (p.empty() || p.find_first_of("[{, ") != std::string::npos) return std::nullopt;
-    v.parameters.push_back(p);
-  }
-  return v;
+  if (!single_values(t.parameters)) return std::nullopt;
+  return msg::PlannerTimelineValue{t.timeline(), t.predicate, t.parameters};
 }
 
 bool usable(const msg::PlanningReply& r) {
@@ -138,7 +140,7 @@ void ExecutiveNode::finish_tick(const msg::SimClock& clock, std::uint32_t sent) 
                         horizon_end_ < mission_.horizon());
   if (waiting && (state_ == State::kWaitingForPlan || planner_.waiting()) &&
       clock.mode == msg::ClockMode::Lockstep && WallClock::now() - wait_since_ < hold_limit()) {
-    held_ = HeldTick{clock, held_ ? held_->since : WallClock::now()};
+    held_ = HeldTick{clock};
     held_commands_ = sent;
     spdlog::debug("tick {} held for a plan", clock.tick);
   } else {
@@ -281,9 +283,7 @@ std::vector<msg::PlannerTimelineValue> ExecutiveNode::current_values(const Repla
   const std::set<std::string> carried = mission_.state_timelines();
   for (const ReplanRequest::TimelineValue& v : r.state) {
     if (!carried.count(v.timeline)) continue;
-    bool single = true;
-    for (const std::string& p : v.parameters) single = single && !p.empty() && p.find_first_of("[{, ") == std::string::npos;
-    if (single) state.push_back({v.timeline, v.predicate, v.parameters});
+    if (single_values(v.parameters)) state.push_back({v.timeline, v.predicate, v.parameters});
   }
   for (const TimelineValue& safe : config_.safe_values) {
     auto it = std::find_if(state.begin(), state.end(),

@@ -57,9 +57,8 @@ class ExecutiveNode {
 
  private:
   enum class State { kWaitingForPlan, kExecuting, kSafeWaiting, kFinished };
-  struct HeldTick {
+  struct HeldTick {  // how long it may be held: hold_limit() from wait_since_
     msg::SimClock clock;
-    PlannerLink::Clock::time_point since;
   };
 
   void on_tick(const msg::SimClock& clock);

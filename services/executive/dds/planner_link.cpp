@@ -22,7 +22,6 @@ std::string PlannerLink::ask(msg::PlanningRequest request, const std::string& pu
                          .count();
   request.request_id = requester_ + "-" + std::to_string(stamp) + "-" + std::to_string(next_++);
   outstanding_ = Outstanding{request.request_id, request.plan_origin, Clock::now()};
-  ++attempts_;
   spdlog::info("plan request {} ({}): origin {} s, {} planner(s) matched", request.request_id,
                purpose, request.plan_origin, request_writer_.matched_readers());
   request_writer_.write(request);

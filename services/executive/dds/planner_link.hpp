@@ -33,7 +33,6 @@ class PlannerLink {
   const std::string& outstanding_id() const { return outstanding_->id; }
   std::int64_t outstanding_origin() const { return outstanding_->origin; }
   Clock::duration waited() const { return Clock::now() - outstanding_->sent; }
-  unsigned attempts() const { return attempts_; }
   std::size_t planners() const { return request_writer_.matched_readers(); }
   const dds::Reader<msg::PlanningReply>& reply_reader() const { return reply_reader_; }
 
@@ -52,7 +51,6 @@ class PlannerLink {
   dds::Reader<msg::PlanningReply> reply_reader_;
   std::optional<Outstanding> outstanding_;
   std::uint64_t next_ = 1;
-  unsigned attempts_ = 0;
 };
 
 }  // namespace autonomy::executive

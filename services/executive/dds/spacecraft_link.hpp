@@ -35,8 +35,6 @@ class SpacecraftLink {
   // Writes one command without awaiting its confirmation; safe from any thread (the watchdog).
   void write_unrecorded(const msg::SpacecraftCommand& command) const { command_writer_.write(command); }
 
-  std::size_t matched_readers() const { return command_writer_.matched_readers(); }
-
  private:
   std::string source_, spacecraft_;
   dds::Topic<msg::SpacecraftTelemetry> telemetry_topic_;
