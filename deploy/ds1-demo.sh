@@ -8,37 +8,46 @@
 # Options: --domain N (default $AUTONOMY_DOMAIN or 0), --no-setup (skip install and build),
 #          --faults LIST (comma-separated ids of the scenario's commented faults: micas-stuck-on,
 #          lpe-failed, power-sensor-false, thruster-x-stuck, ips-unconfirmed; "all" for the five;
-#          default none).
+#          default none),
+#          --rover (the robot domain instead: a rover's survey on the field, deploy/sets/rover.set;
+#          its drives become go-to goals of the behavior controller).
 set -euo pipefail
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
 domain=${AUTONOMY_DOMAIN:-0}
 setup=1
 faults=""
+set_name=ds1
 while [ $# -gt 0 ]; do
   case $1 in
     --domain) domain=$2; shift 2 ;;
     --no-setup) setup=0; shift ;;
     --faults) faults=$2; shift 2 ;;
-    -h|--help) sed -n '2,12p' "${BASH_SOURCE[0]}"; exit 0 ;;
+    --rover) set_name=rover; shift ;;
+    -h|--help) sed -n '2,14p' "${BASH_SOURCE[0]}"; exit 0 ;;
     *) echo "ds1-demo: unknown option $1 (see --help)" >&2; exit 2 ;;
   esac
 done
 all="micas-stuck-on,lpe-failed,power-sensor-false,thruster-x-stuck,ips-unconfirmed"
 [ "$faults" = all ] && faults=$all
+if [ $set_name = rover ] && [ -n "$faults" ]; then
+  echo "ds1-demo: --faults is for the spacecraft, not with --rover" >&2
+  exit 2
+fi
 
 if [ $setup -eq 1 ]; then
   bash "$repo/deploy/install-deps.sh"
   echo "ds1-demo: building the simulator, the planner, the executive and the autonomy CLI"
-  bash "$repo/deploy/build.sh" --target simulator --target planner --target executive --target autonomy
+  bash "$repo/deploy/build.sh" --target simulator --target planner --target executive --target autonomy \
+    --target behavior
 fi
 
 cli="$repo/build/bin/autonomy"
 export CYCLONEDDS_URI="file://$repo/deploy/dds/loopback.xml"
 export AUTONOMY_DOMAIN=$domain
-run_dir="$repo/runs/ds1-$(date +%Y%m%d-%H%M%S)"
+run_dir="$repo/runs/$set_name-$(date +%Y%m%d-%H%M%S)"
 mkdir -p "$run_dir"
-cp "$repo/deploy/scenarios/ds1.pbtxt" "$run_dir/ds1.pbtxt"
+[ $set_name = ds1 ] && cp "$repo/deploy/scenarios/ds1.pbtxt" "$run_dir/ds1.pbtxt"
 IFS=, read -ra chosen <<<"$faults"
 for id in "${chosen[@]}"; do
   [ -z "$id" ] && continue
@@ -46,9 +55,9 @@ for id in "${chosen[@]}"; do
     { echo "ds1-demo: no fault '$id' in deploy/scenarios/ds1.pbtxt (known: $all)" >&2; exit 2; }
   sed -i "s|# faults { id: \"$id\"|faults { id: \"$id\"|" "$run_dir/ds1.pbtxt"
 done
-echo "ds1-demo: faults: ${faults:-none}; run folder $run_dir"
+echo "ds1-demo: $set_name, faults: ${faults:-none}; run folder $run_dir"
 
-bash "$repo/deploy/launch.sh" --detach --domain "$domain" --run-dir "$run_dir" ds1
+bash "$repo/deploy/launch.sh" --detach --domain "$domain" --run-dir "$run_dir" $set_name
 finish() { bash "$repo/deploy/launch.sh" stop "$run_dir" || true; }
 trap finish EXIT
 trap 'exit 130' INT TERM
@@ -56,7 +65,7 @@ trap 'exit 130' INT TERM
 started=$SECONDS
 while [ ! -s "$run_dir/report.md" ]; do
   if [ $((SECONDS - started)) -gt 600 ]; then
-    echo "ds1-demo: the day was not flown within 600 s; logs in $run_dir" >&2
+    echo "ds1-demo: the mission was not finished within 600 s; logs in $run_dir" >&2
     exit 1
   fi
   status=$("$cli" topic echo autonomy/executive/status --count 1 --timeout 2 2>/dev/null || true)

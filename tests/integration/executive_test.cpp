@@ -24,6 +24,7 @@
 #include <optional>
 #include <regex>
 
+#include "tests/support/executive_watch.hpp"
 #include "tests/support/process_test.hpp"
 
 namespace autonomy::test {
@@ -40,10 +41,6 @@ const std::vector<std::string> kThrustGoals = {"thrust1", "thrust2"};
 const std::vector<std::string> kDownlinkGoals = {"down1", "down2"};
 const std::vector<std::string> kScheduleGoals = {"hidden1", "pass1", "hidden2", "pass2"};
 
-std::vector<std::string> sorted(std::vector<std::string> v) {
-  std::sort(v.begin(), v.end());
-  return v;
-}
 std::vector<std::string> all_of(std::initializer_list<std::vector<std::string>> parts) {
   std::vector<std::string> out;
   for (const auto& p : parts) out.insert(out.end(), p.begin(), p.end());
@@ -68,8 +65,7 @@ class ExecutiveTest : public ProcessTest {
 
   void fly(int domain, const std::vector<std::string>& faults, std::vector<std::string> executive_args = {}) {
     join(domain);
-    events_.emplace(participant(), dds::topics::executive_event);
-    status_.emplace(participant(), dds::topics::executive_status);
+    watch_.emplace(participant());
     commands_.emplace(participant(), dds::topics::spacecraft_command);
     truth_.emplace(participant(), dds::topics::truth_spacecraft_fault);
     telemetry_.emplace(participant(), dds::topics::spacecraft_telemetry);
@@ -88,8 +84,7 @@ class ExecutiveTest : public ProcessTest {
   }
 
   void poll() {
-    events_->poll();
-    status_->poll();
+    watch_->poll();
     commands_->poll();
     truth_->poll();
     for (auto& t : telemetry_->poll()) last_telemetry_ = t;
@@ -97,32 +92,14 @@ class ExecutiveTest : public ProcessTest {
   ::testing::AssertionResult finished() {
     return await("the executive finished the four hours", [&] {
       poll();
-      return !status_->matching([](const auto& s) { return s.state == "finished"; }).empty();
+      return watch_->finished();
     }, std::chrono::seconds(120));
   }
-  const msg::ExecutiveStatus& final_status() {
-    static msg::ExecutiveStatus none;
-    auto done = status_->matching([](const auto& s) { return s.state == "finished"; });
-    if (done.empty()) return none;
-    last_final_ = done.back();
-    return last_final_;
-  }
-  std::vector<std::string> achieved() { return sorted(final_status().goals_achieved); }
-  std::vector<std::string> lost() {
-    std::vector<std::string> labels;
-    for (const std::string& g : final_status().goals_lost) labels.push_back(g.substr(0, g.find(':')));
-    return sorted(labels);
-  }
-  std::vector<msg::ExecutiveEvent> events(const std::string& kind) const {
-    return events_->matching([&](const auto& e) { return e.kind == kind; });
-  }
-  std::string story() const {
-    std::string s;
-    for (const auto& e : events_->all())
-      if (e.kind != "started" && e.kind != "ended" && e.kind != "confirmed" && e.kind != "command")
-        s += std::to_string(e.tick) + " " + e.kind + ": " + e.text + "\n";
-    return s;
-  }
+  msg::ExecutiveStatus final_status() const { return watch_->final_status(); }
+  std::vector<std::string> achieved() const { return watch_->achieved(); }
+  std::vector<std::string> lost() const { return watch_->lost(); }
+  std::vector<msg::ExecutiveEvent> events(const std::string& kind) const { return watch_->events(kind); }
+  std::string story() const { return watch_->story(false); }
   // Commands the executive sent to `device` at or after `tick`.
   std::vector<msg::SpacecraftCommand> commands_to(const std::string& device, int64_t tick = 0) const {
     return commands_->matching([&](const auto& c) {
@@ -132,7 +109,7 @@ class ExecutiveTest : public ProcessTest {
   // The event numbers are 1, 2, ... without a gap: nothing the executive said was lost.
   void expect_every_event_seen() const {
     std::vector<uint64_t> numbers;
-    for (const auto& e : events_->all())
+    for (const auto& e : watch_->all_events())
       if (e.number > 0) numbers.push_back(e.number);
     std::sort(numbers.begin(), numbers.end());
     ASSERT_FALSE(numbers.empty());
@@ -142,13 +119,11 @@ class ExecutiveTest : public ProcessTest {
 
   ChildProcess* planner_ = nullptr;
   ChildProcess* executive_ = nullptr;
-  std::optional<Recorder<msg::ExecutiveEvent>> events_;
-  std::optional<Recorder<msg::ExecutiveStatus>> status_;
+  std::optional<ExecutiveWatch> watch_;
   std::optional<Recorder<msg::SpacecraftCommand>> commands_;
   std::optional<Recorder<msg::SpacecraftFaultState>> truth_;
   std::optional<Recorder<msg::SpacecraftTelemetry>> telemetry_;
   std::optional<msg::SpacecraftTelemetry> last_telemetry_;
-  msg::ExecutiveStatus last_final_;
 };
 
 #define FLY(domain, ...)    \
@@ -199,11 +174,11 @@ TEST_F(ExecutiveTest, CameraStuckOnAbortsSafesAndTheNewPlanGoesOnWithoutTheCamer
   EXPECT_FALSE(commands_->matching([&](const auto& c) {
     return c.source == kExecutive && c.tick == t && c.device == "ips" && c.command == "standby";
   }).empty());
-  const auto replans = events_->matching([&](const auto& e) {
+  const auto replans = watch_->events_where([&](const auto& e) {
     return e.kind == "plan_requested" && e.text.rfind("replan", 0) == 0;
   });
   ASSERT_FALSE(replans.empty()) << story();
-  const auto executing = events_->matching([&](const auto& e) {
+  const auto executing = watch_->events_where([&](const auto& e) {
     return e.kind == "plan_executing" && e.text.find("new plan") != std::string::npos;
   });
   ASSERT_EQ(executing.size(), 1u) << story();
@@ -319,7 +294,7 @@ TEST_F(ExecutiveTest, APlannerKilledMidReplanIsAskedAgainAndTheSpacecraftStaysSa
   const int64_t t = events("aborted")[0].tick;
   start_planner("planner-again");
   ASSERT_TRUE(finished()) << story();
-  const auto executing = events_->matching([&](const auto& e) {
+  const auto executing = watch_->events_where([&](const auto& e) {
     return e.kind == "plan_executing" && e.text.find("new plan") != std::string::npos;
   });
   ASSERT_EQ(executing.size(), 1u) << story();
@@ -330,7 +305,7 @@ TEST_F(ExecutiveTest, APlannerKilledMidReplanIsAskedAgainAndTheSpacecraftStaysSa
     return c.source == kExecutive && c.tick >= t && c.tick < resumed;
   });
   for (const auto& c : between) EXPECT_EQ(c.device + " " + c.command, "ips standby");
-  const auto asked = events_->matching([&](const auto& e) {
+  const auto asked = watch_->events_where([&](const auto& e) {
     return e.kind == "plan_requested" && e.tick >= t && e.tick <= resumed;
   });
   EXPECT_GE(asked.size(), 2u) << story();

@@ -91,6 +91,48 @@ class Checker {
     }
   }
 
+  // Robots: devices named once, sites named once, and the rules for their devices use the
+  // commands the robot link knows (go_to(site), report(site)).
+  void robots(const pbc::ExecutiveConfig& f, const Locator& root, ExecutiveConfig& out) {
+    std::set<std::string> devices;
+    for (int i = 0; i < f.robots_size(); ++i) {
+      const pbc::Robot& r = f.robots(i);
+      const Locator at = root.nested("robots", i);
+      RobotSpec spec{r.device(), r.robot_id().empty() ? r.device() : r.robot_id(), {},
+                     r.tolerance(), r.radio_device(), r.base()};
+      if (r.device().empty()) error(at.self(), "robot: device is needed");
+      else if (!devices.insert(r.device()).second)
+        error(at.at("device"), "robot: device '" + r.device() + "' is named twice");
+      if (!r.radio_device().empty() && !devices.insert(r.radio_device()).second)
+        error(at.at("radio_device"), "robot: device '" + r.radio_device() + "' is named twice");
+      if (!r.radio_device().empty() && r.base().empty())
+        error(at.at("radio_device"), "robot: radio_device needs base (the robot id reports go to)");
+      if (r.tolerance() < 0) error(at.at("tolerance"), "robot: tolerance must be >= 0");
+      if (r.sites_size() == 0) error(at.self(), "robot '" + r.device() + "': no sites to drive to");
+      std::set<std::string> names;
+      for (int k = 0; k < r.sites_size(); ++k) {
+        const pbc::Site& s = r.sites(k);
+        if (s.name().empty()) error(at.nested("sites", k).self(), "site: name is needed");
+        else if (!names.insert(s.name()).second)
+          error(at.nested("sites", k).at("name"), "site '" + s.name() + "' is named twice");
+        spec.sites.push_back({s.name(), s.x(), s.y()});
+      }
+      out.robots.push_back(std::move(spec));
+    }
+    for (int i = 0; i < f.commands_size(); ++i) {
+      const pbc::CommandRule& c = f.commands(i);
+      if (c.command().empty()) continue;
+      for (const RobotSpec& r : out.robots) {
+        const char* needed = c.device() == r.device ? "go_to" : c.device() == r.radio_device ? "report" : nullptr;
+        if (!needed) continue;
+        if (c.command() != needed || c.arguments_size() != 1)
+          error(root.nested("commands", i).at("command"),
+                "command rule: robot device '" + c.device() + "' takes " + needed + "(site), not " +
+                    c.command() + " with " + std::to_string(c.arguments_size()) + " arguments");
+      }
+    }
+  }
+
   void safing(const pbc::Safing& f, const Locator& at, ExecutiveConfig& out) {
     for (int i = 0; i < f.commands_size(); ++i) {
       const pbc::DeviceCommand& c = f.commands(i);
@@ -187,6 +229,12 @@ class Checker {
 
 }  // namespace
 
+const RobotSpec::Site* RobotSpec::site(const std::string& name) const {
+  for (const Site& s : sites)
+    if (s.name == name) return &s;
+  return nullptr;
+}
+
 CommandMap ExecutiveConfig::command_map() const {
   CommandMap map;
   std::string ignored;
@@ -234,6 +282,7 @@ std::optional<ExecutiveConfig> parse_executive_config(const std::string& text,
   if (file.commands_size() == 0) check.error(root.self(), "no command rules: nothing would be commanded");
   check.rules(file, root, out);
   check.safing(file.safing(), root.nested("safing"), out);
+  check.robots(file, root, out);
   check.faults(file.faults(), root.nested("faults"), out.faults);
   if (file.horizon_s() < 0) check.error(root.at("horizon_s"), "horizon_s must be >= 0");
   if (file.request_lead_s() < 0) check.error(root.at("request_lead_s"), "request_lead_s must be >= 0");

@@ -29,6 +29,20 @@ struct FaultTableSpec {
   std::vector<ActuatorFallback> actuators;
 };
 
+// A robot commanded through its behavior controller (idl/executive_config.proto, Robot).
+struct RobotSpec {
+  struct Site {
+    std::string name;
+    double x = 0, y = 0;
+  };
+  std::string device, robot_id;
+  std::vector<Site> sites;
+  double tolerance = 0;
+  std::string radio_device, base;
+
+  const Site* site(const std::string& name) const;
+};
+
 struct ExecutiveConfig {
   std::string source;  // the file it came from
   std::string name;
@@ -42,6 +56,7 @@ struct ExecutiveConfig {
   std::string planner_engine;
   std::int64_t planner_budget_ms = 0;
   std::string optional_engine = "discrepancy";
+  std::vector<RobotSpec> robots;
 
   CommandMap command_map() const;  // the rules, already checked
   // A fresh table (the parts keep state per plan run): stuck devices, resets, mode

@@ -50,6 +50,9 @@ ExecutiveNode::ExecutiveNode(service::Service& service, ExecutiveNodeOptions opt
       mission_(std::move(mission)),
       name_("executive/" + service.options().instance),
       spacecraft_(service.participant(), name_, options_.spacecraft),
+      robots_(config_.robots.empty() ? nullptr
+                                     : std::make_unique<RobotLink>(service.participant(), name_,
+                                                                   config_.robots)),
       planner_(service.participant(), name_),
       event_topic_(service.participant(), dds::topics::executive_event),
       status_topic_(service.participant(), dds::topics::executive_status),
@@ -112,7 +115,14 @@ void ExecutiveNode::run_tick(const msg::SimClock& clock) {
         event("confirmed", now_, c.device + " " + c.command + " (" + c.command_id + ")");
     telemetry_ = std::move(t);
   }
-  for (const auto& [command, reason] : spacecraft_.take_rejections()) {
+  std::vector<std::pair<DeviceCommand, std::string>> rejections = spacecraft_.take_rejections();
+  if (robots_) {
+    for (const Confirmation& c : robots_->update())
+      if (executive_ && executive_->confirm(c.device, c.command))
+        event("confirmed", now_, c.device + " " + c.command + " (" + c.command_id + ")");
+    for (auto& r : robots_->take_rejections()) rejections.push_back(std::move(r));
+  }
+  for (const auto& [command, reason] : rejections) {
     if (executive_) executive_->rejected(command, reason);
     event("rejected", now_, command.device + " " + command.command + " rejected: " + reason);
   }
@@ -122,8 +132,31 @@ void ExecutiveNode::run_tick(const msg::SimClock& clock) {
   settle();
   reask();
   if (state_ == State::kExecuting) dispatch(now_, out);
-  finish_tick(clock, spacecraft_.send(out, clock.tick));
+  finish_tick(clock, send(out, clock.tick));
   watchdog_.tick_ended();
+}
+
+std::uint32_t ExecutiveNode::send(const std::vector<DeviceCommand>& commands, std::int64_t tick) {
+  // Robot commands go to behavior controllers, the rest to the spacecraft; only the latter are
+  // counted in the simulator's TickAck (the controllers answer their own ticks).
+  if (!robots_) return spacecraft_.send(commands, tick);
+  std::vector<DeviceCommand> to_robots, to_spacecraft;
+  for (const DeviceCommand& c : commands)
+    (robots_->handles(c.device) ? to_robots : to_spacecraft).push_back(c);
+  robots_->send(to_robots);
+  return spacecraft_.send(to_spacecraft, tick);
+}
+
+std::map<std::string, std::string> ExecutiveNode::device_modes() const {
+  std::map<std::string, std::string> modes;
+  if (telemetry_)
+    for (const msg::DeviceReport& d : telemetry_->devices) modes[d.device] = d.mode;
+  if (robots_) {
+    Observations seen;
+    robots_->observe(seen);
+    for (auto& [device, mode] : seen.device_modes) modes[device] = mode;
+  }
+  return modes;
 }
 
 PlannerLink::Clock::duration ExecutiveNode::hold_limit() const {
@@ -161,6 +194,7 @@ void ExecutiveNode::ask_first() {
 void ExecutiveNode::dispatch(Time now, std::vector<DeviceCommand>& out) {
   Observations seen = telemetry_ ? observations_of(*telemetry_, now) : Observations{};
   seen.time = now;
+  if (robots_) robots_->observe(seen);
   // The plan's own step first: at its horizon's end its last tokens end there.
   if (!step_plan(seen, out)) return;
   if (now >= horizon_end_ && next_plan_) {
@@ -251,10 +285,10 @@ bool ExecutiveNode::step_plan(const Observations& seen, std::vector<DeviceComman
 }
 
 void ExecutiveNode::settle() {
-  if (state_ != State::kSafeWaiting || settling_.empty() || !telemetry_) return;
-  for (const msg::DeviceReport& d : telemetry_->devices) {
-    auto it = settling_.find(d.device);
-    if (it != settling_.end() && it->second == d.mode) settling_.erase(it);
+  if (state_ != State::kSafeWaiting || settling_.empty()) return;
+  for (const auto& [device, mode] : device_modes()) {
+    auto it = settling_.find(device);
+    if (it != settling_.end() && it->second == mode) settling_.erase(it);
   }
   if (!settling_.empty() && now_ < settle_deadline_) return;
   if (!settling_.empty()) event("settling", now_, "not settled in time: replanning anyway");
@@ -449,7 +483,7 @@ void ExecutiveNode::finish_held_tick() {
   watchdog_.tick_started();
   std::vector<DeviceCommand> out;
   if (state_ == State::kExecuting) dispatch(now_, out);
-  finish_tick(clock, held_commands_ + spacecraft_.send(out, clock.tick));
+  finish_tick(clock, held_commands_ + send(out, clock.tick));
   watchdog_.tick_ended();
 }
 

@@ -33,6 +33,7 @@
 #include "executive_config.hpp"
 #include "mission.hpp"
 #include "planner_link.hpp"
+#include "robot_link.hpp"
 #include "run_report.hpp"
 #include "spacecraft_link.hpp"
 #include "watchdog.hpp"
@@ -67,6 +68,8 @@ class ExecutiveNode {
   void finish_tick(const msg::SimClock& clock, std::uint32_t sent);
   PlannerLink::Clock::duration hold_limit() const;
   void dispatch(Time now, std::vector<DeviceCommand>& out);
+  std::uint32_t send(const std::vector<DeviceCommand>& commands, std::int64_t tick);
+  std::map<std::string, std::string> device_modes() const;  // the spacecraft's and the robots' 
   bool step_plan(const Observations& seen, std::vector<DeviceCommand>& out);  // false: aborted
   void on_reply();
   void on_timer();
@@ -97,6 +100,7 @@ class ExecutiveNode {
   Mission mission_;
   std::string name_;
   SpacecraftLink spacecraft_;
+  std::unique_ptr<RobotLink> robots_;  // when the configuration names robots
   PlannerLink planner_;
   dds::Topic<msg::ExecutiveEvent> event_topic_;
   dds::Topic<msg::ExecutiveStatus> status_topic_;

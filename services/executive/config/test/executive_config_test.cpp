@@ -11,15 +11,16 @@ namespace {
 
 const std::string kExamples = EXECUTIVE_EXAMPLES_DIR;
 
-// The DS1 example with `from` replaced by `to`, parsed as if it were the example file.
-std::vector<configfile::FileError> errors_with(const std::string& from, const std::string& to) {
-  std::ifstream in(kExamples + "/ds1.pbtxt");
+// The DS1 example (or another) with `from` replaced by `to`, parsed as if it were that file.
+std::vector<configfile::FileError> errors_with(const std::string& from, const std::string& to,
+                                               const std::string& example = "ds1.pbtxt") {
+  std::ifstream in(kExamples + "/" + example);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const auto at = text.find(from);
   EXPECT_NE(at, std::string::npos) << from;
   if (at != std::string::npos) text.replace(at, from.size(), to);
   std::vector<configfile::FileError> errors;
-  EXPECT_FALSE(parse_executive_config(text, kExamples + "/ds1.pbtxt", errors));
+  EXPECT_FALSE(parse_executive_config(text, kExamples + "/" + example, errors));
   return errors;
 }
 
@@ -83,6 +84,37 @@ TEST(ExecutiveConfig, MistakesAreReportedWhereTheyAre) {
   EXPECT_NE(first(errors_with("otherwise: \"unpowered\"", "otherwise: \"asleep\"")).find("mode identification:"),
             std::string::npos)
       << first(errors_with("otherwise: \"unpowered\"", "otherwise: \"asleep\""));
+}
+
+TEST(ExecutiveConfig, TheRoverExampleNamesItsRobotAndSites) {
+  std::vector<configfile::FileError> errors;
+  auto c = load_executive_config(kExamples + "/field-rover.pbtxt", errors);
+  ASSERT_TRUE(c) << first(errors);
+  ASSERT_EQ(c->robots.size(), 1u);
+  const RobotSpec& rover = c->robots[0];
+  EXPECT_EQ(rover.device, "rover");
+  EXPECT_EQ(rover.radio_device, "rover_radio");
+  EXPECT_EQ(rover.base, "lander");
+  ASSERT_TRUE(rover.site("crater"));
+  EXPECT_DOUBLE_EQ(rover.site("crater")->x, 29.0);
+  EXPECT_FALSE(rover.site("moon"));
+  EXPECT_EQ(c->devices_of("rover.location"), std::vector<std::string>{"rover"});
+}
+
+TEST(ExecutiveConfig, RobotMistakesAreReportedWhereTheyAre) {
+  const std::string file = kExamples + "/field-rover.pbtxt";
+  const auto with = [](const std::string& from, const std::string& to) {
+    return first(errors_with(from, to, "field-rover.pbtxt"));
+  };
+  EXPECT_NE(with("sites { name: \"rock2\"", "sites { name: \"rock1\"").find("site 'rock1' is named twice"),
+            std::string::npos);
+  EXPECT_NE(with("base: \"lander\"", "").find("radio_device needs base"), std::string::npos);
+  EXPECT_NE(with("tolerance: 0.5", "tolerance: -1").find("tolerance must be >= 0"), std::string::npos);
+  const std::string wrong = with("command: \"go_to\"", "command: \"fly_to\"");
+  EXPECT_NE(wrong.find(file + ":16:"), std::string::npos) << wrong;
+  EXPECT_NE(wrong.find("robot device 'rover' takes go_to(site), not fly_to"), std::string::npos) << wrong;
+  EXPECT_NE(with("radio_device: \"rover_radio\"", "radio_device: \"rover\"").find("device 'rover' is named twice"),
+            std::string::npos);
 }
 
 }  // namespace
