@@ -38,6 +38,10 @@ int main(int argc, char** argv) {
                        "Above this many open jobs the large-scale engine is used instead of exact")
             ->check(CLI::Range(0, 12))
             ->capture_default_str();
+        app.add_option("--learning", options.learning,
+                       "Learn handover times, presence, door habits and travel times, keep them in the journal "
+                       "and schedule with them (autonomy courier knowledge prints them)")
+            ->capture_default_str();
         app.add_option("--budget-ms", options.budget_ms, "Time budget of one schedule, ms")
             ->check(CLI::Range(1.0, 10000.0))
             ->capture_default_str();

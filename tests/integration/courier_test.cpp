@@ -23,6 +23,7 @@
 //    164    CourierTest.KilledMidDeliveryTheRestartedCourierFinishesFromItsJournal
 //    165    CourierTest.BadCommandsAreRejectedWithReasonsAndTheServiceGoesOn
 //    166    CourierTest.TheCliSendsListsAndCancels
+//    167    CourierTest.WhatWasLearnedIsKeptInTheJournalAcrossRunsAndPrinted
 //    190    CourierTest.ARobotAttachedWhileJobsRunGetsWork
 //    191    CourierTest.ARobotKilledMidDeliveryHasItsJobsReallocatedAndItsParcelReportedStranded
 #include "tests/support/process_test.hpp"
@@ -475,6 +476,59 @@ TEST_F(CourierTest, TheCliSendsListsAndCancels) {
   EXPECT_EQ(listed, 0) << jobs_out;
   EXPECT_NE(jobs_out.find("job-1"), std::string::npos) << jobs_out;
   EXPECT_NE(jobs_out.find("cancelled"), std::string::npos) << jobs_out;
+}
+
+// Learning from experience: the paper's two deliveries teach handover times of the two people
+// and what the doors looked like; the courier keeps that in its journal when it stops, prints it
+// with `autonomy courier knowledge`, and starts the next run with it.
+TEST_F(CourierTest, WhatWasLearnedIsKeptInTheJournalAcrossRunsAndPrinted) {
+  setup_observers(167);
+  start_world(office_scenario(""));
+  send_paper_commands();
+  ASSERT_TRUE(both_jobs_finished("both jobs finished"));
+  stop_watching(*courier_);
+  courier_->signal(SIGTERM);
+  ASSERT_TRUE(courier_->wait_for_exit(30s));
+  const auto cli = [&](const std::string& name, std::vector<std::string> args) {
+    ChildProcess& p = start(name, AUTONOMY_AUTONOMY_BIN, args, false);
+    const auto status = p.wait_for_exit(30s);
+    EXPECT_TRUE(status && status->exited) << name << " did not end";
+    return std::make_pair(status && status->exited ? status->code : -1, read_file(p.log_file()));
+  };
+  const auto [code, out] = cli("knowledge", {"courier", "knowledge", journal_, "--json"});
+  ASSERT_EQ(code, 0) << out;
+  const auto learned = nlohmann::json::parse(out.substr(out.find('{')));
+  // Four handovers: the load and unload of each job, with the people of the two desks and
+  // the stations; each lasted about the scenario's handover time (seconds, not zero, not hours).
+  ASSERT_TRUE(learned.contains("handovers")) << out;
+  int handovers = 0;
+  for (const auto& [person, stats] : learned["handovers"].items()) {
+    handovers += stats["n"].get<int>();
+    EXPECT_GT(stats["mean_s"].get<double>(), 0.5) << person;
+    EXPECT_LT(stats["mean_s"].get<double>(), 300.0) << person;
+  }
+  EXPECT_GE(handovers, 2) << out;
+  EXPECT_TRUE(learned["handovers"].contains("Michael")) << out;  // the red letter's recipient, A-120
+  // A-120 was passed open: one open vote in the half hour of the run.
+  ASSERT_TRUE(learned.contains("doors") && learned["doors"].contains("A-120")) << out;
+  EXPECT_GE(learned["doors"]["A-120"][0]["open"].get<int>(), 1) << out;
+  EXPECT_EQ(learned["doors"]["A-120"][0]["closed"].get<int>(), 0) << out;
+  // Words for people too.
+  const auto [text_code, text] = cli("knowledge-text", {"courier", "knowledge", journal_});
+  EXPECT_EQ(text_code, 0);
+  EXPECT_NE(text.find("Handover times"), std::string::npos) << text;
+  EXPECT_NE(text.find("Michael"), std::string::npos) << text;
+  // A bad path says so.
+  const auto [bad, bad_out] = cli("knowledge-bad", {"courier", "knowledge", dir().file("none.db")});
+  EXPECT_NE(bad, 0);
+  // The next run starts with it.
+  ChildProcess& again = start_courier("courier-again");
+  ASSERT_TRUE(await("the restarted courier loaded what was learned", [&] {
+    return read_file(again.log_file()).find("learning: 2 people") != std::string::npos ||
+           read_file(again.log_file()).find("learning: 3 people") != std::string::npos ||
+           read_file(again.log_file()).find("learning: 4 people") != std::string::npos;
+  })) << read_file(again.log_file());
+  EXPECT_EQ(read_file(again.log_file()).find("learning: 0 people"), std::string::npos);
 }
 
 TEST_F(CourierTest, ARobotAttachedWhileJobsRunGetsWork) {

@@ -13,6 +13,7 @@ Command add_node_wait(CLI::App& node);
 Command add_courier_send(CLI::App& courier);
 Command add_courier_jobs(CLI::App& courier);
 Command add_courier_cancel(CLI::App& courier);
+Command add_courier_knowledge(CLI::App& courier);
 Command add_plan(CLI::App& app);
 
 }  // namespace autonomy::tools

@@ -24,13 +24,14 @@ int main(int argc, char** argv) {
   topic->require_subcommand(1);
   auto* node = app.add_subcommand("node", "Our processes, from their heartbeats: list, wait");
   node->require_subcommand(1);
-  auto* courier = app.add_subcommand("courier", "The courier service: send, jobs, cancel");
+  auto* courier = app.add_subcommand("courier", "The courier service: send, jobs, cancel; knowledge (what it learned)");
   courier->require_subcommand(1);
 
   const std::vector<Command> commands = {add_topic_list(*topic), add_topic_echo(*topic), add_topic_hz(*topic),
                                          add_topic_pub(*topic),  add_node_list(*node),   add_node_wait(*node),
                                          add_courier_send(*courier), add_courier_jobs(*courier),
-                                         add_courier_cancel(*courier), add_plan(app)};
+                                         add_courier_cancel(*courier), add_courier_knowledge(*courier),
+                                         add_plan(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -105,7 +105,15 @@ CourierNode::CourierNode(service::Service& service, CourierNodeOptions options)
   journal_ = std::make_unique<Journal>(options_.journal_path);
   ExecutiveSettings executive_settings;
   executive_settings.id_tag = "r" + std::to_string(journal_->run());
+  executive_settings.day = journal_->run();  // each run of the service votes as one day
   executive_ = std::make_unique<CourierExecutive>(options_.office.floor, *scheduler_, executive_settings);
+  if (options_.learning) {
+    executive_->experience() = journal_->load_experience();
+    scheduler_->use_experience(&executive_->experience());
+    spdlog::info("learning: {} people, {} doors, {} place pairs known from earlier runs",
+                 executive_->experience().handovers().size(), executive_->experience().doors().size(),
+                 executive_->experience().travel().size());
+  }
   std::set<std::string> declared;
   for (const auto& r : options_.robots) declared.insert(r.id);
   roster_ = std::make_unique<FleetRoster>(declared, options_.robot_lost_after_s);
@@ -248,6 +256,21 @@ msg::CourierJobStatus CourierNode::status_of(const Job& job, int64_t tick) const
   return s;
 }
 
+CourierNode::~CourierNode() {
+  try {
+    save_experience();
+  } catch (const std::exception& e) {
+    spdlog::error("learning: what was learned in this run could not be saved: {}", e.what());
+  }
+}
+
+void CourierNode::save_experience() {
+  if (!options_.learning || !executive_ || executive_->experience().unsaved() == 0) return;
+  journal_->save_experience(executive_->experience());
+  executive_->experience().mark_saved();
+  experience_saved_at_s_ = now_sim_s();
+}
+
 void CourierNode::carry_out(Orders orders, int64_t tick) {
   for (const auto& e : orders.events) {
     spdlog::info("{}", e.text);
@@ -266,6 +289,8 @@ void CourierNode::carry_out(Orders orders, int64_t tick) {
     if (const Job* job = executive_->job(id)) changed.push_back(job);
   journal_->save_progress(changed, answers_);
   answers_.clear();
+  // What was learned: at most once a simulated minute (and when the service stops).
+  if (now_sim_s() - experience_saved_at_s_ >= 60.0) save_experience();
   for (const Job* job : changed) job_writer_.write(status_of(*job, tick));
   for (const auto& h : orders.handovers) {
     journal_->record_handover(h);

@@ -11,6 +11,7 @@
 #include "common/dds/writer.hpp"
 #include "common/service/lockstep_client.hpp"
 #include "common/service/service.hpp"
+#include "services/courier/core/bridge/engine_schedule_source.hpp"
 #include "services/courier/core/execution/fleet_roster.hpp"
 #include "services/courier/dds/command_desk.hpp"
 #include "services/courier/dds/office_file.hpp"
@@ -39,15 +40,22 @@ struct CourierNodeOptions {
   int exact_max_jobs = 8;
   double budget_ms = 50.0;
   double grid_resolution_m = 0.1;
+  // Learn from experience (handover times, presence, door habits, travel times), keep it in the
+  // journal across runs and schedule with it; false: the office file's nominal values only.
+  bool learning = true;
 };
 
 class CourierNode {
  public:
   CourierNode(service::Service& service, CourierNodeOptions options);
+  ~CourierNode();
+  CourierNode(const CourierNode&) = delete;
+  CourierNode& operator=(const CourierNode&) = delete;
 
  private:
   void on_tick(const msg::SimClock& clock);
   void carry_out(Orders orders, int64_t tick);
+  void save_experience();
   msg::CourierJobStatus status_of(const Job& job, int64_t tick) const;
   double now_sim_s() const;
   double now_day_s() const;
@@ -58,9 +66,10 @@ class CourierNode {
 
   service::Service& service_;
   CourierNodeOptions options_;
-  std::unique_ptr<ScheduleSource> scheduler_;
+  std::unique_ptr<EngineScheduleSource> scheduler_;
   std::unique_ptr<CourierExecutive> executive_;
   std::unique_ptr<Journal> journal_;
+  double experience_saved_at_s_ = 0.0;  // simulated time of the last save of what was learned
   std::unique_ptr<CommandDesk> desk_;
   std::ofstream events_file_;
   std::vector<std::pair<std::string, std::string>> answers_;  // handover answers since the last tick

@@ -51,6 +51,7 @@ CourierOfficeResult load_courier_office(const std::string& scenario_path) {
     out.desk = person.desk;
     for (const auto& w : person.presence) out.presence.push_back({w.start_s, w.end_s});
     out.handover_s = person.handover_time.mean_s;  // the expected duration
+    if (auto desk = office.floor.places.find(out.desk); desk != office.floor.places.end()) desk->second.person = out.name;
     k.people.push_back(std::move(out));
   }
   for (const auto& s : spec.stations) k.stations.push_back({s.place, s.handover_time.mean_s});

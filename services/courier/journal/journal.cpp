@@ -4,63 +4,15 @@
 
 #include <stdexcept>
 
+#include "services/courier/journal/sqlite_statement.hpp"
+
 namespace autonomy::courier {
 
 namespace {
 
+using sql::Statement;
+
 constexpr int kSchemaVersion = 1;
-
-// One prepared statement; finalised on every path.
-class Statement {
- public:
-  Statement(sqlite3* db, const char* sql) : db_(db) {
-    if (sqlite3_prepare_v2(db, sql, -1, &stmt_, nullptr) != SQLITE_OK)
-      throw std::runtime_error(std::string("journal: cannot prepare '") + sql + "': " + sqlite3_errmsg(db));
-  }
-  ~Statement() { sqlite3_finalize(stmt_); }
-  Statement(const Statement&) = delete;
-  Statement& operator=(const Statement&) = delete;
-
-  Statement& text(int i, const std::string& v) {
-    sqlite3_bind_text(stmt_, i, v.data(), static_cast<int>(v.size()), SQLITE_TRANSIENT);
-    return *this;
-  }
-  Statement& integer(int i, long long v) {
-    sqlite3_bind_int64(stmt_, i, v);
-    return *this;
-  }
-  Statement& real(int i, const std::optional<double>& v) {
-    if (v)
-      sqlite3_bind_double(stmt_, i, *v);
-    else
-      sqlite3_bind_null(stmt_, i);
-    return *this;
-  }
-  // True while a row is available.
-  bool step() {
-    const int rc = sqlite3_step(stmt_);
-    if (rc == SQLITE_ROW) return true;
-    if (rc == SQLITE_DONE) return false;
-    throw std::runtime_error(std::string("journal: ") + sqlite3_errmsg(db_));
-  }
-  std::string column_text(int i) const {
-    const auto* p = reinterpret_cast<const char*>(sqlite3_column_text(stmt_, i));
-    return p ? std::string(p, static_cast<size_t>(sqlite3_column_bytes(stmt_, i))) : std::string();
-  }
-  void reset() {
-    sqlite3_reset(stmt_);
-    sqlite3_clear_bindings(stmt_);
-  }
-  long long column_integer(int i) const { return sqlite3_column_int64(stmt_, i); }
-  std::optional<double> column_real(int i) const {
-    if (sqlite3_column_type(stmt_, i) == SQLITE_NULL) return std::nullopt;
-    return sqlite3_column_double(stmt_, i);
-  }
-
- private:
-  sqlite3* db_;
-  sqlite3_stmt* stmt_ = nullptr;
-};
 
 const char* kJobColumns =
     "job_id, command_id, object_id, object_kind, object_colour, pickup, destination, deadline_s, accepted_at_s, "
@@ -104,6 +56,7 @@ Journal::Journal(const std::string& path) : path_(path) {
          "object_carrier TEXT, return_to TEXT, end_state_after_return TEXT, return_reason TEXT)");
     exec("CREATE TABLE IF NOT EXISTS handovers (request_id TEXT PRIMARY KEY, robot TEXT, load INTEGER, place TEXT, "
          "object_id TEXT, job_id TEXT, outcome TEXT)");
+    create_experience_tables();
   } catch (const std::runtime_error& e) {
     sqlite3_close(db_);
     db_ = nullptr;

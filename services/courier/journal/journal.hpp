@@ -6,6 +6,7 @@
 // whose answers never arrived (they are sent again with the same id: the simulator answers a
 // repeat with its latest answer, so what the robot carries is reconciled, not guessed).
 #include "services/courier/core/execution/courier_executive.hpp"
+#include "services/courier/core/knowledge/experience.hpp"
 
 #include <memory>
 #include <optional>
@@ -52,8 +53,17 @@ class Journal {
 
   const std::string& path() const { return path_; }
 
+  // What experience taught (experience_store.cpp): saved whole in one transaction, replacing
+  // what was there; loaded at start so that learning goes on across runs.
+  void save_experience(const Experience& experience);
+  Experience load_experience() const;
+  // The same from a journal opened read-only (no run counted): `autonomy courier knowledge`.
+  // Throws std::runtime_error naming the path when it cannot be read.
+  static Experience read_experience(const std::string& path);
+
  private:
   void exec(const char* sql) const;
+  void create_experience_tables() const;
   std::string path_;
   sqlite3* db_ = nullptr;
   int run_ = 0;

@@ -1,6 +1,7 @@
 #include "services/courier/core/bridge/engine_schedule_source.hpp"
 
 #include "services/behavior/core/door_knowledge.hpp"
+#include "services/courier/core/bridge/learned_problem.hpp"
 #include "services/courier/core/scheduler/allocation_rule.hpp"
 #include "services/courier/core/scheduler/scheduler_engine.hpp"
 #include "services/courier/core/scheduler/wall_clock_budget.hpp"
@@ -176,6 +177,8 @@ sched::SchedulingProblem EngineScheduleSource::problem_for(const PlanRequest& re
     }
   }
 
+  learned_notes_.clear();
+  if (experience_) learned_notes_ = apply_experience(*experience_, floor_, request.doors_seen_open, places, problem);
   return problem;
 }
 
@@ -201,7 +204,18 @@ Plan EngineScheduleSource::plan(const PlanRequest& request) {
   Plan plan;
   plan.engine = engine_name;
   plan.proved_optimal = schedule.proved_optimal;
-  for (const auto& u : schedule.unschedulable) plan.unschedulable[problem.jobs[static_cast<size_t>(u.job)].id] = u.detail;
+  for (const auto& u : schedule.unschedulable) {
+    const sched::Job& job = problem.jobs[static_cast<size_t>(u.job)];
+    std::string detail = u.detail;
+    // Hours cut by what was learned say so ("learned: A-120 usually closed 10:00-11:30").
+    for (const int person : {job.pickup.person, job.delivery.person}) {
+      if (person < 0 || person >= static_cast<int>(problem.people.size())) continue;
+      const auto note = learned_notes_.find(problem.people[static_cast<size_t>(person)].name);
+      if (note != learned_notes_.end() && detail.find(note->second) == std::string::npos)
+        detail += " (" + note->second + ")";
+    }
+    plan.unschedulable[job.id] = detail;
+  }
   if (!schedule.ok()) {
     // No schedule at all (infeasible, invalid, or out of time before the first one): the executive
     // keeps its routes and asks again; the jobs themselves are not to blame.

@@ -12,6 +12,7 @@
 #include "services/behavior/core/world_map.hpp"
 #include "services/courier/core/execution/floor.hpp"
 #include "services/courier/core/execution/schedule_source.hpp"
+#include "services/courier/core/knowledge/experience.hpp"
 #include "services/courier/core/knowledge/office_knowledge.hpp"
 #include "services/courier/core/scheduler/scheduling_problem.hpp"
 
@@ -42,6 +43,10 @@ class EngineScheduleSource : public ScheduleSource {
 
   Plan plan(const PlanRequest& request) override;
 
+  // Plans with what experience taught (learned_problem.hpp) from now on; nullptr: the office
+  // file's nominal values only. The experience must outlive this source.
+  void use_experience(const Experience* experience) { experience_ = experience; }
+
   // The scheduling problem plan() solves for `request` (benchmarks run other allocations on it).
   scheduling::SchedulingProblem problem_for(const PlanRequest& request);
   // The engine plan() uses: `engine` below exact_max_jobs open jobs and while the couriers'
@@ -63,6 +68,8 @@ class EngineScheduleSource : public ScheduleSource {
   std::map<std::set<std::string>, std::unique_ptr<Fields>> cache_;
   // The last plan's routes (robot -> (job, pickup?) in order): the warm start of the next one.
   std::map<std::string, std::vector<std::pair<std::string, bool>>> last_routes_;
+  const Experience* experience_ = nullptr;
+  std::map<std::string, std::string> learned_notes_;  // of the last problem: person -> what cut their hours
 };
 
 }  // namespace autonomy::courier

@@ -32,6 +32,11 @@ bool CourierExecutive::exhausted(std::map<std::string, int>& counts, const std::
   return ++counts[key] >= settings_.max_attempts;
 }
 
+std::string CourierExecutive::person_at(const std::string& place) const {
+  const FloorPlace* p = floor_.place(place);
+  return p ? p->person : std::string();
+}
+
 const Job* CourierExecutive::job(const std::string& id) const {
   const auto it = jobs_.find(id);
   return it == jobs_.end() ? nullptr : &it->second;
@@ -169,6 +174,8 @@ void CourierExecutive::on_goal(const std::string& robot, const std::string& goal
     case GoalOutcome::accepted:
     case GoalOutcome::active: return;
     case GoalOutcome::reached:
+      if (!r.goal_from.empty() && r.goal_place != kHomePlace && floor_.place(r.goal_place))
+        experience_.travel(r.goal_from, r.goal_place, now_s - r.goal_sent_s);
       r.blocked.erase(r.goal_place);
       r.refused.erase(r.goal_place);
       r.at_place = r.goal_place;
@@ -238,10 +245,17 @@ void CourierExecutive::on_handover(const std::string& request_id, HandoverOutcom
     if (!r.handover || r.handover->order.request_id != request_id) continue;
     const HandoverOrder order = r.handover->order;
     const auto jt = jobs_.find(order.job_id);
+    const std::string person = person_at(order.place);
     if (outcome == HandoverOutcome::accepted) {
       r.handover->accepted = true;
+      r.handover->accepted_at_s = now_s;
+      if (!person.empty()) experience_.presence(person, now_s, true, settings_.day);
       return;
     }
+    if (outcome == HandoverOutcome::completed && !person.empty() && r.handover->accepted)
+      experience_.handover(person, now_s - r.handover->accepted_at_s);
+    if (outcome == HandoverOutcome::rejected && reason == "nobody_present" && !person.empty())
+      experience_.presence(person, now_s, false, settings_.day);
     r.handover.reset();
     if (jt == jobs_.end()) return;
     Job& job = jt->second;
@@ -414,8 +428,10 @@ PlanRequest CourierExecutive::request_for(double now_s, const std::vector<std::s
   // A robot whose pose has not arrived yet cannot be planned for (it would seem to stand at 0, 0).
   for (const auto& [id, r] : robots_)
     if (r.pose_known) req.robots.push_back({id, r.x, r.y, r.capacity});
-  for (const auto& [id, door] : doors_.doors())
+  for (const auto& [id, door] : doors_.doors()) {
     if (!door.open) req.closed_doors.insert(id);
+    else if (now_s - door.seen_at_s <= 600.0) req.doors_seen_open.insert(id);
+  }
   for (const auto& [id, job] : jobs_) {
     const bool extra = std::find(extra_jobs.begin(), extra_jobs.end(), id) != extra_jobs.end();
     if (job.finished() || job.state == JobState::stranded || (job.state == JobState::opportunistic && !extra)) continue;
@@ -518,6 +534,7 @@ void CourierExecutive::send_goal(Robot& robot, const std::string& place, double 
   if (!p) return;
   robot.goal_id = robot.id + "/" + place + "/" + settings_.id_tag + "." + std::to_string(++robot.goal_seq);
   robot.goal_place = place;
+  robot.goal_from = robot.at_place;
   robot.goal_sent_s = now_s;
   robot.goal_answered = false;
   robot.at_place.clear();

@@ -21,6 +21,7 @@
 #include "services/courier/core/execution/floor.hpp"
 #include "services/courier/core/execution/job.hpp"
 #include "services/courier/core/execution/schedule_source.hpp"
+#include "services/courier/core/knowledge/experience.hpp"
 
 #include <map>
 #include <optional>
@@ -43,6 +44,9 @@ struct ExecutiveSettings {
   // Part of every goal and request id, so that ids never repeat across runs of the service (a
   // simulator answers a repeated request id with its old answer). The node uses the journal's run.
   std::string id_tag = "r1";
+  // The day of the once-per-day votes of what is learned (experience.hpp); the node uses the
+  // journal's run, so that each run of the service counts as a day.
+  std::int64_t day = 1;
 };
 
 // The goal place of a robot driving home (where it joined the fleet); no place of the floor.
@@ -161,6 +165,10 @@ class CourierExecutive {
   const std::map<std::string, Job>& jobs() const { return jobs_; }
   const Job* job(const std::string& id) const;
   const DoorBelief& doors() const { return doors_; }
+  // What experience taught so far (handover times, presence, doors by time of day, travel
+  // times): recorded from the events above; restored from the journal at start.
+  const Experience& experience() const { return experience_; }
+  Experience& experience() { return experience_; }
   std::vector<PlanStop> route(const std::string& robot) const;
 
  private:
@@ -168,6 +176,7 @@ class CourierExecutive {
     HandoverOrder order;
     double sent_at_s = 0.0;
     bool accepted = false;
+    double accepted_at_s = 0.0;
   };
   struct Robot {
     std::string id;
@@ -176,6 +185,7 @@ class CourierExecutive {
     double x = 0.0, y = 0.0;
     std::string goal_id;     // the navigation goal it pursues for us
     std::string goal_place;  // where that goal leads
+    std::string goal_from;   // the place it set out from ("" if none), for learned travel times
     double goal_sent_s = 0.0;
     bool goal_answered = false;  // the behavior said anything about goal_id
     std::string at_place;    // the place its last goal reached
@@ -220,6 +230,8 @@ class CourierExecutive {
   void finish(Job& job, JobState state, const std::string& reason, double now_s);
   void changed(const Job& job);
   void event(ExecutionEvent::Kind kind, std::string text);
+  // Who hands over at `place` ("" for stations), for what is learned about people.
+  std::string person_at(const std::string& place) const;
   // The door that a step at `place` needs open, when it is believed closed.
   std::optional<std::string> closed_door_for(const std::string& place) const;
   std::string closed_reason(const std::string& door) const;
@@ -230,6 +242,7 @@ class CourierExecutive {
   ScheduleSource& scheduler_;
   ExecutiveSettings settings_;
   DoorBelief doors_;
+  Experience experience_;
   std::map<std::string, Robot> robots_;
   // Robots that left: their request counters (ids never repeat) and unanswered handover, kept
   // for when they come back.

@@ -23,6 +23,7 @@ void CourierExecutive::on_door(const std::string& robot, const std::string& door
   if (!robots_.count(robot)) return;             // only our own robots' eyes
   if (!floor_.doors.count(door_id)) return;       // not a door of our floor
   const DoorChange change = doors_.observe(door_id, angle_rad, now_s, robot);
+  if (doors_.view(door_id)) experience_.door(door_id, now_s, doors_.believed_open(door_id), settings_.day);
   if (change == DoorChange::none) return;
   if (change == DoorChange::closed) {
     event(ExecutionEvent::Kind::door_closed, door_id + " seen closed by " + robot + " at " + clock_text(now_s));

@@ -14,6 +14,7 @@ struct FloorPlace {
   double y = 0.0;
   std::string room;     // "" for the hallway and places in no room
   double radius = 1.0;  // a robot within this distance is at the place
+  std::string person;   // who hands over here ("" for stations and places nobody works at)
 };
 
 struct Floor {

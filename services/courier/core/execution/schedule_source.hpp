@@ -32,6 +32,8 @@ struct PlanRequest {
   std::vector<PlanRobot> robots;
   std::vector<PlanJob> jobs;
   std::set<std::string> closed_doors;  // doors believed closed: obstacles for travel times
+  // Doors seen open in the last ten minutes: what they usually are at this hour does not matter.
+  std::set<std::string> doors_seen_open;
   // Jobs whose first open step must come first on their robot (the opportunity check).
   std::vector<std::string> first;
 };

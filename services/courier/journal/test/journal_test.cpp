@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <unistd.h>
@@ -99,6 +100,54 @@ TEST(Journal, AStrandedJobIsKeptWithItsReason) {
   EXPECT_FALSE(c.jobs[0].finished());  // a restarted courier waits for rhino2 with it
   EXPECT_EQ(c.jobs[0].object_carrier, "rhino2");
   EXPECT_NE(c.jobs[0].reason.find("last seen at (19.2, 3.1)"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace autonomy::courier
+
+namespace autonomy::courier {
+namespace {
+
+TEST(Journal, WhatWasLearnedSurvivesReopeningAndIsReadableWithoutCountingARun) {
+  const std::string path = fresh_path("learned");
+  {
+    Journal journal(path);
+    Experience e;
+    e.handover("Michael", 20);
+    e.handover("Michael", 40);
+    e.presence("Michael", 36000, false, 1);
+    e.door("A-120", 36000, false, 1);
+    e.door("A-120", 37800, true, 1);
+    e.travel("mailroom", "a120-desk", 55);
+    journal.save_experience(e);
+    e.door("A-120", 36000, false, 2);
+    journal.save_experience(e);  // replaces, does not add up
+  }
+  const Experience read = Journal::read_experience(path);
+  EXPECT_EQ(read.handovers().at("Michael").n, 2);
+  EXPECT_DOUBLE_EQ(read.handovers().at("Michael").mean, 30);
+  EXPECT_DOUBLE_EQ(read.handovers().at("Michael").stddev(), std::sqrt(200.0));
+  EXPECT_EQ(read.presence().at("Michael").no[HalfHourCounts::slot_of(36000)], 1);
+  EXPECT_EQ(read.doors().at("A-120").no[HalfHourCounts::slot_of(36000)], 2);
+  EXPECT_EQ(read.doors().at("A-120").yes[HalfHourCounts::slot_of(37800)], 1);
+  EXPECT_EQ(read.travel().at({"mailroom", "a120-desk"}).n, 1);
+  Journal again(path);
+  EXPECT_EQ(again.run(), 2);  // reading did not count a run
+  EXPECT_EQ(again.load_experience().doors().at("A-120").no[HalfHourCounts::slot_of(36000)], 2);
+  std::remove(path.c_str());
+}
+
+TEST(Journal, ReadingKnowledgeFromSomethingElseSaysWhy) {
+  EXPECT_THROW(
+      {
+        try {
+          Journal::read_experience("/nonexistent/courier.db");
+        } catch (const std::runtime_error& e) {
+          EXPECT_NE(std::string(e.what()).find("/nonexistent/courier.db"), std::string::npos);
+          throw;
+        }
+      },
+      std::runtime_error);
 }
 
 }  // namespace

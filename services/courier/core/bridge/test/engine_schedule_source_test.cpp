@@ -20,7 +20,8 @@ struct SmallOffice {
     map.height_m = 10;
     map.obstacles = {{0, 4.9, 4.4, 5.1}, {5.6, 4.9, 14.4, 5.1}, {15.6, 4.9, 20, 5.1}, {9.9, 0, 10.1, 4.9}};
     map.doors = {{"D1", geometry::Vec2(5.0, 5.0), 1.2, 0.0}, {"D2", geometry::Vec2(15.0, 5.0), 1.2, 0.0}};
-    floor.places = {{"r1-desk", {3, 2, "R1", 1.0}}, {"r2-desk", {17, 2, "R2", 1.0}}, {"hall", {10, 8, "", 1.0}}};
+    floor.places = {{"r1-desk", {3, 2, "R1", 1.0, "Ann"}}, {"r2-desk", {17, 2, "R2", 1.0, "Bob"}},
+                    {"hall", {10, 8, "", 1.0, ""}}};
     floor.door_of_room = {{"R1", "D1"}, {"R2", "D2"}};
     knowledge.places = {{"r1-desk", PlaceKind::desk, "R1", 3, 2, {}},
                         {"r2-desk", PlaceKind::desk, "R2", 17, 2, {}},
@@ -131,6 +132,59 @@ TEST(EngineScheduleSource, ExactOnlyWhileTheAssignmentsCanBeEnumerated) {
   EXPECT_EQ(source.engine_for(source.problem_for(request)), "large");
   request.robots.resize(1);  // one robot, 8 jobs: exact again (exact_max_jobs 8)
   EXPECT_EQ(source.engine_for(source.problem_for(request)), "exact");
+}
+
+}  // namespace
+}  // namespace autonomy::courier
+
+namespace autonomy::courier {
+namespace {
+
+// What experience taught changes the plan: Bob's door is usually closed 10:00-11:00 (three
+// days said so), so his delivery waits for 11:00; seen open a minute ago, it does not.
+TEST(EngineScheduleSource, LearnedDoorHabitsHandoverAndTravelTimesShapeThePlan) {
+  SmallOffice o;
+  EngineScheduleSource source(o.knowledge, o.floor, o.map, settings());
+  Experience learned;
+  for (std::int64_t day = 1; day <= 3; ++day) {
+    learned.door("D2", 36000 + 60, false, day);
+    learned.door("D2", 37800 + 60, false, day);
+  }
+  for (double s : {30.0, 40.0, 50.0}) learned.handover("Bob", s);
+  for (int i = 0; i < 3; ++i) learned.travel("r1-desk", "r2-desk", 100.0);
+  source.use_experience(&learned);
+
+  PlanRequest request;
+  request.now_s = 36000.0;
+  request.robots = {{"r", 3.0, 2.0, 1}};
+  request.jobs = {{"to-bob", "letter/red", "r1-desk", "r2-desk", std::nullopt, ""}};
+  const auto problem = source.problem_for(request);
+  ASSERT_EQ(problem.people.size(), 2u);
+  EXPECT_DOUBLE_EQ(problem.people[1].handover_s, 40.0);  // Bob: learned, not the nominal 20
+  ASSERT_EQ(problem.people[1].presence.size(), 1u);
+  EXPECT_DOUBLE_EQ(problem.people[1].presence[0].start_s, 39600.0);  // 11:00, not 10:00
+  EXPECT_DOUBLE_EQ(problem.people[1].presence[0].end_s, 43200.0);
+  EXPECT_EQ(problem.people[0].presence.size(), 1u);  // Ann's door taught nothing
+  EXPECT_DOUBLE_EQ(problem.people[0].presence[0].start_s, 0.0);
+
+  const Plan plan = source.plan(request);
+  ASSERT_EQ(plan.routes.at("r").size(), 2u);
+  EXPECT_GE(plan.routes.at("r").back().arrival_s, 36000.0 + 100.0 - 1e-6);  // the learned drive
+  EXPECT_GE(plan.completion_s.at("to-bob"), 39600.0 + 40.0 - 1e-6);
+
+  // Seen open lately: the habit does not apply, Bob gets it now.
+  request.doors_seen_open = {"D2"};
+  const Plan now = source.plan(request);
+  EXPECT_LT(now.completion_s.at("to-bob"), 39600.0);
+
+  // Closed all of Bob's hours: unschedulable, and the reason says what was learned.
+  for (double t = 39600; t < 43200; t += 1800)
+    for (std::int64_t day = 1; day <= 3; ++day) learned.door("D2", t + 60, false, day);
+  request.doors_seen_open.clear();
+  const Plan none = source.plan(request);
+  ASSERT_EQ(none.unschedulable.count("to-bob"), 1u);
+  EXPECT_NE(none.unschedulable.at("to-bob").find("learned: D2 usually closed 10:00-12:00"), std::string::npos)
+      << none.unschedulable.at("to-bob");
 }
 
 }  // namespace
