@@ -13,6 +13,7 @@ using namespace autonomy;
 int main(int argc, char** argv) {
   courier::CourierNodeOptions options;
   std::vector<std::string> robots;
+  std::string door_policy = "monitor";
   return service::run_service(
       argc, argv, "courier", "Courier scheduler: delivery jobs for the office's courier robots",
       service::InstanceFlag::Instance,
@@ -42,6 +43,12 @@ int main(int argc, char** argv) {
                        "Learn handover times, presence, door habits and travel times, keep them in the journal "
                        "and schedule with them (autonomy courier knowledge prints them)")
             ->capture_default_str();
+        app.add_option("--door-policy", door_policy,
+                       "monitor: doors seen closed make their jobs opportunistic and reschedule (the paper's "
+                       "controller); wait: doors are not watched, a robot blocked by one waits and tries again")
+            ->check(CLI::IsMember({"monitor", "wait"}))
+            ->capture_default_str()
+            ->each([&](const std::string& v) { options.monitor_doors = v == "monitor"; });
         app.add_option("--budget-ms", options.budget_ms, "Time budget of one schedule, ms")
             ->check(CLI::Range(1.0, 10000.0))
             ->capture_default_str();

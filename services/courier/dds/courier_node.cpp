@@ -106,6 +106,7 @@ CourierNode::CourierNode(service::Service& service, CourierNodeOptions options)
   ExecutiveSettings executive_settings;
   executive_settings.id_tag = "r" + std::to_string(journal_->run());
   executive_settings.day = journal_->run();  // each run of the service votes as one day
+  executive_settings.monitor_doors = options_.monitor_doors;
   executive_ = std::make_unique<CourierExecutive>(options_.office.floor, *scheduler_, executive_settings);
   if (options_.learning) {
     executive_->experience() = journal_->load_experience();

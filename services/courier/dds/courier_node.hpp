@@ -43,6 +43,9 @@ struct CourierNodeOptions {
   // Learn from experience (handover times, presence, door habits, travel times), keep it in the
   // journal across runs and schedule with it; false: the office file's nominal values only.
   bool learning = true;
+  // false: doors are not watched; a robot blocked by a closed door waits there and tries again
+  // (the paper's heuristic without its monitoring; what Open-RMF does).
+  bool monitor_doors = true;
 };
 
 class CourierNode {

@@ -193,6 +193,13 @@ void CourierExecutive::on_goal(const std::string& robot, const std::string& goal
       }
       r.goal_id.clear();
       r.goal_place.clear();
+      if (!settings_.monitor_doors) {
+        // Waiting at the door: the same goal again a moment later, whatever blocked it.
+        event(ExecutionEvent::Kind::goal_blocked, "goal to " + place + " blocked for " + robot + ": " + reason +
+                                                      "; waiting to try again");
+        r.hold_until_s = now_s + settings_.door_wait_retry_s;
+        return;
+      }
       event(ExecutionEvent::Kind::goal_blocked, "goal to " + place + " blocked for " + robot + ": " + reason);
       // The behavior names the doors it saw closed ("... door A-120 closed", "... doors A-111,
       // A-120 closed"): its robot's eyes.

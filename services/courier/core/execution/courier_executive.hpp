@@ -41,6 +41,11 @@ struct ExecutiveSettings {
   int max_attempts = 3;              // refused goals, failed or refused handovers of one step
   double goal_tolerance_m = 0.35;    // for navigation goals to places (within the place's radius)
   double home_retry_s = 30.0;        // an idle robot whose way home was blocked tries again after this
+  // false: no door monitoring (the paper's heuristic alone, and what Open-RMF does): sightings
+  // are not used, and a goal blocked by a closed door is sent again every door_wait_retry_s
+  // until the door opens, never given up and never turned into an opportunity.
+  bool monitor_doors = true;
+  double door_wait_retry_s = 10.0;
   // Part of every goal and request id, so that ids never repeat across runs of the service (a
   // simulator answers a repeated request id with its old answer). The node uses the journal's run.
   std::string id_tag = "r1";

@@ -21,6 +21,7 @@ std::string CourierExecutive::closed_reason(const std::string& door) const {
 void CourierExecutive::on_door(const std::string& robot, const std::string& door_id, double angle_rad,
                                double now_s) {
   if (!robots_.count(robot)) return;             // only our own robots' eyes
+  if (!settings_.monitor_doors) return;          // not watching doors: waits at them instead
   if (!floor_.doors.count(door_id)) return;       // not a door of our floor
   const DoorChange change = doors_.observe(door_id, angle_rad, now_s, robot);
   if (doors_.view(door_id)) experience_.door(door_id, now_s, doors_.believed_open(door_id), settings_.day);

@@ -298,6 +298,45 @@ TEST_F(ExecutiveTest, BlockedGoalNamingAClosedDoorIsTakenAsASighting) {
   EXPECT_EQ(goal_place(), "meeting-table");
 }
 
+// Without door monitoring (strategy (a) of the day-in-office experiment): a door seen closed
+// changes nothing, and a goal blocked by it is sent again after a wait, for as long as it takes.
+TEST(Executive, WithoutDoorMonitoringABlockedGoalWaitsAtTheDoorAndIsSentAgain) {
+  const Floor floor = paper_floor();
+  InOrderScheduler scheduler(floor);
+  ExecutiveSettings settings;
+  settings.monitor_doors = false;
+  CourierExecutive exec(floor, scheduler, settings);
+  exec.add_robot("rhino", 3);
+  exec.on_pose("rhino", 1.5, 8.0);
+  double now = 9 * 3600.0;
+  exec.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now);
+  NavGoalOrder goal = exec.step(now).goals.at(0);
+  exec.on_goal("rhino", goal.goal_id, GoalOutcome::reached, "", now += 30);
+  HandoverOrder load = exec.step(now).handovers.at(0);
+  exec.on_handover(load.request_id, HandoverOutcome::accepted, "", "", now += 5);
+  exec.on_handover(load.request_id, HandoverOutcome::completed, "", "", now += 5);
+  goal = exec.step(now).goals.at(0);
+  EXPECT_NE(goal.goal_id.find("michael-desk"), std::string::npos);
+  exec.on_door("rhino", "A-120", 0.0, now);
+  EXPECT_TRUE(exec.doors().believed_open("A-120"));  // not watched
+  for (int attempt = 0; attempt < 5; ++attempt) {
+    exec.on_goal("rhino", goal.goal_id, GoalOutcome::blocked, "no route to goal: door A-120 closed", now += 2);
+    EXPECT_TRUE(exec.step(now).goals.empty());  // waits
+    const Orders again = exec.step(now += 10);
+    ASSERT_EQ(again.goals.size(), 1u) << "attempt " << attempt;
+    goal = again.goals[0];
+    EXPECT_NE(goal.goal_id.find("michael-desk"), std::string::npos);
+    EXPECT_EQ(exec.job("j1")->state, JobState::underway);  // never opportunistic, never given up
+  }
+  exec.on_goal("rhino", goal.goal_id, GoalOutcome::reached, "", now += 20);
+  const HandoverOrder unload = exec.step(now).handovers.at(0);
+  EXPECT_FALSE(unload.load);
+  exec.on_handover(unload.request_id, HandoverOutcome::accepted, "", "", now += 5);
+  exec.on_handover(unload.request_id, HandoverOutcome::completed, "", "", now += 5);
+  exec.step(now);
+  EXPECT_EQ(exec.job("j1")->state, JobState::completed);
+}
+
 TEST(Executive, NothingIsPlannedBeforeARobotsPoseIsKnown) {
   const Floor floor = paper_floor();
   InOrderScheduler scheduler(floor);
