@@ -334,6 +334,7 @@ void CourierExecutive::on_handover(const std::string& request_id, HandoverOutcom
     }
     if (reason == "nobody_present" && back_at && *back_at > now_s) {
       r.hold_until_s = *back_at;
+      r.held_for = order.place;
       if (!job.finished()) job.reason = "waiting: " + detail;
       changed(job);
       return;
@@ -458,6 +459,10 @@ void CourierExecutive::adopt(const Plan& plan, double now_s) {
   for (auto& [id, r] : robots_) {
     const auto it = plan.routes.find(id);
     r.route = it == plan.routes.end() ? std::vector<PlanStop>{} : it->second;
+    if (!r.held_for.empty() && (r.route.empty() || r.route.front().place != r.held_for)) {
+      r.hold_until_s = 0.0;  // the person is still out, but there is other work first
+      r.held_for.clear();
+    }
     ScheduleNote note{id, r.route, {}, plan.engine, plan.proved_optimal, plan.late_jobs, plan.total_lateness_s};
     std::set<std::string> rooms;
     for (const PlanStop& s : r.route) {

@@ -197,6 +197,9 @@ class CourierExecutive {
     std::optional<PendingHandover> handover;
     std::vector<PlanStop> route;
     double hold_until_s = 0.0;  // after a refused handover or goal
+    // The place whose person is away until hold_until_s: a new schedule that sends the robot
+    // elsewhere first ends the wait (the robot works while the person is out).
+    std::string held_for;
     int goal_seq = 0;
     int request_seq = 0;
     std::map<std::string, int> blocked;  // place -> blocked goals without a door to blame

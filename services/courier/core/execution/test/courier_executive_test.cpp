@@ -24,6 +24,7 @@ class InOrderScheduler : public ScheduleSource {
     Plan plan;
     plan.engine = "in-order";
     std::vector<PlanJob> jobs = request.jobs;
+    if (newest_first) std::reverse(jobs.begin(), jobs.end());
     std::stable_sort(jobs.begin(), jobs.end(), [&](const PlanJob& a, const PlanJob& b) {
       const auto first = [&](const PlanJob& j) {
         return std::find(request.first.begin(), request.first.end(), j.id) != request.first.end();
@@ -52,6 +53,7 @@ class InOrderScheduler : public ScheduleSource {
     return plan;
   }
   int calls = 0;
+  bool newest_first = false;  // the jobs in the reverse order of the request
 
  private:
   const Floor& floor_;
@@ -564,6 +566,22 @@ TEST_F(ExecutiveTest, NobodyPresentWaitsUntilThePersonIsBack) {
   now_ = 10 * 3600.0 + 1;
   EXPECT_EQ(step().handovers.size(), 1u);
   EXPECT_FALSE(exec_.job("j1")->finished());
+}
+
+TEST_F(ExecutiveTest, WhileAPersonIsOutTheRobotDoesOtherWorkFirst) {
+  exec_.add_job(delivery("j1", "book-green", "green", "book", "librarian-desk", "a114-desk"), now_);
+  step();
+  arrive();
+  exec_.on_handover(last_handover_.request_id, HandoverOutcome::rejected, "nobody_present",
+                    "nobody at librarian-desk at 09:01 (somebody is back at 10:00)", now_);
+  step();
+  // A new job the schedule puts first: the robot goes for it instead of waiting for 10:00.
+  scheduler_.newest_first = true;
+  now_ += 60;
+  exec_.add_job(delivery("j2", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
+  step();
+  EXPECT_EQ(goal_place(), "meeting-table");
+  EXPECT_EQ(exec_.job("j2")->state, JobState::underway);
 }
 
 TEST_F(ExecutiveTest, AGoalTheBehaviorNeverAnswersIsSentAgainThenGivenUp) {
