@@ -26,7 +26,7 @@ struct DaySettings {
   double jobs_per_hour = 4.0;         // Poisson arrivals
   double last_command_before_end_s = 1800;
   double deadline_min_s = 20 * 60, deadline_max_s = 90 * 60;  // after the command
-  double step_s = 0.2;                // the simulation's step for the day
+  double step_s = 0.5;                // the simulation's step for the day
   int couriers = 1;                   // robots of kind courier (copies of the first one)
   std::vector<DoorHabit> habits;      // default_habits() for the shipped office
 };

@@ -46,7 +46,7 @@ void carry_knowledge(const fs::path& from, const fs::path& to) {
 
 int main(int argc, char** argv) {
   CLI::App app{"The day-in-office experiment: courier strategies a..e over seeded simulated working days"};
-  int days = 20, parallel = 2, domain_base = 120;
+  int days = 20, parallel = 5, domain_base = 120;
   std::uint64_t seed = 1;
   std::string strategy_list = "a,b,c,d,e";
   fs::path out = "runs/office-day";

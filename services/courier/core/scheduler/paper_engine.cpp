@@ -253,6 +253,13 @@ class PaperEngine final : public SchedulerEngine {
     const auto backup = placed;
     int& moves = deadline_moves[static_cast<std::size_t>(late)];
     const int d = index_of(placed, {late, StopKind::kDelivery});
+    const int pickup_at = index_of(placed, {late, StopKind::kPickup});
+    if (d < 0 || static_cast<std::size_t>(d) < fixed ||
+        (pickup_at >= 0 && static_cast<std::size_t>(pickup_at) < fixed)) {
+      // A stop of the forced prefix never moves (and the prefix would lose its length).
+      moves = 2;
+      return true;
+    }
     Placed delivery = placed[static_cast<std::size_t>(d)];
     placed.erase(placed.begin() + d);
     const int pk = index_of(placed, {late, StopKind::kPickup});

@@ -47,7 +47,7 @@ TEST(OfficeDay, ADayIsSeededAndTheSameForOneOrThreeCouriers) {
   EXPECT_EQ(one.scenario.robots_size(), 1);
   ASSERT_EQ(three.scenario.robots_size(), 3);
   EXPECT_EQ(three.scenario.robots(2).id(), "rhino3");
-  EXPECT_EQ(three.scenario.simulation().step_s(), 0.2);
+  EXPECT_EQ(three.scenario.simulation().step_s(), 0.5);
 }
 
 TEST(OfficeDay, EveryCommandHasItsObjectAtItsPickupAndADeadlineAfterIt) {

@@ -350,6 +350,27 @@ TEST(Engines, ForcedPrefixIsKeptByEveryEngine) {
   EXPECT_TRUE(s.proved_optimal);
 }
 
+// The opportunity check forces a job's first open step (its pickup alone) to the front; with its
+// deadline already missed, the paper's deadline repair used to move the forced pickup out of the
+// prefix and insert past the end of the route (a heap overrun the day-in-office experiment hit).
+TEST(Engines, AForcedPickupOfAJobAlreadyLateStaysFirst) {
+  for (int others = 0; others <= 1; ++others) {
+    SchedulingProblem p = small_office(/*capacity=*/2);
+    p.jobs.push_back(job("late", 0, 2, "red"));
+    p.jobs[0].deadline_s = p.now_s + 1.0;
+    if (others) p.jobs.push_back(job("other", 0, 1, "green"));
+    p.couriers[0].forced_prefix = {P(0)};
+    for (const auto& name : scheduler_engine_names()) {
+      const JobSchedule s = make_scheduler_engine(name)->solve(p, {});
+      ASSERT_TRUE(s.ok()) << name << ": " << s.reason;
+      const auto order = s.order()[0];
+      ASSERT_GE(order.size(), 2u) << name;
+      EXPECT_EQ(order[0], P(0)) << name;
+      EXPECT_EQ(s.objective.late_jobs, 1) << name;
+    }
+  }
+}
+
 TEST(Engines, UnreachableJobsAreReportedAndTheRestScheduled) {
   SchedulingProblem p = small_office(/*capacity=*/2);
   p.jobs.push_back(job("to A-120", 0, 2, "red"));
