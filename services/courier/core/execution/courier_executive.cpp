@@ -647,6 +647,13 @@ Orders CourierExecutive::step(double now_s) {
     return out;
   }
   settle(now_s);
+  for (const std::string& door : doors_.expire_closed(now_s - settings_.closed_door_stale_s)) {
+    event(ExecutionEvent::Kind::door_opened, door + " assumed open again: not seen for " +
+                                                 std::to_string(static_cast<int>(settings_.closed_door_stale_s)) +
+                                                 " s (" + clock_text(now_s) + ")");
+    opportunity_pending_ = true;
+    reschedule_needed_ = true;
+  }
   if (schedule_retry_at_ && now_s >= *schedule_retry_at_) reschedule_needed_ = true;
   if (opportunity_pending_) opportunity_check(now_s);
   if (reschedule_needed_) reschedule(now_s);

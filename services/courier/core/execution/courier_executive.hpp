@@ -46,6 +46,10 @@ struct ExecutiveSettings {
   // until the door opens, never given up and never turned into an opportunity.
   bool monitor_doors = true;
   double door_wait_retry_s = 10.0;
+  // A door seen closed and not seen since is assumed open again after this long: its
+  // opportunistic jobs are tried again (without it they waited for a robot to pass by, and in
+  // the day-in-office experiment one job in twelve was still waiting at the day's end).
+  double closed_door_stale_s = 300.0;
   // Part of every goal and request id, so that ids never repeat across runs of the service (a
   // simulator answers a repeated request id with its old answer). The node uses the journal's run.
   std::string id_tag = "r1";

@@ -26,6 +26,16 @@ DoorChange DoorBelief::observe(const std::string& door_id, double angle_rad, dou
   return v.open ? DoorChange::opened : DoorChange::closed;
 }
 
+std::vector<std::string> DoorBelief::expire_closed(double before_s) {
+  std::vector<std::string> expired;
+  for (auto& [id, v] : doors_)
+    if (!v.open && v.seen_at_s < before_s) {
+      v.open = true;
+      expired.push_back(id);
+    }
+  return expired;
+}
+
 bool DoorBelief::believed_open(const std::string& door_id) const {
   const auto it = doors_.find(door_id);
   return it == doors_.end() || it->second.open;

@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace autonomy::courier {
 
@@ -32,6 +33,9 @@ class DoorBelief {
   DoorChange observe(const std::string& door_id, double angle_rad, double now_s, const std::string& robot);
 
   bool believed_open(const std::string& door_id) const;
+  // A door believed closed and not seen since `before_s` is assumed open again (returned), as a
+  // door never seen is: a closed door says little about the same door minutes later.
+  std::vector<std::string> expire_closed(double before_s);
   std::optional<DoorView> view(const std::string& door_id) const;
   const std::map<std::string, DoorView>& doors() const { return doors_; }
 

@@ -584,6 +584,26 @@ TEST_F(ExecutiveTest, WhileAPersonIsOutTheRobotDoesOtherWorkFirst) {
   EXPECT_EQ(exec_.job("j2")->state, JobState::underway);
 }
 
+TEST_F(ExecutiveTest, ADoorSeenClosedLongAgoIsAssumedOpenAgainAndItsJobTried) {
+  // The pickup's room is seen closed on the way: the job waits for an opportunity.
+  exec_.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
+  step();
+  exec_.on_door("rhino", "A-111", 0.0, now_);
+  step();
+  ASSERT_EQ(exec_.job("j1")->state, JobState::opportunistic);
+  const double seen = now_;
+  now_ = seen + 299;
+  step();
+  EXPECT_FALSE(exec_.doors().believed_open("A-111"));
+  // Five minutes without seeing it: open, as a door never seen; the job is tried again.
+  now_ = seen + 301;
+  step();
+  EXPECT_TRUE(exec_.doors().believed_open("A-111"));
+  EXPECT_TRUE(happened("A-111 assumed open again: not seen for 300 s (09:05:01)")) << events_.back();
+  EXPECT_NE(exec_.job("j1")->state, JobState::opportunistic);
+  EXPECT_EQ(goal_place(), "meeting-table");
+}
+
 TEST_F(ExecutiveTest, AGoalTheBehaviorNeverAnswersIsSentAgainThenGivenUp) {
   exec_.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
   step();
