@@ -2,6 +2,7 @@
 // What every `autonomy` command shares: the context main hands it, the --domain option, exit
 // codes, Ctrl-C as a DDS guard condition, and QoS descriptions.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <functional>
 #include <string>
@@ -55,6 +56,27 @@ class Interrupt {
 bool sleep_for(const Interrupt& interrupt, const dds::Participant& participant, std::chrono::nanoseconds d);
 
 std::chrono::nanoseconds seconds(double s);
+
+// When a requester sends its request again. Matching is not symmetric: our reply reader can see
+// the service's reply writer before that writer has seen our reader, and a reply written in
+// between is lost (under load this happened to a planner rejection that came within
+// milliseconds). The planner and the courier answer a repeated request id with the same reply,
+// so a requester resends after 1, 2, 4, then every 8 s until its reply comes.
+class ResendSchedule {
+ public:
+  using Clock = std::chrono::steady_clock;
+  explicit ResendSchedule(Clock::time_point first_sent) : next_(first_sent + interval_) {}
+  bool due(Clock::time_point now) const { return now >= next_; }
+  void resent(Clock::time_point now) {
+    interval_ = std::min(interval_ * 2, std::chrono::nanoseconds(std::chrono::seconds(8)));
+    next_ = now + interval_;
+  }
+  Clock::time_point next() const { return next_; }
+
+ private:
+  std::chrono::nanoseconds interval_ = std::chrono::seconds(1);
+  Clock::time_point next_;
+};
 
 // The parts of an endpoint's QoS that decide matching and late-joiner delivery.
 struct EndpointQos {

@@ -61,6 +61,7 @@ int send_and_wait(const CommandOptions& o, msg::CourierCommand command, Context&
                                     : o.id;
   command.requester = "autonomy-cli";
   writer.write(command);
+  ResendSchedule resend(std::chrono::steady_clock::now());
   dds::WaitSet waitset(participant);
   waitset.attach(replies.data_condition(), 1);
   waitset.attach(interrupt.condition(), 2);
@@ -71,12 +72,17 @@ int send_and_wait(const CommandOptions& o, msg::CourierCommand command, Context&
       return s.value.accepted ? kExitOk : kExitFailed;
     }
     if (interrupt.requested()) return kExitInterrupted;
-    const auto left = deadline - std::chrono::steady_clock::now();
+    const auto now = std::chrono::steady_clock::now();
+    const auto left = deadline - now;
     if (left <= std::chrono::nanoseconds::zero()) {
       std::cerr << "autonomy courier: no reply to " << command.command_id << " within " << o.timeout_s << " s\n";
       return kExitFailed;
     }
-    waitset.wait(left);
+    if (resend.due(now)) {  // the courier journals every command id: a repeat gets the same reply
+      writer.write(command);
+      resend.resent(now);
+    }
+    waitset.wait(std::min(left, std::max(resend.next() - now, std::chrono::nanoseconds::zero())));
   }
 }
 

@@ -177,6 +177,7 @@ int plan(const PlanOptions& o, Context& ctx) {
     if (!sleep_for(interrupt, participant, std::chrono::milliseconds(10))) return kExitInterrupted;
   }
   writer.write(request);
+  ResendSchedule resend(std::chrono::steady_clock::now());
   // The search may use its whole budget; the timeout counts from its end.
   deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(o.budget_ms) +
              seconds(o.timeout_s);
@@ -217,12 +218,18 @@ int plan(const PlanOptions& o, Context& ctx) {
       std::cerr << "autonomy plan: cancelling " << request.request_id << "\n";
       deadline = std::chrono::steady_clock::now() + seconds(o.timeout_s);
     }
-    const auto left = (reply ? grace : deadline) - std::chrono::steady_clock::now();
+    const auto now = std::chrono::steady_clock::now();
+    const auto left = (reply ? grace : deadline) - now;
     if (!reply && left <= std::chrono::nanoseconds::zero()) {
       std::cerr << "autonomy plan: no reply to " << request.request_id << " in time\n";
       return kExitFailed;
     }
-    waitset.wait(std::max(left, std::chrono::nanoseconds::zero()));
+    if (!reply && resend.due(now)) {
+      writer.write(request);
+      resend.resent(now);
+    }
+    const auto until_resend = reply ? left : std::min(left, resend.next() - now);
+    waitset.wait(std::max(until_resend, std::chrono::nanoseconds::zero()));
   }
 }
 

@@ -105,7 +105,7 @@ CourierNode::CourierNode(service::Service& service, CourierNodeOptions options)
   journal_ = std::make_unique<Journal>(options_.journal_path);
   ExecutiveSettings executive_settings;
   executive_settings.id_tag = "r" + std::to_string(journal_->run());
-  executive_settings.day = journal_->run();  // each run of the service votes as one day
+  executive_settings.day = journal_->run() * 100000;  // vote_day() before the first tick
   executive_settings.monitor_doors = options_.monitor_doors;
   executive_ = std::make_unique<CourierExecutive>(options_.office.floor, *scheduler_, executive_settings);
   if (options_.learning) {
@@ -228,11 +228,18 @@ void CourierNode::apply(const std::vector<RosterChange>& changes) {
 }
 
 double CourierNode::now_sim_s() const { return lockstep_.clock().now_s(); }
+// Each run of the service is a new day of learning (the experiment runs a day per run), and so
+// is each midnight a long run passes.
+std::int64_t CourierNode::vote_day() const {
+  return journal_->run() * 100000 + options_.office.knowledge.clock.day_of(now_sim_s());
+}
+
 double CourierNode::now_day_s() const { return options_.office.knowledge.clock.time_of_day(now_sim_s()); }
 
 void CourierNode::on_tick(const msg::SimClock& clock) {
   tick_ = clock.tick;
   have_clock_ = true;
+  executive_->set_day(vote_day());
   carry_out(executive_->step(now_day_s()), clock.tick);
   lockstep_.acknowledge(clock.tick, 0);
 }

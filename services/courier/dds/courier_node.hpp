@@ -62,6 +62,7 @@ class CourierNode {
   msg::CourierJobStatus status_of(const Job& job, int64_t tick) const;
   double now_sim_s() const;
   double now_day_s() const;
+  std::int64_t vote_day() const;
   // Heartbeats of behavior processes: robots join and leave the executive's fleet.
   void on_heartbeats(std::vector<dds::Sample<msg::Heartbeat>> samples);
   void apply(const std::vector<RosterChange>& changes);

@@ -188,7 +188,7 @@ void CourierExecutive::on_goal(const std::string& robot, const std::string& goal
         // The way home is blocked (another robot in it): stay a while, then try again.
         r.goal_id.clear();
         r.goal_place.clear();
-        r.hold_until_s = now_s + settings_.home_retry_s;
+        r.hold(now_s + settings_.home_retry_s);
         return;
       }
       r.goal_id.clear();
@@ -197,7 +197,7 @@ void CourierExecutive::on_goal(const std::string& robot, const std::string& goal
         // Waiting at the door: the same goal again a moment later, whatever blocked it.
         event(ExecutionEvent::Kind::goal_blocked, "goal to " + place + " blocked for " + robot + ": " + reason +
                                                       "; waiting to try again");
-        r.hold_until_s = now_s + settings_.door_wait_retry_s;
+        r.hold(now_s + settings_.door_wait_retry_s);
         return;
       }
       event(ExecutionEvent::Kind::goal_blocked, "goal to " + place + " blocked for " + robot + ": " + reason);
@@ -234,7 +234,7 @@ void CourierExecutive::on_goal(const std::string& robot, const std::string& goal
             "goal " + goal_id + " " + (outcome == GoalOutcome::rejected ? "rejected" : "ended") + ": " + reason);
       r.goal_id.clear();
       r.goal_place.clear();
-      r.hold_until_s = now_s + settings_.goal_retry_s;
+      r.hold(now_s + settings_.goal_retry_s);
       if (exhausted(r.refused, place)) {
         r.refused.erase(place);
         give_up_on(place, "goal to " + place + " refused " + std::to_string(settings_.max_attempts) + " times: " + reason,
@@ -254,6 +254,8 @@ void CourierExecutive::on_handover(const std::string& request_id, HandoverOutcom
     const auto jt = jobs_.find(order.job_id);
     const std::string person = person_at(order.place);
     if (outcome == HandoverOutcome::accepted) {
+      // A request asked again is accepted again: the handover's time counts from the first.
+      if (r.handover->accepted) return;
       r.handover->accepted = true;
       r.handover->accepted_at_s = now_s;
       if (!person.empty()) experience_.presence(person, now_s, true, settings_.day);
@@ -333,14 +335,13 @@ void CourierExecutive::on_handover(const std::string& request_id, HandoverOutcom
         back_at = (hhmm[0] - '0') * 36000.0 + (hhmm[1] - '0') * 3600.0 + (hhmm[3] - '0') * 600.0 + (hhmm[4] - '0') * 60.0;
     }
     if (reason == "nobody_present" && back_at && *back_at > now_s) {
-      r.hold_until_s = *back_at;
-      r.held_for = order.place;
+      r.hold(*back_at, order.place);
       if (!job.finished()) job.reason = "waiting: " + detail;
       changed(job);
       return;
     }
     if (waits && !exhausted(handover_attempts_, step_key)) {
-      r.hold_until_s = now_s + settings_.retry_after_s;
+      r.hold(now_s + settings_.retry_after_s);
       if (!job.finished()) job.reason = "waiting: " + (detail.empty() ? reason : detail);
       changed(job);
       reschedule_needed_ = true;
@@ -438,7 +439,8 @@ PlanRequest CourierExecutive::request_for(double now_s, const std::vector<std::s
     if (r.pose_known) req.robots.push_back({id, r.x, r.y, r.capacity});
   for (const auto& [id, door] : doors_.doors()) {
     if (!door.open) req.closed_doors.insert(id);
-    else if (now_s - door.seen_at_s <= 600.0) req.doors_seen_open.insert(id);
+    // Only a sighting overrides the door's learned habit; an expired closed sighting does not.
+    else if (!door.open_assumed && now_s - door.seen_at_s <= 600.0) req.doors_seen_open.insert(id);
   }
   for (const auto& [id, job] : jobs_) {
     const bool extra = std::find(extra_jobs.begin(), extra_jobs.end(), id) != extra_jobs.end();
@@ -460,8 +462,7 @@ void CourierExecutive::adopt(const Plan& plan, double now_s) {
     const auto it = plan.routes.find(id);
     r.route = it == plan.routes.end() ? std::vector<PlanStop>{} : it->second;
     if (!r.held_for.empty() && (r.route.empty() || r.route.front().place != r.held_for)) {
-      r.hold_until_s = 0.0;  // the person is still out, but there is other work first
-      r.held_for.clear();
+      r.hold(0.0);  // the person is still out, but there is other work first
     }
     ScheduleNote note{id, r.route, {}, plan.engine, plan.proved_optimal, plan.late_jobs, plan.total_lateness_s};
     std::set<std::string> rooms;
@@ -587,6 +588,7 @@ void CourierExecutive::dispatch(Robot& robot, double now_s) {
             now_s);
   }
   if (now_s < robot.hold_until_s) return;
+  robot.held_for.clear();  // the wait is over
   const PlanStop* next = nullptr;
   for (const PlanStop& s : robot.route)
     if (still_needed(robot, s)) {

@@ -53,8 +53,8 @@ struct ExecutiveSettings {
   // Part of every goal and request id, so that ids never repeat across runs of the service (a
   // simulator answers a repeated request id with its old answer). The node uses the journal's run.
   std::string id_tag = "r1";
-  // The day of the once-per-day votes of what is learned (experience.hpp); the node uses the
-  // journal's run, so that each run of the service counts as a day.
+  // The day of the once-per-day votes of what is learned (experience.hpp); the node changes it
+  // with set_day() from the journal's run and the clock's midnights (a run is at least a day).
   std::int64_t day = 1;
 };
 
@@ -176,6 +176,8 @@ class CourierExecutive {
   const DoorBelief& doors() const { return doors_; }
   // What experience taught so far (handover times, presence, doors by time of day, travel
   // times): recorded from the events above; restored from the journal at start.
+  // Observations from now on vote as `day` (ExecutiveSettings::day).
+  void set_day(std::int64_t day) { settings_.day = day; }
   const Experience& experience() const { return experience_; }
   Experience& experience() { return experience_; }
   std::vector<PlanStop> route(const std::string& robot) const;
@@ -202,8 +204,13 @@ class CourierExecutive {
     std::vector<PlanStop> route;
     double hold_until_s = 0.0;  // after a refused handover or goal
     // The place whose person is away until hold_until_s: a new schedule that sends the robot
-    // elsewhere first ends the wait (the robot works while the person is out).
+    // elsewhere first ends the wait (the robot works while the person is out). Set with hold().
     std::string held_for;
+    // Waits until `until_s`; for the person at `place` when given.
+    void hold(double until_s, std::string place = {}) {
+      hold_until_s = until_s;
+      held_for = std::move(place);
+    }
     int goal_seq = 0;
     int request_seq = 0;
     std::map<std::string, int> blocked;  // place -> blocked goals without a door to blame

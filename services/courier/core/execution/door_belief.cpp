@@ -22,6 +22,7 @@ DoorChange DoorBelief::observe(const std::string& door_id, double angle_rad, dou
   v.angle_rad = angle_rad;
   v.seen_at_s = now_s;
   v.seen_by = robot;
+  v.open_assumed = false;
   if (was_open == v.open) return DoorChange::none;
   return v.open ? DoorChange::opened : DoorChange::closed;
 }
@@ -31,6 +32,7 @@ std::vector<std::string> DoorBelief::expire_closed(double before_s) {
   for (auto& [id, v] : doors_)
     if (!v.open && v.seen_at_s < before_s) {
       v.open = true;
+      v.open_assumed = true;
       expired.push_back(id);
     }
   return expired;

@@ -22,6 +22,7 @@ struct DoorView {
   bool open = true;
   double seen_at_s = 0.0;  // seconds of the day of the last sighting
   std::string seen_by;     // robot
+  bool open_assumed = false;  // open because a closed sighting expired, not because it was seen open
 };
 
 class DoorBelief {

@@ -10,6 +10,10 @@ double DayClock::time_of_day(double sim_s) const {
   return t < 0.0 ? t + kSecondsPerDay : t;
 }
 
+long DayClock::day_of(double sim_s) const {
+  return static_cast<long>(std::floor((day_start_s + sim_s) / kSecondsPerDay));
+}
+
 double DayClock::sim_time_of(double seconds_of_day, double now_sim_s) const {
   // The start of now's day in simulated time, then the offset into that day.
   const double midnight_sim = now_sim_s - time_of_day(now_sim_s);

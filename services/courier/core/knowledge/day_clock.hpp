@@ -16,6 +16,8 @@ struct DayClock {
 
   // Seconds since midnight at simulated time sim_s, in [0, 86400).
   double time_of_day(double sim_s) const;
+  // Midnights passed since simulated time 0 (0 on the first day).
+  long day_of(double sim_s) const;
   // The simulated time at which the clock shows seconds_of_day on the same day as now_sim_s
   // (possibly earlier than now_sim_s: callers compare).
   double sim_time_of(double seconds_of_day, double now_sim_s) const;

@@ -254,17 +254,23 @@ class PaperEngine final : public SchedulerEngine {
     int& moves = deadline_moves[static_cast<std::size_t>(late)];
     const int d = index_of(placed, {late, StopKind::kDelivery});
     const int pickup_at = index_of(placed, {late, StopKind::kPickup});
-    if (d < 0 || static_cast<std::size_t>(d) < fixed ||
-        (pickup_at >= 0 && static_cast<std::size_t>(pickup_at) < fixed)) {
+    if (d < 0 || static_cast<std::size_t>(d) < fixed) {
       // A stop of the forced prefix never moves (and the prefix would lose its length).
       moves = 2;
       return true;
     }
+    // A pickup in the prefix stays there: the delivery's only move is to just after the prefix.
+    const bool pickup_forced = pickup_at >= 0 && static_cast<std::size_t>(pickup_at) < fixed;
     Placed delivery = placed[static_cast<std::size_t>(d)];
     placed.erase(placed.begin() + d);
     const int pk = index_of(placed, {late, StopKind::kPickup});
     // Moved stops take keys that keep them where they are when the loop is sorted again.
-    if (moves == 0 && pk >= 0) {
+    if (pickup_forced) {
+      delivery.lap = -1;
+      delivery.rank = -1e9 + static_cast<double>(fixed_front_++);
+      placed.insert(placed.begin() + static_cast<std::ptrdiff_t>(fixed), delivery);
+      moves = 1;  // one move only (counted below)
+    } else if (moves == 0 && pk >= 0) {
       delivery.lap = placed[static_cast<std::size_t>(pk)].lap;
       delivery.rank = placed[static_cast<std::size_t>(pk)].rank + 0.25;
       placed.insert(placed.begin() + pk + 1, delivery);

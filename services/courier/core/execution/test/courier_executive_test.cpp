@@ -21,6 +21,7 @@ class InOrderScheduler : public ScheduleSource {
   explicit InOrderScheduler(const Floor& floor) : floor_(floor) {}
   Plan plan(const PlanRequest& request) override {
     ++calls;
+    last_request = request;
     Plan plan;
     plan.engine = "in-order";
     std::vector<PlanJob> jobs = request.jobs;
@@ -53,6 +54,7 @@ class InOrderScheduler : public ScheduleSource {
     return plan;
   }
   int calls = 0;
+  PlanRequest last_request;
   bool newest_first = false;  // the jobs in the reverse order of the request
 
  private:
@@ -539,6 +541,29 @@ TEST_F(ExecutiveTest, CancelDuringTheFinalUnloadIsRefused) {
             std::optional<std::string>("job j1 is being handed over at michael-desk now: too late to cancel"));
 }
 
+TEST(Executive, AHandoverAcceptedTwiceIsTimedFromTheFirstAcceptance) {
+  Floor floor = paper_floor();
+  floor.places["meeting-table"].person = "mary";
+  InOrderScheduler scheduler(floor);
+  CourierExecutive exec(floor, scheduler);
+  exec.add_robot("rhino", 3);
+  exec.on_pose("rhino", 1.5, 8.0);
+  double now = 9 * 3600.0;
+  exec.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now);
+  const Orders first = exec.step(now);
+  ASSERT_EQ(first.goals.size(), 1u);
+  exec.on_goal("rhino", first.goals[0].goal_id, GoalOutcome::reached, "", now += 30);
+  const Orders at_table = exec.step(now);
+  ASSERT_EQ(at_table.handovers.size(), 1u);
+  const std::string request = at_table.handovers[0].request_id;
+  exec.on_handover(request, HandoverOutcome::accepted, "", "", now += 5);
+  exec.on_handover(request, HandoverOutcome::accepted, "", "", now += 60);  // the request asked again
+  exec.on_handover(request, HandoverOutcome::completed, "", "", now += 15);
+  ASSERT_EQ(exec.experience().handovers().count("mary"), 1u);
+  EXPECT_DOUBLE_EQ(exec.experience().handovers().at("mary").mean, 75.0);
+  EXPECT_EQ(exec.experience().handovers().at("mary").n, 1);
+}
+
 TEST_F(ExecutiveTest, SightingsOfDoorsNotOnTheFloorAreIgnored) {
   exec_.on_door("rhino", "no-such-door", 0.0, now_);
   EXPECT_TRUE(exec_.doors().doors().empty());
@@ -602,6 +627,9 @@ TEST_F(ExecutiveTest, ADoorSeenClosedLongAgoIsAssumedOpenAgainAndItsJobTried) {
   EXPECT_TRUE(happened("A-111 assumed open again: not seen for 300 s (09:05:01)")) << events_.back();
   EXPECT_NE(exec_.job("j1")->state, JobState::opportunistic);
   EXPECT_EQ(goal_place(), "meeting-table");
+  // Assumed, not seen: the door's learned habit still counts.
+  EXPECT_EQ(scheduler_.last_request.doors_seen_open.count("A-111"), 0u);
+  EXPECT_EQ(scheduler_.last_request.closed_doors.count("A-111"), 0u);
 }
 
 TEST_F(ExecutiveTest, AGoalTheBehaviorNeverAnswersIsSentAgainThenGivenUp) {

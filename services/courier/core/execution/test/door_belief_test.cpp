@@ -27,5 +27,18 @@ TEST(DoorBelief, AFirstSightingClosedIsAChange) {
   EXPECT_THROW(DoorBelief(DoorBeliefSettings{0.6, 0.35}), std::invalid_argument);
 }
 
+TEST(DoorBelief, AnExpiredClosedSightingIsAssumedOpenUntilSeenAgain) {
+  DoorBelief doors;
+  doors.observe("A-116", 0.0, 100.0, "r");
+  doors.observe("A-120", 0.0, 350.0, "r");
+  EXPECT_EQ(doors.expire_closed(400.0 - 100.0 + 1.0), std::vector<std::string>{"A-116"});
+  EXPECT_TRUE(doors.believed_open("A-116"));
+  EXPECT_TRUE(doors.view("A-116")->open_assumed);
+  EXPECT_FALSE(doors.believed_open("A-120"));
+  EXPECT_TRUE(doors.expire_closed(301.0).empty());  // expired once, not again
+  doors.observe("A-116", 1.0, 500.0, "r");
+  EXPECT_FALSE(doors.view("A-116")->open_assumed);  // a sighting replaces the assumption
+}
+
 }  // namespace
 }  // namespace autonomy::courier

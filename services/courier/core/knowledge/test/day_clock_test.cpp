@@ -10,6 +10,10 @@ TEST(DayClock, SimulatedTimeZeroIsTheDayStartAndWrapsAtMidnight) {
   EXPECT_DOUBLE_EQ(clock.time_of_day(0.0), 30600.0);
   EXPECT_DOUBLE_EQ(clock.time_of_day(3600.0), 34200.0);
   EXPECT_DOUBLE_EQ(clock.time_of_day(15.5 * 3600.0 + 60.0), 60.0);  // 00:01 the next day
+  EXPECT_EQ(clock.day_of(0.0), 0);
+  EXPECT_EQ(clock.day_of(15.5 * 3600.0 - 1.0), 0);
+  EXPECT_EQ(clock.day_of(15.5 * 3600.0 + 60.0), 1);
+  EXPECT_EQ(clock.day_of(15.5 * 3600.0 + 86400.0), 2);
 }
 
 TEST(DayClock, SimTimeOfAClockTimeOnTheSameDay) {

@@ -367,6 +367,8 @@ TEST(Engines, AForcedPickupOfAJobAlreadyLateStaysFirst) {
       ASSERT_GE(order.size(), 2u) << name;
       EXPECT_EQ(order[0], P(0)) << name;
       EXPECT_EQ(s.objective.late_jobs, 1) << name;
+      // The late delivery goes right after its forced pickup (the least lateness left).
+      EXPECT_EQ(order[1], D(0)) << name;
     }
   }
 }
