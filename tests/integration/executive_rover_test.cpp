@@ -133,6 +133,7 @@ TEST_F(ExecutiveRoverTest, ReportsTheRadioDoesNotDeliverStopTheRadioAndTheSurvey
   EXPECT_NE(stopped[0].text.find("rover_radio"), std::string::npos);
   EXPECT_TRUE(events("aborted").empty()) << story();
   EXPECT_EQ(lost(), std::vector<std::string>{"r3"}) << story();
+  ASSERT_EQ(final_status().goals_lost.size(), 1u) << story();
   EXPECT_NE(final_status().goals_lost[0].find("rover_radio no longer commanded"), std::string::npos);
   EXPECT_EQ(achieved(), sorted({"s1", "s2", "s3", "r1", "r2", "home"})) << story();
   EXPECT_EQ(reports_delivered(), sorted({"sample rock1", "sample rock2"}));

@@ -32,6 +32,12 @@ std::optional<msg::PlannerTimelineValue> value_of(const planner::PlanToken& t) {
   return msg::PlannerTimelineValue{t.timeline(), t.predicate, t.parameters};
 }
 
+std::string value_text(const msg::PlannerTimelineValue& v) {
+  std::string text = v.predicate + "(";
+  for (std::size_t i = 0; i < v.parameters.size(); ++i) text += (i ? ", " : "") + v.parameters[i];
+  return text + ")";
+}
+
 bool usable(const msg::PlanningReply& r) {
   const bool status_has_plan = r.status == msg::PlanningStatus::Optimal ||
                                r.status == msg::PlanningStatus::PlanFound ||
@@ -271,14 +277,16 @@ bool ExecutiveNode::step_plan(const Observations& seen, std::vector<DeviceComman
       if (!after) continue;
       for (auto& v : settle_state_)
         if (v.timeline == line.name) v = *after;
-      settling_[rule->device] = rule->end_mode;
+      Settling& s = settling_[rule->device];
+      s = {rule->end_mode, line.name, std::nullopt};
+      if (k > 0) s.if_blocked = value_of(plan.tokens[line.tokens[k - 1]]);
     }
   settle_deadline_ = seen.time + kSettleLimit;
   if (settling_.empty()) {
     ask_for_plan(seen.time, horizon_end_for(seen.time), settle_state_, settle_purpose_);
   } else {
     std::string what;
-    for (const auto& [device, mode] : settling_) what += (what.empty() ? "" : ", ") + device + " " + mode;
+    for (const auto& [device, s] : settling_) what += (what.empty() ? "" : ", ") + device + " " + s.end_mode;
     event("settling", seen.time, "replanning once " + what + " (at most " + std::to_string(kSettleLimit) + " s)");
   }
   return false;
@@ -288,7 +296,18 @@ void ExecutiveNode::settle() {
   if (state_ != State::kSafeWaiting || settling_.empty()) return;
   for (const auto& [device, mode] : device_modes()) {
     auto it = settling_.find(device);
-    if (it != settling_.end() && it->second == mode) settling_.erase(it);
+    if (it == settling_.end()) continue;
+    if (it->second.end_mode == mode) {
+      settling_.erase(it);
+    } else if (mode == kBlockedMode) {
+      const Settling& s = it->second;
+      for (auto& v : settle_state_)
+        if (v.timeline == s.timeline && s.if_blocked) v = *s.if_blocked;
+      event("settling", now_,
+            device + " blocked before its token ended: replanning from " +
+                (s.if_blocked ? value_text(*s.if_blocked) : std::string("the state before it")));
+      settling_.erase(it);
+    }
   }
   if (!settling_.empty() && now_ < settle_deadline_) return;
   if (!settling_.empty()) event("settling", now_, "not settled in time: replanning anyway");

@@ -133,7 +133,16 @@ class ExecutiveNode {
   Time now_ = 0;
 
   static constexpr Time kSettleLimit = 900;      // s of simulated time
-  std::map<std::string, std::string> settling_;  // device -> the mode that ends its token
+  // A device whose token the abort left running (a drive): the replan waits for its end mode.
+  // A device that reports "blocked" instead (a robot's goal given up) has settled too, where
+  // it started: its timeline is asked for with the token's predecessor value.
+  struct Settling {
+    std::string end_mode;
+    std::string timeline;
+    std::optional<msg::PlannerTimelineValue> if_blocked;
+  };
+  static constexpr char kBlockedMode[] = "blocked";
+  std::map<std::string, Settling> settling_;  // by device
   std::vector<msg::PlannerTimelineValue> settle_state_;
   std::string settle_purpose_;
   Time settle_deadline_ = 0;

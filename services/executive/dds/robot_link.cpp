@@ -112,6 +112,11 @@ void RobotLink::report(const RobotSpec& robot, const DeviceCommand& c) {
   const std::string what = c.arguments.empty() ? "" : c.arguments[0];
   outbox_writer_.write(msg::TeamMessage{robot.robot_id, robot.base, id, "sample " + what});
   reports_[id] = {c, robot.base};
+  report_order_.push_back(id);
+  while (report_order_.size() > kMaxUnconfirmedReports) {
+    reports_.erase(report_order_.front());  // confirmed ones are gone from reports_ already
+    report_order_.pop_front();
+  }
 }
 
 }  // namespace autonomy::executive

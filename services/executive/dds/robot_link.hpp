@@ -4,6 +4,7 @@
 // becomes the robot device's mode; report(site) becomes a team message to the base through the
 // simulated radio, confirmed when the radio delivers it. Beside SpacecraftLink: the core sees
 // devices, modes and confirmations either way.
+#include <deque>
 #include <map>
 #include <string>
 #include <utility>
@@ -59,6 +60,10 @@ class RobotLink {
   std::map<std::string, Goal> goals_;                // by device
   std::map<std::string, std::string> modes_;         // by device
   std::map<std::string, Report> reports_;            // unconfirmed, by message id
+  std::deque<std::string> report_order_;             // their ids, oldest first
+  // Reports the radio lost are never confirmed; the oldest beyond this many are forgotten (the
+  // executive has long declared their commands unconfirmed).
+  static constexpr std::size_t kMaxUnconfirmedReports = 256;
   std::vector<std::pair<DeviceCommand, std::string>> rejections_;
 };
 

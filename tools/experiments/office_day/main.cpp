@@ -106,16 +106,19 @@ int main(int argc, char** argv) {
       const Strategy& s = *chosen[i];
       DaySettings settings = day;
       settings.couriers = s.couriers;
+      // The journal of the last day that ran to its end: a failed day does not end the learning.
+      fs::path knowledge_from;
       for (int k = 1; k <= days; ++k) {
         const std::uint64_t day_seed = seed * 1000 + static_cast<std::uint64_t>(k);
         try {
           const DayPlan plan = plan_day(base, settings, day_seed);
           const fs::path journal = day_file(setup, s.id, k, "db");
           for (const char* suffix : {"", "-wal", "-shm"}) fs::remove(journal.string() + suffix);
-          if (s.carries_knowledge && k > 1) carry_knowledge(day_file(setup, s.id, k - 1, "db"), journal);
+          if (s.carries_knowledge && !knowledge_from.empty()) carry_knowledge(knowledge_from, journal);
           RunSetup mine = setup;
           mine.trajectory = k == 1;
           const DayRecord r = run_day(mine, s, plan, k, day_seed, domain_base + worker, journal);
+          knowledge_from = journal;
           std::lock_guard<std::mutex> lock(mutex);
           records.push_back(r);
           std::printf("office_day: (%s) day %d/%d: %d jobs, %d on time (%.0f %%), mean lateness %.1f min, %.0f m, "

@@ -178,7 +178,8 @@ sched::SchedulingProblem EngineScheduleSource::problem_for(const PlanRequest& re
   }
 
   learned_notes_.clear();
-  if (experience_) learned_notes_ = apply_experience(*experience_, floor_, request.doors_seen_open, places, problem);
+  if (experience_) learned_notes_ = apply_experience(*experience_, floor_, request.doors_seen_open,
+                                                     !request.closed_doors.empty(), places, problem);
   return problem;
 }
 

@@ -23,7 +23,7 @@ std::string desk_of(const Floor& floor, const std::string& person) {
 }  // namespace
 
 std::map<std::string, std::string> apply_experience(const Experience& experience, const Floor& floor,
-                                                    const std::set<std::string>& doors_seen_open,
+                                                    const std::set<std::string>& doors_seen_open, bool detours,
                                                     std::size_t places, sched::SchedulingProblem& problem) {
   std::map<std::string, std::string> notes;
   for (sched::Person& person : problem.people) {
@@ -68,7 +68,7 @@ std::map<std::string, std::string> apply_experience(const Experience& experience
     for (std::size_t to = 0; to < places && to < problem.locations.size(); ++to) {
       if (from == to || !std::isfinite(problem.travel.at(from, to))) continue;  // no route: stays so
       if (const auto t = experience.travel_time(problem.locations[from].name, problem.locations[to].name))
-        problem.travel.set(from, to, *t);
+        if (!detours || *t > problem.travel.at(from, to)) problem.travel.set(from, to, *t);
     }
   return notes;
 }

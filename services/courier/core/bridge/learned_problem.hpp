@@ -17,9 +17,11 @@ namespace autonomy::courier {
 
 // Changes `problem` in place; its first `places` locations are the floor's places by name.
 // Returns, per person whose presence was cut, what was learned ("A-120 usually closed
-// 10:00-11:00"), for the reasons of jobs that became unschedulable.
+// 10:00-11:00"), for the reasons of jobs that became unschedulable. With doors believed closed
+// (`detours`) the problem's travel times go around them, longer than the drives learned through
+// them: a learned time then only lengthens an estimate, never shortens a detour.
 std::map<std::string, std::string> apply_experience(const Experience& experience, const Floor& floor,
-                                                    const std::set<std::string>& doors_seen_open,
+                                                    const std::set<std::string>& doors_seen_open, bool detours,
                                                     std::size_t places, scheduling::SchedulingProblem& problem);
 
 }  // namespace autonomy::courier

@@ -187,5 +187,32 @@ TEST(EngineScheduleSource, LearnedDoorHabitsHandoverAndTravelTimesShapeThePlan) 
       << none.unschedulable.at("to-bob");
 }
 
+// A door believed closed makes the map's times detours: a learned time, driven with the doors
+// open, may lengthen them but never shortens them.
+TEST(EngineScheduleSource, LearnedTravelNeverShortensADetourAroundAClosedDoor) {
+  SmallOffice o;
+  EngineScheduleSource source(o.knowledge, o.floor, o.map, settings());
+  Experience learned;
+  for (int i = 0; i < 3; ++i) learned.travel("r1-desk", "hall", 1.0);
+  source.use_experience(&learned);
+  PlanRequest request;
+  request.now_s = 36000.0;
+  request.robots = {{"r", 3.0, 2.0, 1}};
+  request.jobs = {{"to-hall", "letter/red", "r1-desk", "hall", std::nullopt, ""}};
+  const auto index = [](const scheduling::SchedulingProblem& p, const std::string& name) {
+    for (std::size_t i = 0; i < p.locations.size(); ++i)
+      if (p.locations[i].name == name) return i;
+    ADD_FAILURE() << "no location " << name;
+    return std::size_t{0};
+  };
+  const auto open = source.problem_for(request);
+  EXPECT_DOUBLE_EQ(open.travel.at(index(open, "r1-desk"), index(open, "hall")), 1.0);
+  request.closed_doors = {"D2"};
+  const auto closed = source.problem_for(request);
+  const double map_estimate = source.travel_s("r1-desk", "hall", {"D2"});
+  ASSERT_GT(map_estimate, 1.0);
+  EXPECT_DOUBLE_EQ(closed.travel.at(index(closed, "r1-desk"), index(closed, "hall")), map_estimate);
+}
+
 }  // namespace
 }  // namespace autonomy::courier
