@@ -118,6 +118,9 @@ DayPlan plan_day(const config::Scenario& office, const DaySettings& settings, st
   auto* sim = sc.mutable_simulation();
   sim->set_mode(config::LOCKSTEP);
   sim->set_step_s(settings.step_s);
+  // A velocity command lasts one step in lockstep: the world's timeout must not end it sooner.
+  if (!sim->has_command_timeout_s() || sim->command_timeout_s() < 1.5 * settings.step_s)
+    sim->set_command_timeout_s(1.5 * settings.step_s);
   sim->set_seed(seed);
   sc.set_name(office.name() + "-day");
   return day;
