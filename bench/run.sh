@@ -5,7 +5,7 @@
 # Environment: BUILD_DIR (default <repo>/build-bench), BENCH_DOMAIN (default 160; the lockstep
 # bench uses the next few ids too, up to 169; paced_sim_bench uses BENCH_DOMAIN + 10, i.e. 170;
 # experiment_bench.sh uses BENCH_DOMAIN + 20 to + 23, the runner's four jobs; executive_replan_bench
-# BENCH_DOMAIN + 24),
+# BENCH_DOMAIN + 24, office_day_bench.sh BENCH_DOMAIN + 25),
 # CYCLONEDDS_URI (default: the loopback profile),
 # LOCKSTEP_DDS_EXTRA (a Cyclone config snippet to compare against the default, optional).
 # The figures are noisy on a shared 2-core machine: read the ratios measured in the same run.
@@ -22,7 +22,7 @@ if [[ "${1:-}" == "--quick" ]]; then quick=(--quick); fi
 cmake -S "$repo" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 ninja -C "$build" dds_layer_bench lockstep_bench field_bench radio_bench world_bench paced_sim_bench simulator behavior experiment_runner \
   courier_bench courier_fleet_bench planner_bench path_bench executive_bench \
-  executive_replan_bench planner executive
+  executive_replan_bench planner executive office_day_experiment courier courier_plot
 
 echo "load average: $(cut -d' ' -f1-3 /proc/loadavg), $(nproc) cores, CYCLONEDDS_URI=$CYCLONEDDS_URI"
 "$build/bin/dds_layer_bench" --domain "$domain" "${quick[@]}"
@@ -34,6 +34,7 @@ if [[ -n "${LOCKSTEP_DDS_EXTRA:-}" ]]; then extra=(--dds-extra "$LOCKSTEP_DDS_EX
 if [[ ${#quick[@]} -gt 0 ]]; then "$build/bin/world_bench" --ticks 30; else "$build/bin/world_bench"; fi
 "$build/bin/paced_sim_bench" --domain "$((domain + 10))" "${quick[@]}"
 "$repo/bench/experiment_bench.sh" "$build/bin" "$((domain + 20))" "${quick[@]}"
+"$repo/bench/office_day_bench.sh" "$build/bin" "$((domain + 25))" "${quick[@]}"
 "$build/bin/courier_bench" "${quick[@]}"
 if [[ ${#quick[@]} -gt 0 ]]; then "$build/bin/courier_fleet_bench" --instances 2 --budget-ms 500; else "$build/bin/courier_fleet_bench"; fi
 # planner_bench times MiniZinc + Gecode beside the planner when bench/install-minizinc.sh ran.

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   int radio_period = 1;
   bool stop_when_finished = false;
   bool without_robots = false;
+  bool every_tick = false;
   return service::run_service(
       argc, argv, "simulator", "World and clock simulator: robots, obstacles, lockstep or paced time",
       service::InstanceFlag::Instance,
@@ -39,6 +40,8 @@ int main(int argc, char** argv) {
                      "Spawn none of the scenario's robots at the start: controllers attach their own");
         app.add_flag("--stop-when-finished", stop_when_finished,
                      "Stop once every robot reports its mission finished (or its goal reached)");
+        app.add_flag("--every-tick", every_tick,
+                     "Lockstep: publish every tick, also those all participants declared quiet");
         app.add_option("--mode", mode_override, "Override the scenario's clock mode")
             ->check(CLI::IsMember({"lockstep", "paced"}));
         app.footer("Without --config the built-in demo scenario (deploy/scenarios/demo.pbtxt) runs.");
@@ -65,6 +68,7 @@ int main(int argc, char** argv) {
         run.metrics_prefix = metrics;
         run.radio_period_ticks = radio_period;
         run.stop_when_finished = stop_when_finished;
+        run.quiet_ticks = !every_tick;
         return std::make_unique<sim::SimulatorNode>(service, std::move(*loaded.scenario), run);
       });
 }

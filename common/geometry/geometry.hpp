@@ -1,14 +1,12 @@
 #pragma once
 // Plane geometry shared by the simulator and the robot controllers: poses, axis-aligned
 // rectangles (the first simulator's obstacles) and the circle tests robots need.
-#include <Eigen/Core>
+#include "common/geometry/vec2.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 namespace autonomy::geometry {
-
-using Vec2 = Eigen::Vector2d;
 
 struct Pose2 {
   double x = 0.0;

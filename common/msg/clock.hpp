@@ -24,6 +24,7 @@ struct TickAck {
   std::string participant;
   int64_t tick = 0;
   uint32_t commands_sent = 0;
+  int64_t quiet_until_tick = 0;  // 0: not quiet (idl/clock.idl)
 };
 
 const char* to_string(ClockMode m);

@@ -35,8 +35,15 @@ LockstepClient::~LockstepClient() {
 
 void LockstepClient::register_participant() { registration_writer_.write({name_, true}); }
 
-void LockstepClient::acknowledge(int64_t tick, uint32_t commands_sent) {
-  ack_writer_.write({name_, tick, commands_sent});
+void LockstepClient::acknowledge(int64_t tick, uint32_t commands_sent, int64_t quiet_until_tick) {
+  last_ack_ = {name_, tick, commands_sent, quiet_until_tick};
+  ack_writer_.write(last_ack_);
+}
+
+void LockstepClient::wake() {
+  if (!quiet()) return;
+  last_ack_.quiet_until_tick = 0;
+  ack_writer_.write(last_ack_);
 }
 
 }  // namespace autonomy::service

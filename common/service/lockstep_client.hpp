@@ -29,7 +29,14 @@ class LockstepClient {
 
   // Joins the set of participants the simulator waits for.
   void register_participant();
-  void acknowledge(int64_t tick, uint32_t commands_sent);
+  // quiet_until_tick > tick + 1: nothing to do before that tick unless the world changes or
+  // this process is sent something (idl/clock.idl); 0: not quiet.
+  void acknowledge(int64_t tick, uint32_t commands_sent, int64_t quiet_until_tick = 0);
+  // This process was sent something while it was quiet: the world must not skip the next tick.
+  // Acks the last tick again without a quiet tick; does nothing when not quiet.
+  void wake();
+  bool quiet() const { return last_ack_.quiet_until_tick > last_ack_.tick + 1; }
+  int64_t quiet_until_tick() const { return last_ack_.quiet_until_tick; }
 
   const clock::SimulatedClock& clock() const { return clock_; }
   const std::string& name() const { return name_; }
@@ -44,6 +51,7 @@ class LockstepClient {
   dds::Reader<msg::SimClock> clock_reader_;
   dds::Writer<msg::LockstepRegistration> registration_writer_;
   dds::Writer<msg::TickAck> ack_writer_;
+  msg::TickAck last_ack_;
 };
 
 }  // namespace autonomy::service

@@ -69,6 +69,7 @@ inline msg::TickAck make_tick_ack(Variant v) {
   m.participant = s(v, kUtf8B);
   m.tick = -5'000'000'003;
   m.commands_sent = 4'000'000'000u;
+  m.quiet_until_tick = 7'000'000'001;
   return m;
 }
 
@@ -427,7 +428,7 @@ inline auto fields(const msg::SimClock& m) {
   return std::make_tuple(m.tick, m.sim_time_ns, m.step_ns, static_cast<int>(m.mode), m.warp);
 }
 inline auto fields(const msg::LockstepRegistration& m) { return std::make_tuple(m.participant, m.active); }
-inline auto fields(const msg::TickAck& m) { return std::make_tuple(m.participant, m.tick, m.commands_sent); }
+inline auto fields(const msg::TickAck& m) { return std::make_tuple(m.participant, m.tick, m.commands_sent, m.quiet_until_tick); }
 inline auto fields(const msg::RobotState& m) {
   return std::make_tuple(m.robot_id, m.tick, m.sim_time_ns, m.x, m.y, m.theta, m.vx, m.vy, m.omega,
                          static_cast<int>(m.kinematics), m.radius, m.max_speed, m.max_omega, m.in_collision);

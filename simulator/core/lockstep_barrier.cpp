@@ -1,5 +1,7 @@
 #include "simulator/core/lockstep_barrier.hpp"
 
+#include <algorithm>
+
 namespace autonomy::sim {
 
 bool LockstepBarrier::add(const std::string& participant, bool from_current) {
@@ -12,6 +14,7 @@ bool LockstepBarrier::add(const std::string& participant, bool from_current) {
 void LockstepBarrier::remove(const std::string& participant) {
   members_.erase(participant);
   dropped_.erase(participant);
+  quiet_until_.erase(participant);
 }
 
 void LockstepBarrier::begin_tick(Tick tick, double now_s) {
@@ -21,7 +24,8 @@ void LockstepBarrier::begin_tick(Tick tick, double now_s) {
 }
 
 LockstepBarrier::AckOutcome LockstepBarrier::on_ack(const std::string& participant, Tick tick,
-                                                    std::uint32_t commands_sent) {
+                                                    std::uint32_t commands_sent, Tick quiet_until) {
+  if (members_.count(participant) || dropped_.count(participant)) quiet_until_[participant] = quiet_until;
   if (stale(tick)) return AckOutcome::IgnoredStale;
   AckOutcome outcome = AckOutcome::Counted;
   auto member = members_.find(participant);
@@ -73,12 +77,21 @@ bool LockstepBarrier::complete(Tick tick) const {
   return true;
 }
 
+bool LockstepBarrier::quiet(Tick tick) const {
+  const std::vector<std::string> waited = waited_for(tick);
+  return !waited.empty() && std::all_of(waited.begin(), waited.end(), [&](const std::string& p) {
+    const auto q = quiet_until_.find(p);
+    return q != quiet_until_.end() && q->second > tick;
+  });
+}
+
 std::vector<std::string> LockstepBarrier::expire(Tick tick, double now_s, double timeout_s) {
   std::vector<std::string> expired;
   if (current_ != tick || now_s - tick_started_s_ < timeout_s) return expired;
   for (const std::string& p : waited_for(tick)) {
     if (done(p, tick)) continue;
     members_.erase(p);
+    quiet_until_.erase(p);
     dropped_.insert(p);
     expired.push_back(p);
   }

@@ -18,6 +18,12 @@
 //  seen tick k), unless it acks k anyway or is added `from_current` (registered while the
 //  start was held: the world has not begun, so it takes part from tick 0). Acks and commands for ticks before the current one
 //  are stale and ignored.
+//
+// Quiet ticks: an ack may declare its participant quiet until a later tick (it has nothing to do
+// before then unless the world changes or it is sent something). quiet(k) holds when everybody
+// waited for at k is quiet beyond k: the simulator may then step k without publishing it. Every
+// ack replaces its participant's declaration, a stale one too: a quiet participant that is sent
+// something acks its last tick again with no quiet tick to wake the world.
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -46,7 +52,7 @@ class LockstepBarrier {
   void remove(const std::string& participant);
 
   void begin_tick(Tick tick, double now_s);
-  AckOutcome on_ack(const std::string& participant, Tick tick, std::uint32_t commands_sent);
+  AckOutcome on_ack(const std::string& participant, Tick tick, std::uint32_t commands_sent, Tick quiet_until = 0);
   // Counts one command from `source` for `tick`. False when the tick has already ended or
   // `source` is neither registered nor dropped (a dropped participant's command counts: its ack
   // for the same tick may be the one that rejoins it, and announces it). An unknown source's
@@ -57,6 +63,9 @@ class LockstepBarrier {
   // Every participant waited for at `tick` (the current tick) has acked it and all its announced
   // commands have arrived. False for any tick other than the current one.
   bool complete(Tick tick) const;
+  // Everybody waited for at `tick` declared, by their last ack, that they need no tick before a
+  // later one. False when nobody is waited for.
+  bool quiet(Tick tick) const;
   // Drops and returns (sorted) the participants that have not completed the current tick
   // `tick` when `timeout_s` has passed since begin_tick.
   std::vector<std::string> expire(Tick tick, double now_s, double timeout_s);
@@ -79,6 +88,7 @@ class LockstepBarrier {
 
   std::map<std::string, Tick> members_;  // participant -> first tick it is waited for
   std::set<std::string> dropped_;        // expired, may rejoin by acking
+  std::map<std::string, Tick> quiet_until_;  // participant -> the first tick it needs again
   std::map<Tick, TickCounters> ticks_;   // current tick and any early samples for later ones
   std::optional<Tick> current_;
   double tick_started_s_ = 0.0;

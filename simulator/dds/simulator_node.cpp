@@ -109,6 +109,7 @@ SimulatorNode::SimulatorNode(service::Service& service, Scenario scenario, Simul
       world_(scenario_.world),
       options_(std::move(options)),
       last_advance_(std::chrono::steady_clock::now()),
+      quiet_continue_(service.participant()),
       radio_(make_radio_model(scenario_)),
       clock_topic_(service.participant(), dds::topics::clock),
       state_topic_(service.participant(), dds::topics::robot_state),
@@ -192,6 +193,7 @@ SimulatorNode::SimulatorNode(service::Service& service, Scenario scenario, Simul
   loop.on_samples<msg::MissionStatus>(mission_status_reader_, [this](auto s) { on_mission_status(std::move(s)); });
   loop.on_samples<msg::HandoverRequest>(handover_request_reader_,
                                         [this](auto s) { on_handover_requests(std::move(s)); });
+  loop.on_condition(quiet_continue_.handle(), [this] { continue_quietly(); });
   loop.every(kHousekeepingPeriod, [this] { on_timer(); });
   loop.every(kStatusPeriod, [this] { publish_status(); });
   if (scenario_.spacecraft)
@@ -214,8 +216,8 @@ SimulatorNode::~SimulatorNode() {
     publish_status();
     write_picture();
     write_metrics();
-    spdlog::info("stopped at tick {}: {} commands applied, {} rejected, {} participants dropped", tick_,
-                 commands_applied_, commands_rejected_, participants_dropped_);
+    spdlog::info("stopped at tick {}: {} commands applied, {} rejected, {} participants dropped, {} ticks quiet",
+                 tick_, commands_applied_, commands_rejected_, participants_dropped_, quiet_ticks_);
     if (spacecraft_)
       spdlog::info("spacecraft commands: {} accepted, {} rejected", spacecraft_->commands_accepted(),
                    spacecraft_->commands_rejected());
@@ -242,6 +244,7 @@ void SimulatorNode::on_commands(std::vector<dds::Sample<msg::VelocityCommand>> s
       commands_by_tick_[c.tick].push_back(std::move(c));
     } else {
       unsynchronised_commands_.push_back(std::move(c));
+      wake_ = true;
     }
   }
   advance_while_complete();
@@ -251,7 +254,7 @@ void SimulatorNode::on_acks(std::vector<dds::Sample<msg::TickAck>> samples) {
   if (!lockstep()) return;
   for (const auto& s : samples) {
     if (!s.valid) continue;
-    if (barrier_.on_ack(s.value.participant, s.value.tick, s.value.commands_sent) ==
+    if (barrier_.on_ack(s.value.participant, s.value.tick, s.value.commands_sent, s.value.quiet_until_tick) ==
         LockstepBarrier::AckOutcome::Rejoined)
       spdlog::info("participant {} answered again at tick {} and rejoined lockstep", s.value.participant, s.value.tick);
   }
@@ -293,6 +296,7 @@ void SimulatorNode::on_spawn_requests(std::vector<dds::Sample<msg::SpawnRequest>
       continue;
     }
     spawn_requests_.push_back(std::move(s.value));
+    wake_ = true;
   }
   handle_spawns();
 }
@@ -315,6 +319,7 @@ void SimulatorNode::on_timer() {
       spdlog::warn("participant {} did not acknowledge tick {} within {} s: dropped from lockstep", p, tick_,
                    options_.settings.ack_timeout_s);
     }
+    if (quiet_) return;  // the quiet span goes on from continue_quietly()
     // Nobody to wait for: the world idles forward in real time instead of spinning.
     if (barrier_.participants().empty() && !holding_start() && now - last_advance_ >= period) advance();
     advance_while_complete();
@@ -332,7 +337,16 @@ void SimulatorNode::on_timer() {
 
 void SimulatorNode::advance_while_complete() {
   if (!lockstep()) return;
-  while (!finished_ && !barrier_.participants().empty() && !holding_start() && barrier_.complete(tick_)) advance();
+  // Quiet ticks are stepped in batches: between two, the loop reads what arrived (a wake-up).
+  constexpr int kQuietBatch = 200;
+  int quiet_in_a_row = 0;
+  while (!finished_ && !barrier_.participants().empty() && !holding_start() && (quiet_ || barrier_.complete(tick_))) {
+    if (quiet_ && ++quiet_in_a_row > kQuietBatch) {
+      quiet_continue_.trigger();
+      return;
+    }
+    advance();
+  }
 }
 
 void SimulatorNode::advance() {
@@ -357,7 +371,10 @@ void SimulatorNode::advance() {
   step_compute_us_total_ += std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - started).count();
   last_advance_ = started;
 
-  open_tick();
+  if (may_stay_quiet())
+    keep_quiet();
+  else
+    open_tick();
   if (options_.max_ticks && tick_ >= *options_.max_ticks) {
     finished_ = true;
     spdlog::info("reached tick {}, the configured end of the run", tick_);
@@ -425,6 +442,9 @@ void SimulatorNode::handle_spawns() {
 }
 
 void SimulatorNode::open_tick() {
+  if (quiet_) radio_dirty_ = true;  // the link table was not kept up while quiet
+  quiet_ = false;
+  wake_ = false;
   const int64_t now_ns = to_ns(static_cast<double>(tick_) * options_.settings.step_s);
   const std::vector<RobotStatus> robots = world_.robots();
   if (radio_dirty_ || tick_ % options_.radio_period_ticks == 0) update_radio();
@@ -444,6 +464,12 @@ void SimulatorNode::open_tick() {
 void SimulatorNode::publish_robot_state(const RobotStatus& r) {
   const int64_t now_ns = to_ns(static_cast<double>(tick_) * options_.settings.step_s);
   state_writer_.write(to_msg(r, tick_, now_ns));
+  published_poses_[r.id] = r.pose;
+  record_robot(r);
+}
+
+void SimulatorNode::record_robot(const RobotStatus& r) {
+  const int64_t now_ns = to_ns(static_cast<double>(tick_) * options_.settings.step_s);
   if (!options_.picture_svg.empty()) paths_.record(r.id, r.pose.position(), connected_to_teammate(r.id));
   if (trajectory_.is_open())
     trajectory_ << tick_ << ',' << static_cast<double>(now_ns) * 1e-9 << ',' << r.id << ',' << r.pose.x << ','
@@ -501,6 +527,7 @@ void SimulatorNode::on_door_commands(std::vector<dds::Sample<msg::DoorCommand>> 
       continue;
     }
     const CommandResult result = world_.set_door(c.door_id, c.angle);
+    wake_ = true;
     if (result.accepted) {
       spdlog::info("door '{}' told to take angle {} by '{}' at tick {}", c.door_id, c.angle, c.source, tick_);
       continue;
@@ -580,6 +607,7 @@ bool SimulatorNode::connected_to_teammate(const std::string& robot) const {
 }
 
 void SimulatorNode::on_outbox(std::vector<dds::Sample<msg::TeamMessage>> samples) {
+  if (!samples.empty()) wake_ = true;  // a quiet span ends: somebody is at work
   if (radio_dirty_) update_radio();
   const double now_s = static_cast<double>(tick_) * options_.settings.step_s;
   const auto index_of = [this](const std::string& id) -> std::optional<size_t> {
@@ -677,6 +705,14 @@ void SimulatorNode::publish_perception(const std::vector<RobotStatus>& robots) {
   }
 }
 
+bool SimulatorNode::doors_as_published() const {
+  const std::vector<DoorStatus> doors = world_.doors();
+  if (doors.size() != published_doors_.size()) return false;
+  for (size_t i = 0; i < doors.size(); ++i)
+    if (!published_doors_[i] || !same_door_state(*published_doors_[i], to_msg(doors[i], tick_))) return false;
+  return true;
+}
+
 void SimulatorNode::publish_door_changes() {
   const std::vector<DoorStatus> doors = world_.doors();
   published_doors_.resize(doors.size());
@@ -693,6 +729,7 @@ void SimulatorNode::publish_door_changes() {
 // --- Office: load and unload ------------------------------------------------------------------
 
 void SimulatorNode::on_handover_requests(std::vector<dds::Sample<msg::HandoverRequest>> samples) {
+  if (!samples.empty()) wake_ = true;  // a quiet span ends: somebody is at work
   std::vector<msg::HandoverRequest> requests;
   for (auto& s : samples)
     if (s.valid) requests.push_back(std::move(s.value));
@@ -725,16 +762,22 @@ void SimulatorNode::on_handover_requests(std::vector<dds::Sample<msg::HandoverRe
   }
 }
 
-void SimulatorNode::update_office(const std::vector<RobotStatus>& robots) {
-  if (!office_) return;
+bool SimulatorNode::update_office(const std::vector<RobotStatus>& robots) {
+  if (!office_) return false;
+  bool published = false;
   std::map<std::string, geometry::Vec2> positions;
   for (const auto& r : robots) positions.emplace(r.id, r.pose.position());
   for (const office::DeskAnswer& a : office_->advance(static_cast<double>(tick_) * options_.settings.step_s, positions)) {
     spdlog::info("handover '{}' of robot '{}' {} at tick {}: {}", a.request_id, a.robot_id, office::to_string(a.state),
                  tick_, a.detail);
     publish_handover(a);
+    published = true;
   }
-  for (const office::ObjectItem& o : office_->changed_objects()) object_truth_writer_.write(to_msg(o, tick_));
+  for (const office::ObjectItem& o : office_->changed_objects()) {
+    object_truth_writer_.write(to_msg(o, tick_));
+    published = true;
+  }
+  return published;
 }
 
 void SimulatorNode::publish_handover(const office::DeskAnswer& answer) {

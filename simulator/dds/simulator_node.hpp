@@ -17,6 +17,7 @@
 // against the robots' true positions and the simulated time of the current tick.
 #include "common/dds/reader.hpp"
 #include "common/dds/topics.hpp"
+#include "common/dds/waitset.hpp"
 #include "common/dds/writer.hpp"
 #include "common/service/service.hpp"
 #include "simulator/core/lockstep_barrier.hpp"
@@ -61,6 +62,9 @@ struct SimulatorRunOptions {
   std::string metrics_prefix;
   // The radio link table is recomputed every this many ticks (and when robots join).
   int radio_period_ticks = 1;
+  // Lockstep: ticks every participant declared it does not need, while nothing in the world
+  // changes, are stepped without being published (idl/clock.idl, quiet_until_tick).
+  bool quiet_ticks = true;
 };
 
 class SimulatorNode {
@@ -90,13 +94,20 @@ class SimulatorNode {
   void handle_spawns();
   void open_tick();  // publishes state and clock of tick_, starts the barrier's tick
   void publish_robot_state(const RobotStatus& robot);
+  void record_robot(const RobotStatus& robot);  // the trajectory file and picture, no DDS
+  // Quiet ticks (simulator/dds/quiet_ticks.cpp).
+  bool may_stay_quiet();   // the tick just stepped need not be published
+  void keep_quiet();       // records it as a published tick would be, publishes nothing
+  void continue_quietly();  // the next batch of quiet ticks, after the loop looked at its readers
+  bool doors_as_published() const;
   // The radio of the current positions: link table, connectivity; publishes what changed.
   void update_radio();
   void deliver_due_messages();
   void publish_perception(const std::vector<RobotStatus>& robots);
   void publish_door_changes();
   // The office at the current tick: completions and failures, then objects that moved.
-  void update_office(const std::vector<RobotStatus>& robots);
+  // Returns whether it published anything.
+  bool update_office(const std::vector<RobotStatus>& robots);
   void publish_handover(const office::DeskAnswer& answer);
   void record_metrics(const std::vector<RobotStatus>& robots);
   bool connected_to_teammate(const std::string& robot) const;
@@ -125,6 +136,15 @@ class SimulatorNode {
   std::ofstream trajectory_;
   TrajectoryRecorder paths_;
   bool finished_ = false;
+
+  // Quiet ticks: tick_ is stepped without being published while quiet_.
+  bool quiet_ = false;
+  // Something came from outside the handshake (a command, a spawn, a message): publish the next
+  // tick whatever the participants declared.
+  bool wake_ = false;
+  uint64_t quiet_ticks_ = 0;
+  std::map<std::string, geometry::Pose2> published_poses_;
+  dds::GuardCondition quiet_continue_;
 
   // Radio: robots in id order are the table's indices.
   radio::RadioModel radio_;

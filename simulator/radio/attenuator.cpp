@@ -1,5 +1,7 @@
 #include "simulator/radio/attenuator.hpp"
 
+#include "common/geometry/shapes.hpp"  // cross
+
 #include "simulator/radio/radio_parameters.hpp"
 
 #include <algorithm>
@@ -11,13 +13,13 @@
 namespace autonomy::sim::radio {
 
 using geometry::Rect;
+using geometry::cross;
 using geometry::Vec2;
 
 namespace {
 
 constexpr double kTol = kBoundaryToleranceM;
 
-double cross(const Vec2& u, const Vec2& v) { return u.x() * v.y() - u.y() * v.x(); }
 
 double distance_to_segment(const Vec2& p, const Vec2& q0, const Vec2& q1) {
   const Vec2 e = q1 - q0;

@@ -1,11 +1,14 @@
 #include "simulator/radio/radio_model.hpp"
 
+#include "common/geometry/shapes.hpp"  // cross
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 namespace autonomy::sim::radio {
 
+using geometry::cross;
 using geometry::Vec2;
 
 namespace {
@@ -40,7 +43,6 @@ bool within(const geometry::Rect& r, const Vec2& p) {
          p.y() <= r.max_y + kTol;
 }
 
-double cross(const Vec2& u, const Vec2& v) { return u.x() * v.y() - u.y() * v.x(); }
 
 // Canonical order of the endpoints, so that link(a, b) and link(b, a) run the same arithmetic.
 bool before(const Vec2& a, const Vec2& b) {

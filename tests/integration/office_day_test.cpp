@@ -6,6 +6,7 @@
 //   domain  test
 //   ------  -----------------------------------------------
 //   92-93   OfficeDayTest.TwoShortDaysOfTwoStrategiesWriteCsvReportAndPictures (its two lanes)
+//   94      OfficeDayTest.QuietTicksSkipTheIdleHoursAndDeliverTheSameDay
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -17,7 +18,56 @@
 namespace autonomy::test {
 namespace {
 
-class OfficeDayTest : public ProcessTest {};
+class OfficeDayTest : public ProcessTest {
+ protected:
+  // Runs one short day of strategy (c) into `out`; returns its CSV row split into fields.
+  std::vector<std::string> run_day(const std::string& out, bool every_tick) {
+    std::vector<std::string> args = {"--days", "1", "--strategies", "c", "--hours", "1", "--jobs-per-hour", "6",
+                                     "--parallel", "1", "--domain-base", "94", "--seed", "5", "--out", out};
+    if (every_tick) args.push_back("--every-tick");
+    auto& run = start(every_tick ? "office_day_every_tick" : "office_day_quiet", AUTONOMY_OFFICE_DAY_EXPERIMENT_BIN,
+                      args, false);
+    const auto ended = run.wait_for_exit(std::chrono::minutes(4));
+    if (!ended || !ended->exited || ended->code != 0) {
+      ADD_FAILURE() << "the day did not run to its end\n" << run.log_tail();
+      return {};
+    }
+    std::stringstream csv(read_file(out + "/days.csv"));
+    std::string header, row;
+    std::getline(csv, header);
+    std::getline(csv, row);
+    std::vector<std::string> f;
+    std::stringstream fields(row);
+    for (std::string x; std::getline(fields, x, ',');) f.push_back(x);
+    return f;
+  }
+};
+
+// The courier parks between jobs most of the hour: the simulator steps those ticks without
+// publishing them (idl/clock.idl), and the day comes out as it does with every tick published.
+TEST_F(OfficeDayTest, QuietTicksSkipTheIdleHoursAndDeliverTheSameDay) {
+  join(94);
+  const std::vector<std::string> every = run_day(dir().file("every-tick"), true);
+  const std::vector<std::string> quiet = run_day(dir().file("quiet"), false);
+  ASSERT_EQ(every.size(), 17u);
+  ASSERT_EQ(quiet.size(), 17u);
+  EXPECT_EQ(quiet[3], every[3]);  // the same seeded commands
+  EXPECT_GT(std::stoi(every[4]), 0);
+  EXPECT_EQ(quiet[4], every[4]) << "completed jobs";
+  EXPECT_NEAR(std::stod(quiet[9]), std::stod(every[9]), 0.1 * std::stod(every[9]) + 5.0) << "metres driven";
+
+  // "stopped at tick 7200: ... participants dropped, N ticks quiet"
+  const auto quiet_ticks = [&](const std::string& out) {
+    const std::string log = read_file(out + "/logs/c-1-simulator.out");
+    const auto at = log.find(" ticks quiet");
+    if (at == std::string::npos) return -1L;
+    const auto from = log.rfind(' ', at - 1) + 1;
+    return std::stol(log.substr(from, at - from));
+  };
+  EXPECT_EQ(quiet_ticks(dir().file("every-tick")), 0);
+  // An hour is 7,200 ticks of 0.5 s; six jobs keep the courier busy for well under half of it.
+  EXPECT_GT(quiet_ticks(dir().file("quiet")), 7200 / 3);
+}
 
 TEST_F(OfficeDayTest, TwoShortDaysOfTwoStrategiesWriteCsvReportAndPictures) {
   join(92);

@@ -129,6 +129,7 @@ struct Fields<msg::TickAck> {
     v.field("participant", m.participant);
     v.field("tick", m.tick);
     v.field("commands_sent", m.commands_sent);
+    v.field("quiet_until_tick", m.quiet_until_tick);
   }
 };
 

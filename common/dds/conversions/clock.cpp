@@ -27,10 +27,11 @@ void DdsType<msg::TickAck>::to_c(const msg::TickAck& v, C& out, Arena&) {
   out.participant = c_str(v.participant);
   out.tick = v.tick;
   out.commands_sent = v.commands_sent;
+  out.quiet_until_tick = v.quiet_until_tick;
 }
 
 msg::TickAck DdsType<msg::TickAck>::from_c(const C& in) {
-  return {from_c_str(in.participant), in.tick, in.commands_sent};
+  return {from_c_str(in.participant), in.tick, in.commands_sent, in.quiet_until_tick};
 }
 
 }  // namespace autonomy::dds

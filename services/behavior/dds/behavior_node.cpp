@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <unistd.h>
 
 namespace autonomy::behavior {
@@ -239,6 +240,7 @@ void BehaviorNode::on_goals(std::vector<dds::Sample<msg::NavGoal>> samples) {
                    options_.mission->name);
     } else if (tracker_) {
       accept_goal(s.value);
+      lockstep_.wake();  // a goal sent while the world was quiet: the next tick is needed
     } else {
       queued_goal_ = s.value;  // the newest goal waits for the map and the robot
     }
@@ -284,7 +286,11 @@ void BehaviorNode::control_pending_tick() {
   const int64_t tick = *pending_tick_;
   pending_tick_.reset();
   const uint32_t sent = executor_ ? control_mission(tick) : control_goal(tick);
-  lockstep_.acknowledge(tick, sent);
+  lockstep_.acknowledge(tick, sent, sent == 0 && waiting_for_a_goal() ? std::numeric_limits<int64_t>::max() : 0);
+}
+
+bool BehaviorNode::waiting_for_a_goal() const {
+  return !executor_ && !options_.mission && tracker_ && !tracker_->active() && !queued_goal_ && stopped_robot_;
 }
 
 void BehaviorNode::send_command(const VelocityCommand& command, int64_t tick) {

@@ -117,6 +117,9 @@ class BehaviorNode {
   void publish_mission(const MissionEvent& event, int64_t tick);
   void send_command(const VelocityCommand& command, int64_t tick);
   bool ready() const { return tracker_.has_value() || executor_.has_value(); }
+  // Goal mode, no goal, the robot stopped: nothing to do before the next goal comes, so the
+  // world need not publish ticks for this robot (a quiet ack, idl/clock.idl).
+  bool waiting_for_a_goal() const;
 
   service::Service& service_;
   BehaviorNodeOptions options_;

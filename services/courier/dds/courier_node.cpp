@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
+#include <limits>
 #include <set>
 #include <stdexcept>
 
@@ -148,6 +149,7 @@ CourierNode::CourierNode(service::Service& service, CourierNodeOptions options)
                      reply.detail);
       reply_writer_.write(reply);
     }
+    wake_if_needed();
   });
   loop.on_samples<msg::RobotState>(state_reader_, [this](auto samples) {
     for (const auto& s : samples) {
@@ -155,18 +157,21 @@ CourierNode::CourierNode(service::Service& service, CourierNodeOptions options)
       poses_[s.value.robot_id] = {s.value.x, s.value.y};  // a robot that joins later starts from it
       if (executive_->has_robot(s.value.robot_id)) executive_->on_pose(s.value.robot_id, s.value.x, s.value.y);
     }
+    wake_if_needed();
   });
   loop.on_samples<msg::DoorObservation>(door_reader_, [this](auto samples) {
     for (const auto& s : samples) {
       if (!s.valid || !executive_->has_robot(s.value.robot_id)) continue;
       for (const auto& d : s.value.doors) executive_->on_door(s.value.robot_id, d.door_id, d.angle_estimate, now_day_s());
     }
+    wake_if_needed();
   });
   loop.on_samples<msg::GoalStatus>(goal_status_reader_, [this](auto samples) {
     for (const auto& s : samples) {
       if (!s.valid || !executive_->has_robot(s.value.robot_id)) continue;
       executive_->on_goal(s.value.robot_id, s.value.goal_id, outcome_of(s.value.state), s.value.reason, now_day_s());
     }
+    wake_if_needed();
   });
   loop.on_samples<msg::HandoverStatus>(handover_status_reader_, [this](auto samples) {
     for (const auto& s : samples) {
@@ -176,6 +181,7 @@ CourierNode::CourierNode(service::Service& service, CourierNodeOptions options)
       if (h.state != msg::HandoverState::Accepted) answers_.emplace_back(h.request_id, msg::to_string(h.state));
       executive_->on_handover(h.request_id, outcome_of(h.state), h.reason, h.detail, now_day_s());
     }
+    wake_if_needed();
   });
   loop.on_samples<msg::Heartbeat>(heartbeat_reader_, [this](auto samples) { on_heartbeats(std::move(samples)); });
   // A killed process sends nothing more: its heartbeat goes silent (and, a lease later, its writer).
@@ -225,6 +231,7 @@ void CourierNode::apply(const std::vector<RosterChange>& changes) {
       executive_->remove_robot(c.robot, c.why, now_day_s());
     }
   }
+  if (!changes.empty()) wake_if_needed();
 }
 
 double CourierNode::now_sim_s() const { return lockstep_.clock().now_s(); }
@@ -238,10 +245,27 @@ double CourierNode::now_day_s() const { return options_.office.knowledge.clock.t
 
 void CourierNode::on_tick(const msg::SimClock& clock) {
   tick_ = clock.tick;
+  step_s_ = static_cast<double>(clock.step_ns) * 1e-9;
   have_clock_ = true;
   executive_->set_day(vote_day());
   carry_out(executive_->step(now_day_s()), clock.tick);
-  lockstep_.acknowledge(clock.tick, 0);
+  lockstep_.acknowledge(clock.tick, 0, quiet_until_tick());
+}
+
+std::int64_t CourierNode::quiet_until_tick() const {
+  const auto idle = executive_->idle_until_s(now_day_s());
+  if (!idle || step_s_ <= 0.0) return 0;
+  // Two ticks early: the robots' sightings of that tick come in before the change is due (a
+  // closed door in view is seen again rather than assumed open).
+  const double ticks = (*idle - now_day_s()) / step_s_ - 2.0;
+  if (ticks >= 1e15) return std::numeric_limits<std::int64_t>::max();
+  if (ticks < 2.0) return 0;
+  return tick_ + static_cast<std::int64_t>(ticks);
+}
+
+void CourierNode::wake_if_needed() {
+  // Something came while the world ran without us: work, or work sooner than announced.
+  if (lockstep_.quiet() && quiet_until_tick() < lockstep_.quiet_until_tick()) lockstep_.wake();
 }
 
 msg::CourierJobStatus CourierNode::status_of(const Job& job, int64_t tick) const {

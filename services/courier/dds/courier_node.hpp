@@ -57,6 +57,10 @@ class CourierNode {
 
  private:
   void on_tick(const msg::SimClock& clock);
+  // Quiet ticks (idl/clock.idl): the first tick the executive needs again (0: this one's next).
+  std::int64_t quiet_until_tick() const;
+  // After an input: the world must not stay quiet when it gave the executive work.
+  void wake_if_needed();
   void carry_out(Orders orders, int64_t tick);
   void save_experience();
   msg::CourierJobStatus status_of(const Job& job, int64_t tick) const;
@@ -82,6 +86,7 @@ class CourierNode {
   std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
   int64_t tick_ = 0;
   bool have_clock_ = false;
+  double step_s_ = 0.0;
 
   dds::Topic<msg::CourierCommand> command_topic_;
   dds::Topic<msg::CourierReply> reply_topic_;

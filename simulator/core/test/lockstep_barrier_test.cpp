@@ -163,5 +163,56 @@ TEST(BarrierWithoutParticipants, CompletesAtOnce) {
   EXPECT_EQ(barrier.expire(0, 10.0, 2.0), Names{});
 }
 
+TEST_F(Barrier, QuietWhileEveryParticipantDeclaredALaterTick) {
+  EXPECT_FALSE(barrier.quiet(1));  // nobody declared anything yet
+  barrier.on_ack("a", 1, 0, 10);
+  EXPECT_FALSE(barrier.quiet(2));  // b still needs every tick
+  barrier.on_ack("b", 1, 0, 5);
+  ASSERT_TRUE(barrier.complete(1));
+  barrier.end_tick(1);
+  for (LockstepBarrier::Tick t = 2; t < 5; ++t) {
+    barrier.begin_tick(t, 100.0);
+    EXPECT_TRUE(barrier.quiet(t)) << t;
+  }
+  barrier.begin_tick(5, 100.0);
+  EXPECT_FALSE(barrier.quiet(5));  // b wants tick 5 published
+}
+
+TEST_F(Barrier, AStaleAckWithoutAQuietTickWakesTheWorld) {
+  barrier.on_ack("a", 1, 0, 100);
+  barrier.on_ack("b", 1, 0, 100);
+  barrier.end_tick(1);
+  barrier.begin_tick(2, 100.0);
+  ASSERT_TRUE(barrier.quiet(2));
+  // a was sent something during the quiet span: it acks its last tick again, not quiet.
+  EXPECT_EQ(barrier.on_ack("a", 1, 0, 0), Ack::IgnoredStale);
+  EXPECT_FALSE(barrier.quiet(2));
+  EXPECT_FALSE(barrier.complete(2));  // and the tick it wakes into is waited for as usual
+}
+
+TEST_F(Barrier, ANewcomerIsNeverQuietBeforeItsFirstAck) {
+  barrier.on_ack("a", 1, 0, 100);
+  barrier.on_ack("b", 1, 0, 100);
+  barrier.add("c");  // waited for from tick 2
+  barrier.end_tick(1);
+  barrier.begin_tick(2, 100.0);
+  EXPECT_FALSE(barrier.quiet(2));
+  barrier.on_ack("c", 2, 0, 50);
+  EXPECT_TRUE(barrier.quiet(2));
+}
+
+TEST_F(Barrier, ALeaverOrADroppedParticipantTakesItsQuietDeclarationWithIt) {
+  barrier.on_ack("a", 1, 0, 100);
+  barrier.on_ack("b", 1, 0, 100);
+  barrier.remove("b");
+  barrier.end_tick(1);
+  barrier.begin_tick(2, 100.0);
+  EXPECT_TRUE(barrier.quiet(2));  // a alone, still quiet
+  EXPECT_EQ(barrier.expire(2, 200.0, 5.0), Names{"a"});
+  EXPECT_FALSE(barrier.quiet(2));  // nobody left to be quiet
+  EXPECT_EQ(barrier.on_ack("a", 2, 0, 0), Ack::Rejoined);
+  EXPECT_FALSE(barrier.quiet(2));
+}
+
 }  // namespace
 }  // namespace autonomy::sim

@@ -3,8 +3,10 @@
 #include <google/protobuf/text_format.h>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <csignal>
 #include <fstream>
+#include <limits>
 #include <list>
 #include <map>
 #include <sstream>
@@ -26,6 +28,9 @@ using process::ChildProcess;
 namespace {
 
 constexpr char kName[] = "experiment/commands";
+// After a command the stream keeps the world publishing for a while, so that the courier reads
+// the command on a published tick as it would without quiet ticks.
+constexpr int64_t kAwakeAfterCommandTicks = 20;
 
 void stop(ChildProcess& child) {
   if (!child.running()) return;
@@ -91,6 +96,7 @@ DayRecord run_day(const RunSetup& setup, const Strategy& strategy, const DayPlan
                                        "--max-ticks", std::to_string(ticks), "--metrics", metrics.string(),
                                        "--wait-for", "courier/main", "--wait-for", kName};
   for (const auto& r : plan.scenario.robots()) sim_args.insert(sim_args.end(), {"--wait-for", "behavior/" + r.id()});
+  if (setup.every_tick) sim_args.push_back("--every-tick");
   if (setup.trajectory) sim_args.insert(sim_args.end(), {"--trajectory", day_file(setup, strategy.id, day, "trajectory.csv").string()});
   std::list<ChildProcess> children;
   ChildProcess& sim = children.emplace_back("simulator", bin("simulator"), sim_args, std::map<std::string, std::string>{}, log("simulator"));
@@ -126,6 +132,9 @@ DayRecord run_day(const RunSetup& setup, const Strategy& strategy, const DayPlan
   int schedules = 0;
   std::size_t next = 0;
   int64_t acked = -1;
+  int64_t awake_until = 0;
+  // The first tick at which a command due at `at_s` is sent (the loop below: at_s <= now).
+  const auto tick_of = [&](double at_s) { return static_cast<int64_t>(std::ceil(at_s / step_s - 1e-9)); };
   const auto started = std::chrono::steady_clock::now();
   const auto collect = [&] {
     for (auto& s : status_reader.take())
@@ -161,9 +170,13 @@ DayRecord run_day(const RunSetup& setup, const Strategy& strategy, const DayPlan
       m.to = c.to;
       m.deadline = c.deadline;
       commands.write(m);
+      awake_until = latest->tick + kAwakeAfterCommandTicks;
     }
     acked = latest->tick;
-    ack.write({kName, acked, 0});
+    int64_t quiet_until = 0;  // idl/clock.idl: nothing to send before the next command
+    if (acked >= awake_until)
+      quiet_until = next < plan.commands.size() ? tick_of(plan.commands[next].at_s) : std::numeric_limits<int64_t>::max();
+    ack.write({kName, acked, 0, quiet_until});
   }
   const auto wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (!sim.status() || !sim.status()->exited || sim.status()->code != 0)

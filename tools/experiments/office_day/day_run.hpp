@@ -20,6 +20,7 @@ struct RunSetup {
   std::filesystem::path out_dir;  // days/ (scenarios, events, metrics), logs/
   double day_s = 8 * 3600.0;
   bool trajectory = false;        // write days/<s>-<day>.trajectory.csv (for pictures)
+  bool every_tick = false;        // the simulator publishes quiet ticks too (simulator --every-tick)
   std::chrono::seconds timeout{900};  // wall time a day may take
 };
 

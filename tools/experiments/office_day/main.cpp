@@ -70,6 +70,8 @@ int main(int argc, char** argv) {
   app.add_option("--domain-base", domain_base, "DDS domains domain-base .. domain-base + 4")->check(CLI::Range(0, 220))->capture_default_str();
   app.add_option("--office", office, "The office scenario the days are made from")->check(CLI::ExistingFile);
   app.add_option("--out", out, "Output folder")->capture_default_str();
+  app.add_flag("--every-tick", setup.every_tick,
+               "Publish every tick, also those nobody needs (slower; the same day: for comparison)");
   app.add_option("--bin-dir", setup.bin_dir, "Folder of simulator, behavior, courier, courier_plot")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   day.hours = hours;

@@ -13,7 +13,7 @@ namespace {
 msg::Heartbeat heartbeat() { return {"simulator", "main", "host1", 4242, msg::ServiceState::Ready, 12.5, 500}; }
 msg::SimClock sim_clock() { return {17, 1'700'000'000, 100'000'000, msg::ClockMode::Paced, 2.5}; }
 msg::LockstepRegistration registration() { return {"behavior/r1", false}; }
-msg::TickAck tick_ack() { return {"behavior/r1", 99, 3}; }
+msg::TickAck tick_ack() { return {"behavior/r1", 99, 3, 140}; }
 msg::RobotState robot_state() {
   return {"r1", 5, 500, 1.5, -2.25, 0.5, 0.1, -0.2, 0.3, msg::Kinematics::Unicycle, 0.3, 1.2, 2.0, true};
 }

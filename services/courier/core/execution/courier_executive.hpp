@@ -170,6 +170,11 @@ class CourierExecutive {
   // Once per tick, after the tick's events: reschedules when an assumption broke or the job set
   // changed, dispatches each robot's next activity, and hands over the orders.
   Orders step(double now_s);
+  // After step(): nullopt while there is work (a robot driving, handing over, a stop to go to,
+  // something to plan); otherwise the time before which step() would do nothing unless an event
+  // above comes (a hold ending, a failed schedule's retry, a closed door's sighting going stale;
+  // infinity when none). idle.cpp.
+  std::optional<double> idle_until_s(double now_s) const;
 
   const std::map<std::string, Job>& jobs() const { return jobs_; }
   const Job* job(const std::string& id) const;

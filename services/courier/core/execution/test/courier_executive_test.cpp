@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "services/courier/core/execution/test/paper_floor.hpp"
 
@@ -91,6 +92,15 @@ class ExecutiveTest : public ::testing::Test {
   void arrive() {
     now_ += 30;
     exec_.on_goal("rhino", last_goal_.goal_id, GoalOutcome::reached, "", now_);
+    step();
+  }
+  // Job j1 from the librarian's desk: the robot gets there at 09:01, nobody is in until 10:00.
+  void librarian_is_out_until_ten() {
+    exec_.add_job(delivery("j1", "book-green", "green", "book", "librarian-desk", "a114-desk"), now_);
+    step();
+    arrive();
+    exec_.on_handover(last_handover_.request_id, HandoverOutcome::rejected, "nobody_present",
+                      "nobody at librarian-desk at 09:01 (somebody is back at 10:00)", now_);
     step();
   }
   void complete_handover() {
@@ -578,12 +588,7 @@ TEST_F(ExecutiveTest, IdsCarryTheRunTag) {
 }
 
 TEST_F(ExecutiveTest, NobodyPresentWaitsUntilThePersonIsBack) {
-  exec_.add_job(delivery("j1", "book-green", "green", "book", "librarian-desk", "a114-desk"), now_);
-  step();
-  arrive();
-  exec_.on_handover(last_handover_.request_id, HandoverOutcome::rejected, "nobody_present",
-                    "nobody at librarian-desk at 09:01 (somebody is back at 10:00)", now_);
-  step();
+  librarian_is_out_until_ten();
   EXPECT_EQ(exec_.job("j1")->reason, "waiting: nobody at librarian-desk at 09:01 (somebody is back at 10:00)");
   int requests = 0;
   for (now_ = 9 * 3600.0 + 100; now_ < 10 * 3600.0; now_ += 60) requests += step().handovers.size();
@@ -594,12 +599,7 @@ TEST_F(ExecutiveTest, NobodyPresentWaitsUntilThePersonIsBack) {
 }
 
 TEST_F(ExecutiveTest, WhileAPersonIsOutTheRobotDoesOtherWorkFirst) {
-  exec_.add_job(delivery("j1", "book-green", "green", "book", "librarian-desk", "a114-desk"), now_);
-  step();
-  arrive();
-  exec_.on_handover(last_handover_.request_id, HandoverOutcome::rejected, "nobody_present",
-                    "nobody at librarian-desk at 09:01 (somebody is back at 10:00)", now_);
-  step();
+  librarian_is_out_until_ten();
   // A new job the schedule puts first: the robot goes for it instead of waiting for 10:00.
   scheduler_.newest_first = true;
   now_ += 60;
@@ -644,6 +644,51 @@ TEST_F(ExecutiveTest, AGoalTheBehaviorNeverAnswersIsSentAgainThenGivenUp) {
   EXPECT_EQ(exec_.job("j1")->state, JobState::failed);
   EXPECT_NE(exec_.job("j1")->reason.find("no answer from the behavior of rhino within 10 s"), std::string::npos)
       << exec_.job("j1")->reason;
+}
+
+// Quiet ticks (idl/clock.idl): how long the world may run without the courier.
+TEST_F(ExecutiveTest, IdleWithoutJobsUntilSomethingHappensAndAtWorkWithOne) {
+  step();
+  ASSERT_TRUE(exec_.idle_until_s(now_).has_value());
+  EXPECT_TRUE(std::isinf(*exec_.idle_until_s(now_)));
+  exec_.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
+  EXPECT_FALSE(exec_.idle_until_s(now_)) << "a job to plan";
+  step();
+  EXPECT_FALSE(exec_.idle_until_s(now_)) << "driving to the pickup";
+  arrive();
+  EXPECT_FALSE(exec_.idle_until_s(now_)) << "handing over";
+  complete_handover();
+  arrive();
+  complete_handover();
+  ASSERT_EQ(exec_.job("j1")->state, JobState::completed);
+  EXPECT_TRUE(exec_.idle_until_s(now_).has_value()) << "delivered, nothing else to do";
+}
+
+TEST_F(ExecutiveTest, IdleWhileWaitingForAPersonUntilThePersonIsBack) {
+  librarian_is_out_until_ten();
+  const auto idle = exec_.idle_until_s(now_);
+  ASSERT_TRUE(idle.has_value());
+  EXPECT_GT(*idle, now_);
+  EXPECT_LE(*idle, 10 * 3600.0 + 1);
+  // Nothing happens before then (the hold), and at that time the request goes out again.
+  now_ = *idle - 1;
+  EXPECT_TRUE(step().handovers.empty());
+  now_ = *idle + 1;
+  EXPECT_EQ(step().handovers.size(), 1u);
+}
+
+TEST_F(ExecutiveTest, IdleBehindAClosedDoorUntilItsSightingGoesStale) {
+  exec_.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
+  step();
+  exec_.on_door("rhino", "A-111", 0.0, now_);
+  step();
+  ASSERT_EQ(exec_.job("j1")->state, JobState::opportunistic);
+  const auto idle = exec_.idle_until_s(now_);
+  ASSERT_TRUE(idle.has_value());
+  EXPECT_DOUBLE_EQ(*idle, now_ + 300);  // then A-111 is assumed open and the job tried again
+  // Seen closed again meanwhile: later.
+  exec_.on_door("rhino", "A-111", 0.0, now_ + 100);
+  EXPECT_DOUBLE_EQ(*exec_.idle_until_s(now_ + 100), now_ + 400);
 }
 
 }  // namespace

@@ -1,0 +1,30 @@
+// When the courier may let the world run without it (quiet ticks, idl/clock.idl): every robot
+// parked with nothing to do, nothing to plan, and the next change that time alone brings known.
+#include "services/courier/core/execution/courier_executive.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace autonomy::courier {
+
+std::optional<double> CourierExecutive::idle_until_s(double now_s) const {
+  if (reschedule_needed_ || opportunity_pending_ || !orders_.empty() || robots_.empty()) return std::nullopt;
+  double until = std::numeric_limits<double>::infinity();
+  for (const auto& [id, r] : robots_) {
+    // Driving, handing over, or not located yet (the first pose makes a plan): at work.
+    if (!r.pose_known || r.handover || !r.goal_id.empty()) return std::nullopt;
+    if (r.hold_until_s > now_s) {
+      until = std::min(until, r.hold_until_s);  // then it goes on, or home
+      continue;
+    }
+    if (std::any_of(r.route.begin(), r.route.end(), [&](const PlanStop& s) { return still_needed(r, s); }))
+      return std::nullopt;
+  }
+  if (schedule_retry_at_) until = std::min(until, *schedule_retry_at_);
+  // A closed door not seen again is assumed open when its sighting goes stale: a change of plan.
+  for (const auto& [id, door] : doors_.doors())
+    if (!door.open) until = std::min(until, door.seen_at_s + settings_.closed_door_stale_s);
+  return until;
+}
+
+}  // namespace autonomy::courier
