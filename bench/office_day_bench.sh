@@ -16,7 +16,7 @@ trap 'rm -rf "$out"' EXIT
 
 day() {  # day NAME [extra args]: one day of strategy (c); prints its CSV row's wall_s and on_time
   local name="$1"; shift
-  "$bin/office_day_experiment" --days 1 --strategies c --hours "$hours" --parallel 1 --domain-base "$domain" \
+  "$bin/office_day" --days 1 --strategies c --hours "$hours" --parallel 1 --domain-base "$domain" \
     --seed 7 --out "$out/$name" "$@" > "$out/$name.log"
   awk -F, 'NR == 2 { print $17, $6, $4 }' "$out/$name/days.csv"
 }
