@@ -95,7 +95,9 @@ class CourierTest : public ProcessTest {
   // The world starts only while every --wait-for participant is registered: rhino's behavior must
   // have registered before the test leaves (it registers before it says ready).
   void release_world() {
-    if (behavior_) EXPECT_TRUE(await_ready(*beats_, *behavior_));
+    if (behavior_) {
+      EXPECT_TRUE(await_ready(*beats_, *behavior_));
+    }
     registration_writer_->write({"test/commands", false});
   }
   // While registered, the test steps the world itself: it acknowledges tick after tick until

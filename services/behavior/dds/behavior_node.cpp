@@ -238,9 +238,13 @@ void BehaviorNode::on_goals(std::vector<dds::Sample<msg::NavGoal>> samples) {
     if (options_.mission) {
       spdlog::warn("goal {} ignored: robot {} runs mission '{}'", msg::clipped_for_log(s.value.goal_id), options_.robot_id,
                    options_.mission->name);
+    } else if (tracker_ && lockstep_.quiet()) {
+      // The world runs on without us: the goal starts at the next tick we see, not at the old
+      // tick our clock still shows (its progress would be judged over the ticks we skipped).
+      queued_goal_ = s.value;
+      lockstep_.wake();
     } else if (tracker_) {
       accept_goal(s.value);
-      lockstep_.wake();  // a goal sent while the world was quiet: the next tick is needed
     } else {
       queued_goal_ = s.value;  // the newest goal waits for the map and the robot
     }
@@ -263,11 +267,9 @@ void BehaviorNode::on_cancels(std::vector<dds::Sample<msg::NavCancel>> samples) 
       spdlog::warn("cancel of {} ignored: robot {} runs a mission", what, options_.robot_id);
       continue;
     }
-    if (!tracker_) {
-      // Not ready yet: a queued goal it names never starts.
-      if (queued_goal_ && (s.value.goal_id.empty() || s.value.goal_id == queued_goal_->goal_id)) queued_goal_.reset();
-      continue;
-    }
+    // Not ready yet, or the goal came while quiet: a queued goal it names never starts.
+    if (queued_goal_ && (s.value.goal_id.empty() || s.value.goal_id == queued_goal_->goal_id)) queued_goal_.reset();
+    if (!tracker_) continue;
     const GoalReport report = tracker_->cancel(s.value.goal_id, s.value.reason);
     if (report.changes.empty()) spdlog::info("cancel of {}: not being pursued, nothing to do", what);
     publish(report);
@@ -285,6 +287,10 @@ void BehaviorNode::control_pending_tick() {
   if (!pending_tick_ || !ready() || !state_ || state_->tick < *pending_tick_) return;
   const int64_t tick = *pending_tick_;
   pending_tick_.reset();
+  if (queued_goal_ && tracker_) {  // came while this process was quiet (on_goals)
+    accept_goal(*queued_goal_);
+    queued_goal_.reset();
+  }
   const uint32_t sent = executor_ ? control_mission(tick) : control_goal(tick);
   lockstep_.acknowledge(tick, sent, sent == 0 && waiting_for_a_goal() ? std::numeric_limits<int64_t>::max() : 0);
 }
