@@ -338,7 +338,7 @@ void SimulatorNode::on_timer() {
 void SimulatorNode::advance_while_complete() {
   if (!lockstep()) return;
   // Quiet ticks are stepped in batches: between two, the loop reads what arrived (a wake-up).
-  constexpr int kQuietBatch = 200;
+  constexpr int kQuietBatch = 50;
   int quiet_in_a_row = 0;
   while (!finished_ && !barrier_.participants().empty() && !holding_start() && (quiet_ || barrier_.complete(tick_))) {
     if (quiet_ && ++quiet_in_a_row > kQuietBatch) {

@@ -238,9 +238,10 @@ void BehaviorNode::on_goals(std::vector<dds::Sample<msg::NavGoal>> samples) {
     if (options_.mission) {
       spdlog::warn("goal {} ignored: robot {} runs mission '{}'", msg::clipped_for_log(s.value.goal_id), options_.robot_id,
                    options_.mission->name);
-    } else if (tracker_ && lockstep_.quiet()) {
+    } else if (tracker_ && (lockstep_.quiet() || queued_goal_)) {
       // The world runs on without us: the goal starts at the next tick we see, not at the old
       // tick our clock still shows (its progress would be judged over the ticks we skipped).
+      // A later goal before that tick replaces it, as it would replace a goal being pursued.
       queued_goal_ = s.value;
       lockstep_.wake();
     } else if (tracker_) {

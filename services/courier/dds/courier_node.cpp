@@ -6,6 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <set>
 #include <stdexcept>
@@ -162,14 +164,15 @@ CourierNode::CourierNode(service::Service& service, CourierNodeOptions options)
   loop.on_samples<msg::DoorObservation>(door_reader_, [this](auto samples) {
     for (const auto& s : samples) {
       if (!s.valid || !executive_->has_robot(s.value.robot_id)) continue;
-      for (const auto& d : s.value.doors) executive_->on_door(s.value.robot_id, d.door_id, d.angle_estimate, now_day_s());
+      for (const auto& d : s.value.doors) executive_->on_door(s.value.robot_id, d.door_id, d.angle_estimate, day_s_of(s.value.tick));
     }
     wake_if_needed();
   });
   loop.on_samples<msg::GoalStatus>(goal_status_reader_, [this](auto samples) {
     for (const auto& s : samples) {
       if (!s.valid || !executive_->has_robot(s.value.robot_id)) continue;
-      executive_->on_goal(s.value.robot_id, s.value.goal_id, outcome_of(s.value.state), s.value.reason, now_day_s());
+      executive_->on_goal(s.value.robot_id, s.value.goal_id, outcome_of(s.value.state), s.value.reason,
+                          day_s_of(s.value.tick));
     }
     wake_if_needed();
   });
@@ -179,7 +182,7 @@ CourierNode::CourierNode(service::Service& service, CourierNodeOptions options)
       const auto& h = s.value;
       // Journalled with the job states it leads to, at this tick's end (carry_out).
       if (h.state != msg::HandoverState::Accepted) answers_.emplace_back(h.request_id, msg::to_string(h.state));
-      executive_->on_handover(h.request_id, outcome_of(h.state), h.reason, h.detail, now_day_s());
+      executive_->on_handover(h.request_id, outcome_of(h.state), h.reason, h.detail, day_s_of(h.tick));
     }
     wake_if_needed();
   });
@@ -243,6 +246,13 @@ std::int64_t CourierNode::vote_day() const {
 
 double CourierNode::now_day_s() const { return options_.office.knowledge.clock.time_of_day(now_sim_s()); }
 
+double CourierNode::day_s_of(std::int64_t tick) const {
+  // A sample of a tick our clock has not reached yet: the world ran quiet ticks meanwhile, and
+  // its perception is written before its clock (a door seen closed now is not hours old).
+  if (tick <= tick_ || step_s_ <= 0.0) return now_day_s();
+  return options_.office.knowledge.clock.time_of_day(static_cast<double>(tick) * step_s_);
+}
+
 void CourierNode::on_tick(const msg::SimClock& clock) {
   tick_ = clock.tick;
   step_s_ = static_cast<double>(clock.step_ns) * 1e-9;
@@ -255,9 +265,15 @@ void CourierNode::on_tick(const msg::SimClock& clock) {
 std::int64_t CourierNode::quiet_until_tick() const {
   const auto idle = executive_->idle_until_s(now_day_s());
   if (!idle || step_s_ <= 0.0) return 0;
+  double until = *idle;
+  if (options_.learning) {
+    // Door habits get one vote per half hour from what the robots see: a tick in each.
+    const double slot = HalfHourCounts::kSlotS;
+    until = std::min(until, (std::floor(now_day_s() / slot) + 1.0) * slot + 3.0 * step_s_);
+  }
   // Two ticks early: the robots' sightings of that tick come in before the change is due (a
   // closed door in view is seen again rather than assumed open).
-  const double ticks = (*idle - now_day_s()) / step_s_ - 2.0;
+  const double ticks = (until - now_day_s()) / step_s_ - 2.0;
   if (ticks >= 1e15) return std::numeric_limits<std::int64_t>::max();
   if (ticks < 2.0) return 0;
   return tick_ + static_cast<std::int64_t>(ticks);

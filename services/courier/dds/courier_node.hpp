@@ -66,6 +66,8 @@ class CourierNode {
   msg::CourierJobStatus status_of(const Job& job, int64_t tick) const;
   double now_sim_s() const;
   double now_day_s() const;
+  // The time of day of a sample stamped `tick` (now_day_s() for ticks up to ours).
+  double day_s_of(std::int64_t tick) const;
   std::int64_t vote_day() const;
   // Heartbeats of behavior processes: robots join and leave the executive's fleet.
   void on_heartbeats(std::vector<dds::Sample<msg::Heartbeat>> samples);

@@ -15,7 +15,7 @@ double RunningStats::stddev() const { return n < 2 ? 0.0 : std::sqrt(m2 / static
 
 int HalfHourCounts::slot_of(double seconds_of_day) {
   const double day = std::fmod(seconds_of_day, 86400.0);
-  const int slot = static_cast<int>(std::floor((day < 0 ? day + 86400.0 : day) / 1800.0));
+  const int slot = static_cast<int>(std::floor((day < 0 ? day + 86400.0 : day) / kSlotS));
   return slot < 0 ? 0 : slot >= kSlots ? kSlots - 1 : slot;
 }
 

@@ -31,6 +31,7 @@ struct RunningStats {
 // Votes for "yes" (present, open) and "no" per half hour of the day.
 struct HalfHourCounts {
   static constexpr int kSlots = 48;
+  static constexpr double kSlotS = 86400.0 / kSlots;
   std::array<int, kSlots> yes{}, no{};
   static int slot_of(double seconds_of_day);  // wraps into [0, 48)
 };
