@@ -16,11 +16,10 @@ bool same_pose(const geometry::Pose2& a, const geometry::Pose2& b) {
 
 }  // namespace
 
-bool SimulatorNode::may_stay_quiet() {
+bool SimulatorNode::may_stay_quiet(const std::vector<RobotStatus>& robots) {
   if (!options_.quiet_ticks || !lockstep() || spacecraft_ || wake_ || radio_dirty_) return false;
   if (!barrier_.quiet(tick_) || !unsynchronised_commands_.empty() || !spawn_requests_.empty()) return false;
   if (relay_.pending() > 0) return false;  // team messages on their way must be delivered on time
-  const std::vector<RobotStatus> robots = world_.robots();
   for (const RobotStatus& r : robots) {
     const auto published = published_poses_.find(r.id);
     if (published == published_poses_.end() || !same_pose(published->second, r.pose)) return false;
@@ -32,10 +31,9 @@ bool SimulatorNode::may_stay_quiet() {
   return !update_office(robots);
 }
 
-void SimulatorNode::keep_quiet() {
+void SimulatorNode::keep_quiet(const std::vector<RobotStatus>& robots) {
   quiet_ = true;
   ++quiet_ticks_;
-  const std::vector<RobotStatus> robots = world_.robots();
   for (const RobotStatus& r : robots) record_robot(r);
   record_metrics(robots);
   const double now_s = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();

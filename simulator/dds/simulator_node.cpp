@@ -371,8 +371,8 @@ void SimulatorNode::advance() {
   step_compute_us_total_ += std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - started).count();
   last_advance_ = started;
 
-  if (may_stay_quiet())
-    keep_quiet();
+  if (const std::vector<RobotStatus> robots = world_.robots(); may_stay_quiet(robots))
+    keep_quiet(robots);
   else
     open_tick();
   if (options_.max_ticks && tick_ >= *options_.max_ticks) {

@@ -96,8 +96,9 @@ class SimulatorNode {
   void publish_robot_state(const RobotStatus& robot);
   void record_robot(const RobotStatus& robot);  // the trajectory file and picture, no DDS
   // Quiet ticks (simulator/dds/quiet_ticks.cpp).
-  bool may_stay_quiet();   // the tick just stepped need not be published
-  void keep_quiet();       // records it as a published tick would be, publishes nothing
+  // The tick just stepped need not be published (`robots`: the world's, at this tick).
+  bool may_stay_quiet(const std::vector<RobotStatus>& robots);
+  void keep_quiet(const std::vector<RobotStatus>& robots);  // records it as a published tick would be
   void continue_quietly();  // the next batch of quiet ticks, after the loop looked at its readers
   bool doors_as_published() const;
   // The radio of the current positions: link table, connectivity; publishes what changed.

@@ -94,6 +94,13 @@ class ExecutiveTest : public ::testing::Test {
     exec_.on_goal("rhino", last_goal_.goal_id, GoalOutcome::reached, "", now_);
     step();
   }
+  // Job j1 from the meeting table: its room's door A-111 is seen closed on the way.
+  void meeting_room_seen_closed() {
+    exec_.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
+    step();
+    exec_.on_door("rhino", "A-111", 0.0, now_);
+    step();
+  }
   // Job j1 from the librarian's desk: the robot gets there at 09:01, nobody is in until 10:00.
   void librarian_is_out_until_ten() {
     exec_.add_job(delivery("j1", "book-green", "green", "book", "librarian-desk", "a114-desk"), now_);
@@ -611,10 +618,7 @@ TEST_F(ExecutiveTest, WhileAPersonIsOutTheRobotDoesOtherWorkFirst) {
 
 TEST_F(ExecutiveTest, ADoorSeenClosedLongAgoIsAssumedOpenAgainAndItsJobTried) {
   // The pickup's room is seen closed on the way: the job waits for an opportunity.
-  exec_.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
-  step();
-  exec_.on_door("rhino", "A-111", 0.0, now_);
-  step();
+  meeting_room_seen_closed();
   ASSERT_EQ(exec_.job("j1")->state, JobState::opportunistic);
   const double seen = now_;
   now_ = seen + 299;
@@ -678,10 +682,7 @@ TEST_F(ExecutiveTest, IdleWhileWaitingForAPersonUntilThePersonIsBack) {
 }
 
 TEST_F(ExecutiveTest, IdleBehindAClosedDoorUntilItsSightingGoesStale) {
-  exec_.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
-  step();
-  exec_.on_door("rhino", "A-111", 0.0, now_);
-  step();
+  meeting_room_seen_closed();
   ASSERT_EQ(exec_.job("j1")->state, JobState::opportunistic);
   const auto idle = exec_.idle_until_s(now_);
   ASSERT_TRUE(idle.has_value());
