@@ -3,6 +3,9 @@
 #include "services/courier/core/knowledge/knowledge_problems.hpp"
 #include "simulator/scenario/scenario_loader.hpp"
 
+#include <cmath>
+#include <optional>
+
 namespace autonomy::courier {
 
 namespace {
@@ -15,6 +18,32 @@ PlaceKind place_kind(sim::office::PlaceKind k) {
     case sim::office::PlaceKind::station: return PlaceKind::station;
   }
   return PlaceKind::desk;
+}
+
+// Beside the doorway on its hallway side, out of the way of robots going through, close enough
+// for the door sensor: where a robot waits for a closed door to open (Floor::door_lookouts).
+// Nothing when neither side of the door is a hallway or no free spot is found.
+std::optional<Floor::Lookout> lookout_of(const sim::DoorSpec& door, const sim::Scenario& scenario) {
+  constexpr double kOffWallM = 0.6;   // from the doorway line into the hallway
+  constexpr double kBesideM = 0.7;    // past the door frame, along the wall
+  constexpr double kClearanceM = 0.4; // from every obstacle (a robot's radius and a margin)
+  const geometry::Vec2 along{std::cos(door.heading), std::sin(door.heading)};
+  const geometry::Vec2 normal{-along.y(), along.x()};
+  for (const double side : {1.0, -1.0}) {
+    for (const double beside : {1.0, -1.0}) {
+      const geometry::Vec2 spot =
+          door.position + normal * (side * kOffWallM) + along * (beside * (door.width / 2 + kBesideM));
+      bool in_hallway = false;
+      for (const auto& room : scenario.rooms)
+        if (room.kind == "hallway" && room.bounds && room.bounds->contains(spot)) in_hallway = true;
+      if (!in_hallway) continue;
+      bool clear = true;
+      for (const auto& o : scenario.world.obstacles)
+        if (o.inflated(kClearanceM).contains(spot)) clear = false;
+      if (clear) return Floor::Lookout{spot.x(), spot.y()};
+    }
+  }
+  return std::nullopt;
 }
 
 CourierRobotSpec robot_of(const sim::RobotSpec& r) {
@@ -78,6 +107,7 @@ CourierOfficeResult load_courier_office(const std::string& scenario_path) {
   for (const auto& d : world.doors) {
     office.map.doors.push_back({d.id, d.position, d.width, d.heading});
     office.floor.doors.insert(d.id);
+    if (const auto lookout = lookout_of(d, scenario)) office.floor.door_lookouts[d.id] = *lookout;
     // A door leads into each of its rooms that is not a hallway; the first door of a room wins.
     for (const auto& room : d.rooms) {
       bool hallway = room.empty();

@@ -174,7 +174,7 @@ void CourierExecutive::on_goal(const std::string& robot, const std::string& goal
     case GoalOutcome::accepted:
     case GoalOutcome::active: return;
     case GoalOutcome::reached:
-      if (!r.goal_from.empty() && r.goal_place != kHomePlace && floor_.place(r.goal_place))
+      if (floor_.place(r.goal_from) && floor_.place(r.goal_place))
         experience_.travel(r.goal_from, r.goal_place, now_s - r.goal_sent_s);
       r.blocked.erase(r.goal_place);
       r.refused.erase(r.goal_place);
@@ -184,8 +184,9 @@ void CourierExecutive::on_goal(const std::string& robot, const std::string& goal
       return;
     case GoalOutcome::blocked: {
       const std::string place = r.goal_place;
-      if (place == kHomePlace) {
-        // The way home is blocked (another robot in it): stay a while, then try again.
+      if (place == kHomePlace || is_lookout(place)) {
+        // The way home or to a door's lookout is blocked (another robot in it): stay a while,
+        // then try again.
         r.goal_id.clear();
         r.goal_place.clear();
         r.hold(now_s + settings_.home_retry_s);
@@ -444,7 +445,12 @@ PlanRequest CourierExecutive::request_for(double now_s, const std::vector<std::s
   }
   for (const auto& [id, job] : jobs_) {
     const bool extra = std::find(extra_jobs.begin(), extra_jobs.end(), id) != extra_jobs.end();
-    if (job.finished() || job.state == JobState::stranded || (job.state == JobState::opportunistic && !extra)) continue;
+    if (job.finished() || job.state == JobState::stranded) continue;
+    // An opportunistic job is planned only when asked for (the opportunity check), except that an
+    // object aboard behind a door believed closed takes its place aboard (capacity, look-alikes):
+    // the scheduler leaves its delivery out as unreachable.
+    if (job.state == JobState::opportunistic && !extra && !(job.aboard() && closed_door_for(job.target_place())))
+      continue;
     if (next_step(job) == NextStep::none) continue;
     // A job aboard a robot that cannot be planned for yet waits for that robot's pose.
     if (job.aboard()) {
@@ -505,6 +511,11 @@ void CourierExecutive::adopt(const Plan& plan, double now_s) {
       changed(job);
       continue;
     }
+    if (plan.gone_for_good.count(job_id)) {
+      give_up_job(job, "cannot be done today: " + why, now_s);
+      continue;
+    }
+    if (job.state == JobState::opportunistic) continue;  // waits already
     const NextStep step = next_step(job);
     const std::string& place = step == NextStep::load ? job.object_place : job.target_place();
     const auto door = floor_.door_to(place);
@@ -515,7 +526,10 @@ void CourierExecutive::adopt(const Plan& plan, double now_s) {
 void CourierExecutive::reschedule(double now_s) {
   reschedule_needed_ = false;
   schedule_retry_at_.reset();
-  const Plan plan = scheduler_.plan(request_for(now_s, {}));
+  Plan plan = scheduler_.plan(request_for(now_s, {}));
+  // Objects waiting aboard for a door that a job needs the place of go back, and the rest is
+  // planned again without them.
+  if (make_room(plan, now_s)) plan = scheduler_.plan(request_for(now_s, {}));
   if (plan.failed) {
     // Keep driving the routes there are; a failure of the whole plan says nothing about the jobs.
     event(ExecutionEvent::Kind::schedule_failed, "no schedule (" + plan.failure + "): the current routes go on, " +
@@ -596,9 +610,9 @@ void CourierExecutive::dispatch(Robot& robot, double now_s) {
       break;
     }
   if (!next) {
-    idle_policy(robot, now_s);
-    // A return just started is planned and dispatched in this tick's second round.
-    if (!reschedule_needed_) park(robot, now_s);
+    // Waiting in sight of a door, or a return just started (planned and dispatched in this tick's
+    // second round): not parked.
+    if (!idle_policy(robot, now_s) && !reschedule_needed_) park(robot, now_s);
     return;
   }
   Job& job = jobs_.at(next->job_id);
@@ -621,25 +635,6 @@ void CourierExecutive::dispatch(Robot& robot, double now_s) {
   }
 }
 
-void CourierExecutive::idle_policy(Robot& robot, double now_s) {
-  // Nothing left that can be done: an object aboard whose job waits for a closed room goes back
-  // to where it came from, and the job fails with its reason (the paper's Fig. 7).
-  for (auto& [id, job] : jobs_) {
-    if (job.state != JobState::opportunistic || job.object_carrier != robot.id) continue;
-    if (!closed_door_for(job.target_place())) {
-      // Its room is believed open again (an opportunity once declined): deliver it after all.
-      job.state = JobState::queued;
-      job.reason.clear();
-      event(ExecutionEvent::Kind::opportunity_taken,
-            "job " + id + " taken up again: " + job.target_place() + " is open and nothing else waits");
-      changed(job);
-    } else {
-      start_return(job, JobState::failed, job.reason, now_s);
-    }
-    reschedule_needed_ = true;
-  }
-}
-
 Orders CourierExecutive::step(double now_s) {
   // Nothing can be planned before any robot is known to be somewhere; events wait for that.
   const bool located = std::any_of(robots_.begin(), robots_.end(), [](const auto& r) { return r.second.pose_known; });
@@ -655,8 +650,10 @@ Orders CourierExecutive::step(double now_s) {
                                                  " s (" + clock_text(now_s) + ")");
     opportunity_pending_ = true;
     reschedule_needed_ = true;
+    reconsider_returns(door, now_s);
   }
   if (schedule_retry_at_ && now_s >= *schedule_retry_at_) reschedule_needed_ = true;
+  give_up_overdue(now_s);
   if (opportunity_pending_) opportunity_check(now_s);
   if (reschedule_needed_) reschedule(now_s);
   for (auto& [id, r] : robots_)

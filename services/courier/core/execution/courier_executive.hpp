@@ -50,6 +50,11 @@ struct ExecutiveSettings {
   // opportunistic jobs are tried again (without it they waited for a robot to pass by, and in
   // the day-in-office experiment one job in twelve was still waiting at the day's end).
   double closed_door_stale_s = 300.0;
+  // An opportunistic job waiting for a door believed closed is given up this long after its
+  // deadline passed (the policy's "deadline given up"): its object goes back to its pickup. Until
+  // then the object stays aboard and the job waits for the door; negative: never given up for its
+  // deadline (only when its person is gone for the day, or its place aboard is needed).
+  double give_up_after_deadline_s = 900.0;
   // Part of every goal and request id, so that ids never repeat across runs of the service (a
   // simulator answers a repeated request id with its old answer). The node uses the journal's run.
   std::string id_tag = "r1";
@@ -60,6 +65,9 @@ struct ExecutiveSettings {
 
 // The goal place of a robot driving home (where it joined the fleet); no place of the floor.
 inline constexpr char kHomePlace[] = "@home";
+// The goal place of a robot waiting in sight of a door: "@lookout A-120" (Floor::door_lookouts).
+inline constexpr char kLookoutPrefix[] = "@lookout ";
+inline bool is_lookout(const std::string& place) { return place.rfind(kLookoutPrefix, 0) == 0; }
 
 struct NavGoalOrder {
   std::string robot;
@@ -178,6 +186,16 @@ class CourierExecutive {
 
   const std::map<std::string, Job>& jobs() const { return jobs_; }
   const Job* job(const std::string& id) const;
+  // The unfinished job that holds `object_id`, if any: one object is in one open job at a time.
+  const Job* open_job_of_object(const std::string& object_id) const;
+  // Where each object of a job is believed to be now (place or carrier), from its latest job:
+  // deliveries and returns move what the courier knows of its objects. objects.cpp.
+  struct ObjectWhereabouts {
+    std::string place;
+    std::string carrier;
+    std::string job;  // the job whose belief this is
+  };
+  std::map<std::string, ObjectWhereabouts> object_whereabouts() const;
   const DoorBelief& doors() const { return doors_; }
   // What experience taught so far (handover times, presence, doors by time of day, travel
   // times): recorded from the events above; restored from the journal at start.
@@ -231,7 +249,22 @@ class CourierExecutive {
   void adopt(const Plan& plan, double now_s);
   void opportunity_check(double now_s);
   void dispatch(Robot& robot, double now_s);
-  void idle_policy(Robot& robot, double now_s);
+  // Nothing else to do: objects aboard whose job waits for a door stay aboard and the robot waits
+  // in sight of that door; a job whose door is believed open again is taken up. opportunistic.cpp.
+  // True when the robot is kept busy so (not to be parked).
+  bool idle_policy(Robot& robot, double now_s);
+  // Opportunistic jobs that can no longer be done are ended (objects aboard go back): the deadline
+  // given up by the policy. opportunistic.cpp.
+  void give_up_overdue(double now_s);
+  // A job is given up for good: an object aboard goes back to its pickup, otherwise it fails.
+  void give_up_job(Job& job, const std::string& reason, double now_s);
+  // Objects of opportunistic jobs aboard a robot whose place aboard a job the plan left out needs:
+  // they go back, and the job is planned. opportunistic.cpp.
+  bool make_room(const Plan& plan, double now_s);
+  // A return started because a door stayed closed, for a door now seen open: delivered after all.
+  void reconsider_returns(const std::string& door_id, double now_s);
+  // Sends `robot` to the lookout of `door` (when the floor has one and it is not there).
+  void watch_door(Robot& robot, const std::string& door, double now_s);
   // Nothing to do: home (several robots) or stop (cancel a goal no longer needed). fleet.cpp.
   void park(Robot& robot, double now_s);
   void send_goal(Robot& robot, const std::string& place, double now_s);

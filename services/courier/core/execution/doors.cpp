@@ -44,6 +44,7 @@ void CourierExecutive::on_door(const std::string& robot, const std::string& door
     event(ExecutionEvent::Kind::door_opened, door_id + " seen open by " + robot + " at " + clock_text(now_s));
     for (const auto& [id, job] : jobs_)
       if (job.state == JobState::opportunistic) opportunity_pending_ = true;
+    reconsider_returns(door_id, now_s);
     reschedule_needed_ = true;
   }
 }
@@ -59,6 +60,11 @@ void CourierExecutive::opportunity_check(double now_s) {
     PlanRequest with_request = request_for(now_s, {id});
     with_request.first = {id};
     const Plan with = scheduler_.plan(with_request);
+    if (with.gone_for_good.count(id)) {
+      // Its door is open but a person it needs is not there again today: it can no longer be done.
+      give_up_job(job, "cannot be done today: " + with.unschedulable.at(id), now_s);
+      continue;
+    }
     if (without.failed || with.failed || with.unschedulable.count(id)) continue;
     // Keeps every other deadline: no other job later than it would be without the opportunity.
     int late_without = 0, late_with = 0;

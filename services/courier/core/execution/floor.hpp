@@ -21,6 +21,14 @@ struct Floor {
   std::map<std::string, FloorPlace> places;
   std::map<std::string, std::string> door_of_room;  // room -> the door a robot enters it by
   std::set<std::string> doors;  // every door of the map; sightings of other ids are ignored
+  // Where a robot waits in sight of a door, beside it on the hallway side (out of the doorway):
+  // a robot holding the object of a job behind a closed door and with nothing else to do waits
+  // there, so that it sees the door open. Doors without one: the robot waits where it is.
+  struct Lookout {
+    double x = 0.0;
+    double y = 0.0;
+  };
+  std::map<std::string, Lookout> door_lookouts;
 
   const FloorPlace* place(const std::string& name) const {
     const auto it = places.find(name);

@@ -50,6 +50,8 @@ struct PlanStop {
 struct Plan {
   std::map<std::string, std::vector<PlanStop>> routes;  // robot -> stops in order
   std::map<std::string, std::string> unschedulable;     // job -> why (e.g. "A-120 closed")
+  // Of those, the jobs that can no longer be done today: a person they need is not present again.
+  std::set<std::string> gone_for_good;
   std::map<std::string, double> completion_s;           // job -> predicted completion
   // job -> why its robot (several robots only): "assigned to rhino2: 3 min earlier than rhino1"
   std::map<std::string, std::string> allocation;

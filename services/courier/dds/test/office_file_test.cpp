@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <unistd.h>
 
@@ -30,6 +31,25 @@ TEST(OfficeFile, ReadsTheCouriersKnowledgeFloorAndRobotsFromTheOfficeScenario) {
   EXPECT_EQ(o.robots[0].capacity, 3);
   EXPECT_EQ(o.map.doors.size(), 12u);
   EXPECT_DOUBLE_EQ(o.map.width_m, 40.0);
+}
+
+// Every door of the office opens onto the hallway: each gets a lookout in the hallway, beside
+// its doorway (not in front of it), clear of the walls and within the door sensor's 4 m.
+TEST(OfficeFile, EveryDoorOntoTheHallwayHasALookoutBesideItsDoorway) {
+  const CourierOfficeResult r = load_courier_office(kOffice);
+  ASSERT_TRUE(r.ok()) << r.error;
+  const CourierOffice& o = *r.office;
+  ASSERT_EQ(o.floor.door_lookouts.size(), o.map.doors.size());
+  for (const auto& door : o.map.doors) {
+    const auto it = o.floor.door_lookouts.find(door.id);
+    ASSERT_NE(it, o.floor.door_lookouts.end()) << door.id;
+    const auto& spot = it->second;
+    EXPECT_GT(spot.y, 7.1 + 0.3) << door.id;  // inside the hallway, a robot's radius off each wall
+    EXPECT_LT(spot.y, 8.9 - 0.3) << door.id;
+    const double dx = spot.x - door.centre.x(), dy = spot.y - door.centre.y();
+    EXPECT_GT(std::abs(dx), door.width_m / 2) << door.id << ": in front of the doorway";
+    EXPECT_LT(std::hypot(dx, dy), 4.0) << door.id;
+  }
 }
 
 TEST(OfficeFile, ErrorsNameTheFileAndAnOfficeIsRequired) {

@@ -8,133 +8,15 @@
 #include <algorithm>
 #include <cmath>
 
-#include "services/courier/core/execution/test/paper_floor.hpp"
+#include "services/courier/core/execution/test/executive_fixture.hpp"
 
 namespace autonomy::courier {
 namespace {
 
 using test_support::paper_floor;
-
-// Serves the jobs in the order of the request (forced ones first); a job behind a closed door is
-// unschedulable. Each stop takes 60 s.
-class InOrderScheduler : public ScheduleSource {
- public:
-  explicit InOrderScheduler(const Floor& floor) : floor_(floor) {}
-  Plan plan(const PlanRequest& request) override {
-    ++calls;
-    last_request = request;
-    Plan plan;
-    plan.engine = "in-order";
-    std::vector<PlanJob> jobs = request.jobs;
-    if (newest_first) std::reverse(jobs.begin(), jobs.end());
-    std::stable_sort(jobs.begin(), jobs.end(), [&](const PlanJob& a, const PlanJob& b) {
-      const auto first = [&](const PlanJob& j) {
-        return std::find(request.first.begin(), request.first.end(), j.id) != request.first.end();
-      };
-      return first(a) > first(b);
-    });
-    const std::string robot = request.robots.front().id;
-    double t = request.now_s;
-    for (const PlanJob& j : jobs) {
-      const auto closed = [&](const std::string& place) {
-        const auto door = floor_.door_to(place);
-        return door && request.closed_doors.count(*door);
-      };
-      if ((j.aboard.empty() && closed(j.pickup)) || closed(j.destination)) {
-        plan.unschedulable[j.id] = "behind a closed door";
-        continue;
-      }
-      if (j.aboard.empty()) {
-        t += 60;
-        plan.routes[robot].push_back({j.id, true, j.pickup, floor_.place(j.pickup)->room, t, t});
-      }
-      t += 60;
-      plan.routes[robot].push_back({j.id, false, j.destination, floor_.place(j.destination)->room, t, t});
-      plan.completion_s[j.id] = t;
-    }
-    return plan;
-  }
-  int calls = 0;
-  PlanRequest last_request;
-  bool newest_first = false;  // the jobs in the reverse order of the request
-
- private:
-  const Floor& floor_;
-};
-
-Job delivery(const std::string& id, const std::string& object, const std::string& colour, const std::string& kind,
-             const std::string& from, const std::string& to) {
-  Job j;
-  j.id = id;
-  j.command_id = "c-" + id;
-  j.object = {object, kind, colour};
-  j.pickup = from;
-  j.destination = to;
-  return j;
-}
-
-class ExecutiveTest : public ::testing::Test {
- protected:
-  ExecutiveTest() : floor_(paper_floor()), scheduler_(floor_), exec_(floor_, scheduler_) {
-    exec_.add_robot("rhino", 3);
-    exec_.on_pose("rhino", 1.5, 8.0);
-  }
-
-  // Steps once and keeps what happened.
-  Orders step() {
-    Orders o = exec_.step(now_);
-    for (const auto& e : o.events) events_.push_back(e.text);
-    for (const auto& g : o.goals) last_goal_ = g;
-    for (const auto& h : o.handovers) last_handover_ = h;
-    return o;
-  }
-  // The robot reaches the place of its last goal.
-  void arrive() {
-    now_ += 30;
-    exec_.on_goal("rhino", last_goal_.goal_id, GoalOutcome::reached, "", now_);
-    step();
-  }
-  // Job j1 from the meeting table: its room's door A-111 is seen closed on the way.
-  void meeting_room_seen_closed() {
-    exec_.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
-    step();
-    exec_.on_door("rhino", "A-111", 0.0, now_);
-    step();
-  }
-  // Job j1 from the librarian's desk: the robot gets there at 09:01, nobody is in until 10:00.
-  void librarian_is_out_until_ten() {
-    exec_.add_job(delivery("j1", "book-green", "green", "book", "librarian-desk", "a114-desk"), now_);
-    step();
-    arrive();
-    exec_.on_handover(last_handover_.request_id, HandoverOutcome::rejected, "nobody_present",
-                      "nobody at librarian-desk at 09:01 (somebody is back at 10:00)", now_);
-    step();
-  }
-  void complete_handover() {
-    now_ += 10;
-    exec_.on_handover(last_handover_.request_id, HandoverOutcome::accepted, "", "", now_);
-    exec_.on_handover(last_handover_.request_id, HandoverOutcome::completed, "", "", now_);
-    step();
-  }
-  std::string goal_place() const { return last_goal_.goal_id.substr(6, last_goal_.goal_id.rfind('/') - 6); }
-  bool happened(const std::string& text) const {
-    return std::find(events_.begin(), events_.end(), text) != events_.end();
-  }
-  size_t index_of(const std::string& prefix) const {
-    for (size_t i = 0; i < events_.size(); ++i)
-      if (events_[i].rfind(prefix, 0) == 0) return i;
-    ADD_FAILURE() << "no event starting with '" << prefix << "'";
-    return events_.size();
-  }
-
-  Floor floor_;
-  InOrderScheduler scheduler_;
-  CourierExecutive exec_;
-  double now_ = 9 * 3600.0;
-  std::vector<std::string> events_;
-  NavGoalOrder last_goal_;
-  HandoverOrder last_handover_;
-};
+using test_support::delivery;
+using test_support::ExecutiveTest;
+using test_support::InOrderScheduler;
 
 TEST_F(ExecutiveTest, TwoDeliveriesWithAllDoorsOpen) {
   exec_.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
@@ -216,8 +98,12 @@ TEST_F(ExecutiveTest, Fig5ClosedDoorMakesTheJobOpportunisticAndAnOpenDoorInterru
   EXPECT_LT(red_done, green_done);
 }
 
-TEST_F(ExecutiveTest, Fig7DoorStaysClosedAndTheLetterIsReturned) {
-  exec_.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
+// The door stays closed: the letter stays aboard while the green book is delivered and after
+// (the job can still be done); it goes back only when the policy gives its deadline up.
+TEST_F(ExecutiveTest, Fig7DoorStaysClosedAndTheLetterIsReturnedWhenItsDeadlineIsGivenUp) {
+  Job red = delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk");
+  red.deadline_s = now_ + 600;  // 09:10
+  exec_.add_job(red, now_);
   exec_.add_job(delivery("j2", "book-green", "green", "book", "librarian-desk", "a114-desk"), now_);
   step();
   arrive();
@@ -227,11 +113,25 @@ TEST_F(ExecutiveTest, Fig7DoorStaysClosedAndTheLetterIsReturned) {
   arrive();
   complete_handover();
   arrive();
-  Orders last;
   now_ += 10;
   exec_.on_handover(last_handover_.request_id, HandoverOutcome::completed, "", "", now_);
-  last = step();  // green book delivered; nothing else possible: the letter goes back
+  step();  // green book delivered; the letter waits aboard for A-120, the robot beside its door
   EXPECT_EQ(exec_.job("j2")->state, JobState::completed);
+  EXPECT_EQ(exec_.job("j1")->state, JobState::opportunistic);
+  EXPECT_EQ(exec_.job("j1")->object_carrier, "rhino");
+  EXPECT_EQ(goal_place(), "lookout-A-120");
+  arrive();
+  // Seen closed now and then until 15 min after its deadline: then given up.
+  const double give_up_at = *red.deadline_s + 900;
+  while (now_ < give_up_at - 60) {
+    now_ += 60;
+    exec_.on_door("rhino", "A-120", 0.0, now_);
+    step();
+    ASSERT_EQ(exec_.job("j1")->state, JobState::opportunistic) << clock_text(now_);
+  }
+  EXPECT_DOUBLE_EQ(*exec_.idle_until_s(now_), give_up_at);
+  now_ = give_up_at;
+  step();
   EXPECT_EQ(exec_.job("j1")->phase, JobPhase::returning);
   EXPECT_EQ(goal_place(), "meeting-table");
   arrive();
@@ -240,7 +140,9 @@ TEST_F(ExecutiveTest, Fig7DoorStaysClosedAndTheLetterIsReturned) {
   complete_handover();
   const Job& j1 = *exec_.job("j1");
   EXPECT_EQ(j1.state, JobState::failed);
-  EXPECT_EQ(j1.reason, "A-120 closed at 09:00:40; letter-red returned to meeting-table");
+  EXPECT_EQ(j1.reason,
+            "gave up waiting for A-120: deadline 09:10:00 passed 15 min ago (A-120 closed at 09:24:30); "
+            "letter-red returned to meeting-table");
   EXPECT_EQ(j1.object_place, "meeting-table");
 }
 
@@ -314,9 +216,11 @@ TEST_F(ExecutiveTest, BlockedGoalNamingAClosedDoorIsTakenAsASighting) {
                 "no route to goal (37.50, 2.60): door A-120 closed", now_);
   step();
   EXPECT_FALSE(exec_.doors().believed_open("A-120"));
-  // Nothing else to do: the letter goes back at once.
-  EXPECT_EQ(exec_.job("j1")->phase, JobPhase::returning);
-  EXPECT_EQ(goal_place(), "meeting-table");
+  // Nothing else to do: the letter stays aboard, the job waits for the door and the robot waits
+  // in sight of it.
+  EXPECT_EQ(exec_.job("j1")->state, JobState::opportunistic);
+  EXPECT_EQ(exec_.job("j1")->object_carrier, "rhino");
+  EXPECT_EQ(goal_place(), "lookout-A-120");
 }
 
 // Without door monitoring (strategy (a) of the day-in-office experiment): a door seen closed

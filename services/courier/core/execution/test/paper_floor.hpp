@@ -13,6 +13,8 @@ inline Floor paper_floor() {
   f.places["michael-desk"] = {37.5, 2.6, "A-120", 1.0};
   f.places["hallway-west"] = {1.5, 8.0, "", 1.0};
   for (const char* room : {"A-110", "A-111", "A-114", "A-120"}) f.door_of_room[room] = room;
+  // In the hallway beside each door: where a robot waits for a closed door to open.
+  f.door_lookouts = {{"A-110", {2.8, 7.6}}, {"A-111", {5.2, 8.4}}, {"A-114", {17.8, 7.6}}, {"A-120", {36.3, 7.6}}};
   return f;
 }
 
