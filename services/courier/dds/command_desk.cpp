@@ -81,10 +81,25 @@ msg::CourierReply CommandDesk::handle(const msg::CourierCommand& c, double now_s
   return reply;
 }
 
+OfficeKnowledge CommandDesk::believed_knowledge() const {
+  // What the office file says, with each object where the courier's jobs left it (delivered,
+  // returned, aboard): commands are read against where things are now.
+  OfficeKnowledge k = knowledge_;
+  const auto whereabouts = executive_.object_whereabouts();
+  for (KnownObject& o : k.objects) {
+    const auto it = whereabouts.find(o.id);
+    if (it == whereabouts.end()) continue;
+    o.place = it->second.place;
+    o.carrier = it->second.carrier;
+  }
+  return k;
+}
+
 msg::CourierReply CommandDesk::deliver(const msg::CourierCommand& c, double now_sim_s) {
+  const OfficeKnowledge knowledge = believed_knowledge();
   CommandAnswer answer;
   if (c.kind == msg::CourierCommandKind::Text) {
-    answer = interpret_command(c.text, knowledge_, now_sim_s);
+    answer = interpret_command(c.text, knowledge, now_sim_s);
   } else {
     StructuredRequest request;
     request.object_id = c.object_id;
@@ -93,7 +108,7 @@ msg::CourierReply CommandDesk::deliver(const msg::CourierCommand& c, double now_
     request.from = c.from;
     request.to = c.to;
     request.deadline = c.deadline;
-    answer = interpret_request(request, knowledge_, now_sim_s);
+    answer = interpret_request(request, knowledge, now_sim_s);
   }
   switch (answer.kind) {
     case CommandAnswer::Kind::rejected: return from_rejection(c, answer.rejection);
@@ -111,6 +126,15 @@ msg::CourierReply CommandDesk::accept_delivery(const msg::CourierCommand& c, con
                                    "no " + object_words(i.object).substr(4) + " is known to be at " + i.pickup_place +
                                        "; name a known object or its place");
     r.word = i.object.kind;
+    return r;
+  }
+  // One object is in one open job: a second one would find it gone (object_not_at_place).
+  if (const Job* holder = executive_.open_job_of_object(i.object.id)) {
+    msg::CourierReply r = rejected(c, "object_in_open_job",
+                                   i.object.id + " is in open job " + holder->id + " (to " + holder->destination +
+                                       ", " + to_string(holder->state) + "); cancel or revise that job instead");
+    r.word = i.object.id;
+    r.job_id = holder->id;
     return r;
   }
   Job job;

@@ -23,6 +23,8 @@ class CommandDesk {
   msg::CourierReply handle(const msg::CourierCommand& command, double now_sim_s, int64_t tick);
 
  private:
+  // The office knowledge with every object where the courier's jobs believe it is.
+  OfficeKnowledge believed_knowledge() const;
   msg::CourierReply deliver(const msg::CourierCommand& c, double now_sim_s);
   msg::CourierReply revise(const msg::CourierCommand& c, double now_sim_s);
   msg::CourierReply accept_delivery(const msg::CourierCommand& c, const Interpretation& i, double now_sim_s);

@@ -209,13 +209,17 @@ Plan EngineScheduleSource::plan(const PlanRequest& request) {
     const sched::Job& job = problem.jobs[static_cast<size_t>(u.job)];
     std::string detail = u.detail;
     // Hours cut by what was learned say so ("learned: A-120 usually closed 10:00-11:30").
+    bool learned = false;
     for (const int person : {job.pickup.person, job.delivery.person}) {
       if (person < 0 || person >= static_cast<int>(problem.people.size())) continue;
       const auto note = learned_notes_.find(problem.people[static_cast<size_t>(person)].name);
-      if (note != learned_notes_.end() && detail.find(note->second) == std::string::npos)
-        detail += " (" + note->second + ")";
+      if (note == learned_notes_.end()) continue;
+      learned = true;
+      if (detail.find(note->second) == std::string::npos) detail += " (" + note->second + ")";
     }
     plan.unschedulable[job.id] = detail;
+    // Gone for the day by the office's hours, not by a habit learned: the job can no longer be done.
+    if (u.reason == sched::UnschedulableReason::kNobodyPresent && !learned) plan.gone_for_good.insert(job.id);
   }
   if (!schedule.ok()) {
     // No schedule at all (infeasible, invalid, or out of time before the first one): the executive

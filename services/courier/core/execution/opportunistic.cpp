@@ -26,7 +26,16 @@ bool CourierExecutive::idle_policy(Robot& robot, double now_s) {
   std::optional<std::string> door_to_watch;
   std::optional<double> most_urgent;
   for (auto& [id, job] : jobs_) {
-    if (job.state != JobState::opportunistic || job.object_carrier != robot.id) continue;
+    if (job.state != JobState::opportunistic) continue;
+    if (!job.aboard()) {
+      // A pickup behind a closed door, last planned for this robot: worth watching too, after
+      // what is aboard.
+      const auto door = job.robot == robot.id && next_step(job) == NextStep::load ? closed_door_for(job.object_place)
+                                                                                  : std::nullopt;
+      if (door && !door_to_watch) door_to_watch = door;
+      continue;
+    }
+    if (job.object_carrier != robot.id) continue;
     const auto door = closed_door_for(job.target_place());
     if (!door) {
       // Its room is believed open again (an opportunity once declined): deliver it after all.

@@ -73,6 +73,41 @@ TEST_F(CommandDeskTest, ThePapersCommandIsAcceptedJournalledAndAnsweredAgainOnRe
   EXPECT_EQ(restarted.handle(c2, kNine, 2).job_id, "job-2");
 }
 
+// One object in one open job: a second command for the green book names the job that holds it;
+// once that job has delivered it, the book is known to lie at Anna's desk and commands follow.
+TEST_F(CommandDeskTest, AnObjectInAnOpenJobIsRefusedNamingThatJobAndItsPlaceFollowsItsDelivery) {
+  const msg::CourierReply first = text("c1", "deliver the green book from the librarian to Anna");
+  ASSERT_TRUE(first.accepted) << first.reason << ": " << first.detail;
+  const msg::CourierReply second = text("c2", "deliver the green book from the librarian to Michael");
+  EXPECT_FALSE(second.accepted);
+  EXPECT_EQ(second.reason, "object_in_open_job");
+  EXPECT_EQ(second.job_id, "job-1");
+  EXPECT_EQ(second.word, "book-green");
+  EXPECT_NE(second.detail.find("book-green is in open job job-1 (to a114-desk, queued)"), std::string::npos)
+      << second.detail;
+  // Structured, by id: the same answer.
+  msg::CourierCommand by_id;
+  by_id.command_id = "c3";
+  by_id.kind = msg::CourierCommandKind::Deliver;
+  by_id.object_id = "book-green";
+  by_id.to = "michael-desk";
+  EXPECT_EQ(desk_->handle(by_id, kNine, 1).reason, "object_in_open_job");
+  EXPECT_EQ(executive_.jobs().size(), 1u);
+
+  // The job delivers the book (its object belief moves with the handovers; here restored so).
+  Job delivered = *executive_.job("job-1");
+  delivered.state = JobState::completed;
+  delivered.object_place = "a114-desk";
+  executive_.restore_job(delivered);
+  const msg::CourierReply from_old_place = text("c4", "deliver the green book from the librarian to Michael");
+  EXPECT_FALSE(from_old_place.accepted);
+  EXPECT_EQ(from_old_place.detail, "no green book is known to be at librarian-desk; name a known object or its place");
+  const msg::CourierReply onwards = text("c5", "deliver the green book to Michael");
+  ASSERT_TRUE(onwards.accepted) << onwards.reason << ": " << onwards.detail;
+  EXPECT_EQ(onwards.from, "a114-desk");
+  EXPECT_EQ(onwards.to, "michael-desk");
+}
+
 TEST_F(CommandDeskTest, RejectionsSayWhyAndWhere) {
   const msg::CourierReply unknown = text("c1", "deliver the green book from the librarian to room A-122");
   EXPECT_FALSE(unknown.accepted);

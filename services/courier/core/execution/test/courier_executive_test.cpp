@@ -588,6 +588,11 @@ TEST_F(ExecutiveTest, IdleWhileWaitingForAPersonUntilThePersonIsBack) {
 TEST_F(ExecutiveTest, IdleBehindAClosedDoorUntilItsSightingGoesStale) {
   meeting_room_seen_closed();
   ASSERT_EQ(exec_.job("j1")->state, JobState::opportunistic);
+  EXPECT_FALSE(exec_.idle_until_s(now_)) << "on its way to watch the door";
+  now_ += 30;
+  exec_.on_goal("rhino", last_goal_.goal_id, GoalOutcome::reached, "", now_);
+  exec_.on_door("rhino", "A-111", 0.0, now_);
+  step();
   const auto idle = exec_.idle_until_s(now_);
   ASSERT_TRUE(idle.has_value());
   EXPECT_DOUBLE_EQ(*idle, now_ + 300);  // then A-111 is assumed open and the job tried again

@@ -80,6 +80,7 @@ TEST_F(OpportunisticTest, APickupBehindAClosedDoorIsOpportunisticAndTakenUpWhenT
   EXPECT_EQ(exec_.job("j1")->state, JobState::opportunistic);
   EXPECT_EQ(exec_.job("j1")->object_place, "meeting-table");
   EXPECT_EQ(exec_.job("j1")->reason.rfind("A-111 closed at ", 0), 0u) << exec_.job("j1")->reason;
+  at_lookout_sees("A-111", 0.0);
   now_ += 60;
   exec_.on_door("rhino", "A-111", 1.5, now_);
   step();
@@ -89,6 +90,12 @@ TEST_F(OpportunisticTest, APickupBehindAClosedDoorIsOpportunisticAndTakenUpWhenT
 
 // Given up (deadline), the object is on its way back when the door is seen open: delivered after
 // all, since the person can still get it.
+TEST_F(OpportunisticTest, WithNothingElseToDoTheRobotWatchesTheDoorOfItsPickup) {
+  meeting_room_seen_closed();
+  ASSERT_EQ(exec_.job("j1")->state, JobState::opportunistic);
+  EXPECT_EQ(goal_place(), "lookout-A-111");
+}
+
 TEST_F(OpportunisticTest, AReturnForAGivenUpDoorTurnsBackIntoTheDeliveryWhenTheDoorIsSeenOpen) {
   loaded_then_door_closes("j1", "letter-red", "meeting-table", "michael-desk", "A-120", now_ + 120);
   at_lookout_sees("A-120", 0.0);
