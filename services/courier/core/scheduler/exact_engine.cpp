@@ -9,10 +9,17 @@
 //     same location have the same choices left, and every future cost term is non-decreasing in
 //     the start time (waiting for presence is allowed, deadlines are soft). So one that is there
 //     no earlier and no better lexicographically than another cannot lead to anything better,
-//     and is dropped. Breadth first, every label of a state is known before any is expanded, so
-//     only non-dominated ones are (depth first expanded about as many later-dominated labels as
-//     surviving ones, measured). The textbook dynamic program (reference_dp.hpp) keeps the same
-//     labels but without bound or incumbent.
+//     and is dropped. One that is there earlier but is worse is dropped too when the delay of the
+//     other is priced (delay_penalty: no presence window can be missed by it, so every later
+//     completion is at most the delay later) and it still does not make up the difference. In
+//     loose offices (few deadlines, long presence) that leaves about one label per state instead
+//     of a front of them. Breadth first, every label of a state is known before any is expanded,
+//     so only non-dominated ones are (depth first expanded about as many later-dominated labels
+//     as surviving ones, measured). The textbook dynamic program (reference_dp.hpp) keeps the
+//     same states but without bound, delay pricing or incumbent.
+// Labels live only in the layer being expanded and the one being built (and their last stop in
+// a trail for the route), with the aboard set as masks: the search is memory bound, and a label
+// with the simulator's whole RouteState was twice as large.
 // Several couriers: every assignment of the waiting jobs to couriers, each courier's job set
 // solved once (memoised); refused (large engine's answer, not proved) beyond 2^14 assignments.
 #include "services/courier/core/scheduler/route_search.hpp"
@@ -26,10 +33,19 @@ namespace autonomy::courier::scheduling::detail {
 namespace {
 
 constexpr int kMaxJobsPerCourier = 30;
-// Partial routes kept at most (about 160 bytes each): beyond, the search gives up, not proved.
-constexpr std::size_t kMaxLabels = 1u << 19;
+// Partial routes kept at most (12 bytes each for the route, about 80 while in a layer): beyond,
+// the search gives up, not proved.
+constexpr std::size_t kMaxLabels = 1u << 20;
 constexpr std::uint64_t kMaxAssignments = 1u << 14;
 constexpr int kIncumbentRounds = 5;  // ruin-and-recreate rounds without improvement
+
+// C++17 has no <bit>: the compiler builtins (GCC and Clang) for the mask loops.
+int lowest_bit(std::uint64_t x) {
+  return __builtin_ctzll(x);
+}
+int bit_count(std::uint32_t x) {
+  return __builtin_popcount(x);
+}
 
 // All-pairs shortest travel (the matrix may not obey the triangle inequality; bounds must).
 std::vector<double> shortest_travel(const SchedulingProblem& p) {
@@ -47,20 +63,25 @@ std::vector<double> shortest_travel(const SchedulingProblem& p) {
 // One courier, a given set of jobs, from the state after its forced prefix.
 class CourierSearch {
  public:
-  CourierSearch(RouteSearch& rs, const std::vector<double>& shortest, int courier,
-                const std::vector<int>& jobs, const RouteState& start, const SearchBudget& budget)
+  CourierSearch(RouteSearch& rs, const std::vector<double>& shortest, const std::vector<int>& jobs,
+                const RouteState& start, int capacity, const SearchBudget& budget)
       : rs_(rs),
         sim_(rs.sim()),
         shortest_(shortest),
-        courier_(courier),
         jobs_(jobs),
         start_(start),
         budget_(budget),
         n_(rs.problem().locations.size()),
-        capacity_(rs.problem().couriers[static_cast<std::size_t>(courier)].capacity) {
+        capacity_(capacity) {
     for (std::size_t i = 0; i < jobs_.size(); ++i)
       if (start_.carries(jobs_[i])) initially_picked_ |= 1u << i;
     all_ = jobs_.size() == 32 ? ~0u : (1u << jobs_.size()) - 1u;
+    // Objects aboard that are not jobs of this search (they stay aboard): they take capacity and
+    // block look-alikes for the whole route.
+    for (int k = 0; k < start_.load; ++k) {
+      const int j = start_.aboard[static_cast<std::size_t>(k)];
+      if (std::find(jobs_.begin(), jobs_.end(), j) == jobs_.end()) base_aboard_.push_back(j);
+    }
     // Places this search can be at: the start and the jobs' stops, with local ids for masks.
     local_.assign(n_, -1);
     auto add = [&](int loc) {
@@ -68,18 +89,29 @@ class CourierSearch {
         local_[static_cast<std::size_t>(loc)] = static_cast<int>(places_.size());
         places_.push_back(loc);
       }
+      return local_[static_cast<std::size_t>(loc)];
     };
     add(start_.loc);
-    for (int j : jobs_) {
-      const JobData& d = sim_.job(j);
-      if (!start_.carries(j)) add(d.pick_loc);
-      add(d.del_loc);
+    for (std::size_t i = 0; i < jobs_.size(); ++i) {
+      const JobData& d = sim_.job(jobs_[i]);
+      LocalJob& lj = local_jobs_[i];
+      lj.pick_place = (initially_picked_ >> i & 1u) ? -1 : add(d.pick_loc);
+      lj.del_place = add(d.del_loc);
+      for (std::size_t k = 0; k < jobs_.size(); ++k)
+        if (sim_.job(jobs_[k]).cls == d.cls) lj.look_alikes |= 1u << k;
+      for (int b : base_aboard_) lj.blocked_for_good |= sim_.job(b).cls == d.cls;
     }
-    // Per place, the other places by travel time to it (nearest first).
+    // Per place, the other places by travel time to it (nearest first), and the longest direct
+    // leg into it (for the delay dominance's upper bound on finish times).
     nearest_.resize(places_.size());
+    longest_leg_in_.assign(places_.size(), 0.0);
     for (std::size_t a = 0; a < places_.size(); ++a) {
-      for (std::size_t b = 0; b < places_.size(); ++b)
-        if (a != b) nearest_[a].push_back({sp(places_[b], places_[a]), static_cast<int>(b)});
+      for (std::size_t b = 0; b < places_.size(); ++b) {
+        if (a == b) continue;
+        nearest_[a].push_back({sp(places_[b], places_[a]), static_cast<int>(b)});
+        const double leg = sim_.travel(places_[b], places_[a]);
+        if (leg < kNoRoute) longest_leg_in_[a] = std::max(longest_leg_in_[a], leg);
+      }
       std::sort(nearest_[a].begin(), nearest_[a].end());
     }
     masks_ok_ = places_.size() <= 64;
@@ -105,140 +137,47 @@ class CourierSearch {
   bool out_of_memory() const { return out_of_memory_; }
 
  private:
-  double sp(int a, int b) const {
-    return shortest_[static_cast<std::size_t>(a) * n_ + static_cast<std::size_t>(b)];
-  }
-
-  // False when some job left cannot be finished at all from s. The bound combines, for the jobs
-  // left (r of them):
-  //   e_j  earliest completion of job j if it were done next, alone;
-  //   w_j  the time job j's remaining stops take at least: their handovers, plus the travel into
-  //        each place still to visit, charged to the first job with a stop there (none for the
-  //        place the courier stands at): from the nearest place the courier can come from (where
-  //        it is, or another place still to visit). Distinct places need distinct legs, so the
-  //        sum of w over any k jobs bounds the time those k take;
-  //   c_k  a lower bound on the k-th smallest completion: max(e_(k), t + the k smallest w_j
-  //        (those k jobs' stops are all done by then), c_(k-1) + the shortest delivery handover);
-  //   late jobs >= max(#{e_j > d_j}, jobs that cannot get an on-time slot among the c_k, matched
-  //        greedily by deadline: slots are prefixes, so greedy is exact);
-  //   lateness >= max(sum max(0, e_j - d_j), sum max(0, c_k - d_(k)) with deadlines sorted: the
-  //        sorted matching minimises a sum of a convex function of c - d);
-  //   completion >= sum (c_k - now).
-  bool lower_bound(const RouteState& s, std::uint32_t picked, std::uint32_t delivered,
-                   Objective& lb) {
-    const SchedulingProblem& p = rs_.problem();
-    lb = s.cost;
-    double* e = earliest_;
-    double* work = handover_;
-    double* due = due_;
-    // Travel into each place still to visit, charged to one stop there (the first, in job
-    // order); the courier comes from its current place or another place still to visit. Nothing
-    // for stops where the courier stands now.
-    std::uint64_t active = 0;
-    const int here = local_[static_cast<std::size_t>(s.loc)];
-    if (masks_ok_) {
-      active |= 1ull << here;
-      for (std::size_t i = 0; i < jobs_.size(); ++i) {
-        if (delivered >> i & 1u) continue;
-        const JobData& d = sim_.job(jobs_[i]);
-        if (!(picked >> i & 1u)) active |= 1ull << local_[static_cast<std::size_t>(d.pick_loc)];
-        active |= 1ull << local_[static_cast<std::size_t>(d.del_loc)];
-      }
-    }
-    std::uint64_t charged = masks_ok_ ? 1ull << here : ~0ull;
-    auto inbound = [&](int loc) {
-      if (!masks_ok_) return 0.0;
-      const int a = local_[static_cast<std::size_t>(loc)];
-      if (charged >> a & 1ull) return 0.0;
-      charged |= 1ull << a;
-      for (const auto& [t, src] : nearest_[static_cast<std::size_t>(a)])
-        if (active >> src & 1ull) return t < kNoRoute ? t : 0.0;
-      return 0.0;
-    };
-    int r = 0;
-    int late_alone = 0;
-    double lateness_alone = 0.0;
-    for (std::size_t i = 0; i < jobs_.size(); ++i) {
-      if (delivered >> i & 1u) continue;
-      const JobData& d = sim_.job(jobs_[i]);
-      double t = s.t;
-      int loc = s.loc;
-      double handovers = d.del_dur;
-      if (!(picked >> i & 1u)) {
-        t = start_within(d.pick_windows, t + sp(loc, d.pick_loc), d.pick_dur) + d.pick_dur;
-        loc = d.pick_loc;
-        handovers += d.pick_dur + inbound(d.pick_loc);
-      }
-      handovers += inbound(d.del_loc);
-      t = start_within(d.del_windows, t + sp(loc, d.del_loc), d.del_dur) + d.del_dur;
-      if (!(t < kNoRoute)) return false;
-      if (t > d.deadline + 1e-9) {
-        ++late_alone;
-        lateness_alone += t - d.deadline;
-      }
-      e[r] = t;
-      work[r] = handovers;
-      ++r;
-    }
-    int q = 0;
-    for (int i : by_deadline_)
-      if (!(delivered >> i & 1u)) due[q++] = sim_.job(jobs_[static_cast<std::size_t>(i)]).deadline;
-    std::sort(e, e + r);
-    std::sort(work, work + r);
-    double previous = -kNoRoute;
-    double busy = s.t;
-    const double gap = sim_.min_delivery_duration();
-    double completion = 0.0, lateness_sorted = 0.0;
-    for (int k = 0; k < r; ++k) {
-      busy += work[k];
-      const double c = std::max({e[k], busy, previous + gap});
-      slot_[k] = c;
-      completion += c - p.now_s;
-      if (c > due[k] + 1e-9) lateness_sorted += c - due[k];
-      previous = c;
-    }
-    // Greedy on-time matching: deadlines ascending, each takes the earliest free slot if on time.
-    int next_slot = 0, on_time = 0;
-    for (int k = 0; k < r; ++k)
-      if (next_slot < r && slot_[next_slot] <= due[k] + 1e-9) ++next_slot, ++on_time;
-    lb.late_jobs += std::max(late_alone, r - on_time);
-    lb.lateness_s += std::max(lateness_alone, lateness_sorted);
-    lb.completion_s += completion;
-    return true;
-  }
-
-  double travel_bound(const RouteState& s, std::uint32_t picked, std::uint32_t delivered) const {
-    double far = 0.0;
-    for (std::size_t i = 0; i < jobs_.size(); ++i) {
-      if (delivered >> i & 1u) continue;
-      const JobData& d = sim_.job(jobs_[i]);
-      far = std::max(far, sp(s.loc, d.del_loc));
-      if (!(picked >> i & 1u)) far = std::max(far, sp(s.loc, d.pick_loc));
-    }
-    return far;
-  }
-
-  // One partial route: its state, which jobs it picked up and delivered, how it got here.
-  struct Entry {
-    RouteState state;
-    std::uint32_t picked = 0;
-    std::uint32_t delivered = 0;
-    int parent = -1;
-    StopRef stop;
-    int next = -1;  // the next label of the same state
-    bool alive = true;
+  // A job of this search by its local index (bit i of the masks).
+  struct LocalJob {
+    int pick_place = -1;  // -1: aboard from the start
+    int del_place = -1;
+    std::uint32_t look_alikes = 0;  // jobs of the same class (itself included)
+    bool blocked_for_good = false;  // a look-alike that is not a job here stays aboard
   };
 
-  // Open addressing from a state (picked, delivered, location) to its chain of labels.
+  // One partial route of the layer being built or expanded (the aboard set is picked minus
+  // delivered, plus base_aboard_).
+  struct Label {
+    Objective cost;
+    double t = 0.0;
+    std::uint32_t picked = 0;
+    std::uint32_t delivered = 0;
+    int loc = -1;
+    int trail = -1;  // its last step in trail_ (-1: the start)
+    int next = -1;   // the next label of the same state in this layer
+    bool visited = false;
+    bool alive = true;
+  };
+  // How a label got there: kept for every label ever made, to rebuild the best route.
+  struct TrailStep {
+    int parent = -1;
+    StopRef stop;
+  };
+
+  // Open addressing from a state (picked, delivered, location) to its chain of labels in the
+  // layer being built. Reset per layer by a new generation, without clearing.
   struct StateTable {
     struct Slot {
       std::uint64_t masks = 0;
       int loc = -1;
       int head = -1;
+      std::uint32_t generation = 0;
     };
     std::vector<Slot> slots = std::vector<Slot>(1u << 10);
     std::size_t used = 0;
+    std::uint32_t generation = 1;
 
+    void reset() { ++generation, used = 0; }
     static std::size_t hash(std::uint64_t masks, int loc) {
       std::uint64_t x = masks ^ (static_cast<std::uint64_t>(loc) * 0x9E3779B97F4A7C15ull);
       x ^= x >> 31;
@@ -250,7 +189,7 @@ class CourierSearch {
       const std::size_t mask = slots.size() - 1;
       for (std::size_t i = hash(masks, loc) & mask;; i = (i + 1) & mask) {
         Slot& s = slots[i];
-        if (s.loc < 0 || (s.masks == masks && s.loc == loc)) return s;
+        if (s.generation != generation || (s.masks == masks && s.loc == loc)) return s;
       }
     }
     Slot& claim(std::uint64_t masks, int loc) {
@@ -258,116 +197,328 @@ class CourierSearch {
         std::vector<Slot> old = std::move(slots);
         slots.assign(old.size() * 2, Slot{});
         for (const Slot& s : old)
-          if (s.loc >= 0) find(s.masks, s.loc) = s;
+          if (s.generation == generation) find(s.masks, s.loc) = s;
       }
       Slot& s = find(masks, loc);
-      if (s.loc < 0) s.masks = masks, s.loc = loc, ++used;
+      if (s.generation != generation) s = {masks, loc, -1, generation}, ++used;
       return s;
     }
   };
 
-  // Breadth first by the number of stops done, so that every label of a state is known before
-  // any of them is expanded: only non-dominated labels are expanded (a depth-first search expands
-  // many that a later label dominates). Each expanded label is bounded against the incumbent.
-  void search() {
-    std::vector<Entry> arena;
-    arena.reserve(1u << 12);
-    Entry root;
-    root.state = start_;
-    root.picked = initially_picked_;
-    arena.push_back(root);
-    std::vector<int> layer{0};
-    int best_parent = -2;  // -2: the incumbent given to run()
-    StopRef best_last;
-    while (!layer.empty() && !stopped_) {
-      StateTable table;
-      std::vector<int> next;
-      for (int index : layer) {
-        if (stopped_) break;
-        if (!arena[static_cast<std::size_t>(index)].alive) continue;
-        if ((++nodes_ & 1023u) == 0 && budget_.exhausted(nodes_ + rs_.work())) {
-          stopped_ = true;
-          break;
+  double sp(int a, int b) const {
+    return shortest_[static_cast<std::size_t>(a) * n_ + static_cast<std::size_t>(b)];
+  }
+  const JobData& data(std::size_t i) const { return sim_.job(jobs_[i]); }
+
+  // False when some job left cannot be finished at all. The bound combines, for the jobs left (r
+  // of them):
+  //   e_j  earliest completion of job j if it were done next, alone;
+  //   w_j  the time job j's remaining stops take at least: their handovers, plus the travel into
+  //        their places. Every place still to visit needs one leg in at least, from the nearest
+  //        place the courier can come from (where it is, or another place still to visit;
+  //        nothing for the place it stands at). That leg is charged in two ways, each a valid
+  //        w: all of it to the first job with a stop there (in job order), or shared equally by
+  //        the stops there. Any k jobs touch their places, so the sum of their w (either way)
+  //        is at most the time those k take;
+  //   c_k  a lower bound on the k-th smallest completion: max(e_(k), t + the larger of the two
+  //        sums of the k smallest w_j, c_(k-1) + the shortest delivery handover);
+  //   late jobs >= max(#{e_j > d_j}, jobs that cannot get an on-time slot among the c_k, matched
+  //        greedily by deadline: slots are prefixes, so greedy is exact);
+  //   lateness >= max(sum max(0, e_j - d_j), sum max(0, c_k - d_(k)) with deadlines sorted: the
+  //        sorted matching minimises a sum of a convex function of c - d);
+  //   completion >= sum (c_k - now).
+  bool lower_bound(const Label& s, Objective& lb) {
+    lb = s.cost;
+    const int here = local_[static_cast<std::size_t>(s.loc)];
+    std::uint64_t active = 0;
+    if (masks_ok_) {
+      active = 1ull << here;
+      for (std::size_t i = 0; i < jobs_.size(); ++i) {
+        if (s.delivered >> i & 1u) continue;
+        const LocalJob& lj = local_jobs_[i];
+        if (!(s.picked >> i & 1u)) {
+          active |= 1ull << lj.pick_place;
+          ++stops_at_[lj.pick_place];
         }
-        const Entry e = arena[static_cast<std::size_t>(index)];
-        const RouteState& s = e.state;
-        if (!bounded_below_best(s, e.picked, e.delivered)) continue;
-        for (std::size_t i = 0; i < jobs_.size(); ++i) {
-          if (e.delivered >> i & 1u) continue;
-          const int j = jobs_[i];
-          const std::uint32_t bit = 1u << i;
-          const bool deliver = e.picked & bit;
-          if (!deliver && (s.load >= capacity_ || !sim_.may_pick_up(s, j))) continue;
-          Entry child;
-          child.state = s;
-          child.stop = {j, deliver ? StopKind::kDelivery : StopKind::kPickup};
-          if (!sim_.advance(child.state, child.stop)) continue;
-          child.picked = e.picked | (deliver ? 0u : bit);
-          child.delivered = e.delivered | (deliver ? bit : 0u);
-          child.parent = index;
-          if (child.delivered == all_) {
-            if (!found_ || better(child.state.cost, best_)) {
-              best_ = child.state.cost;
-              best_parent = index;
-              best_last = child.stop;
-              found_ = true;
-            }
-            continue;
-          }
-          if (found_ && compare(child.state.cost, best_) >= 0) continue;
-          auto& slot = table.claim(child.picked | static_cast<std::uint64_t>(child.delivered) << 32,
-                                   child.state.loc);
-          bool dominated = false;
-          for (int k = slot.head; k >= 0 && !dominated;
-               k = arena[static_cast<std::size_t>(k)].next) {
-            Entry& other = arena[static_cast<std::size_t>(k)];
-            if (!other.alive) continue;
-            if (other.state.t <= child.state.t + 1e-9 &&
-                compare(other.state.cost, child.state.cost) <= 0)
-              dominated = true;
-            else if (child.state.t <= other.state.t + 1e-9 &&
-                     compare(child.state.cost, other.state.cost) <= 0)
-              other.alive = false;
-          }
-          if (dominated) continue;
-          child.next = slot.head;
-          if (arena.size() >= kMaxLabels) {
-            stopped_ = out_of_memory_ = true;
+        active |= 1ull << lj.del_place;
+        ++stops_at_[lj.del_place];
+      }
+      for (std::uint64_t rest = active; rest; rest &= rest - 1) {
+        const int a = lowest_bit(rest);
+        leg_in_[a] = 0.0;
+        if (a == here) continue;
+        for (const auto& [t, src] : nearest_[static_cast<std::size_t>(a)])
+          if (active >> src & 1ull) {
+            leg_in_[a] = t < kNoRoute ? t : 0.0;
             break;
           }
-          arena.push_back(child);
-          slot.head = static_cast<int>(arena.size() - 1);
-          next.push_back(slot.head);
-        }
       }
-      layer.swap(next);
     }
-    if (best_parent == -2) return;  // nothing better than the incumbent
-    best_route_.clear();
-    best_route_.push_back(best_last);
-    for (int k = best_parent; k > 0; k = arena[static_cast<std::size_t>(k)].parent)
-      best_route_.push_back(arena[static_cast<std::size_t>(k)].stop);
-    std::reverse(best_route_.begin(), best_route_.end());
+    std::uint64_t charged = 1ull << here;
+    auto first_charge = [&](int place) {
+      if (charged >> place & 1ull) return 0.0;
+      charged |= 1ull << place;
+      return leg_in_[place];
+    };
+    auto shared_charge = [&](int place) { return leg_in_[place] / stops_at_[place]; };
+    int r = 0;
+    int late_alone = 0;
+    double lateness_alone = 0.0;
+    for (std::size_t i = 0; i < jobs_.size(); ++i) {
+      if (s.delivered >> i & 1u) continue;
+      const JobData& d = data(i);
+      const LocalJob& lj = local_jobs_[i];
+      double t = s.t;
+      int loc = s.loc;
+      double handovers = d.del_dur;
+      double first = 0.0, shared = 0.0;
+      if (!(s.picked >> i & 1u)) {
+        t = start_within(d.pick_windows, t + sp(loc, d.pick_loc), d.pick_dur) + d.pick_dur;
+        loc = d.pick_loc;
+        handovers += d.pick_dur;
+        if (masks_ok_) first += first_charge(lj.pick_place), shared += shared_charge(lj.pick_place);
+      }
+      if (masks_ok_) first += first_charge(lj.del_place), shared += shared_charge(lj.del_place);
+      t = start_within(d.del_windows, t + sp(loc, d.del_loc), d.del_dur) + d.del_dur;
+      if (!(t < kNoRoute)) {
+        clear_stop_counts(active);
+        return false;
+      }
+      if (t > d.deadline + 1e-9) {
+        ++late_alone;
+        lateness_alone += t - d.deadline;
+      }
+      earliest_[r] = t;
+      work_first_[r] = handovers + first;
+      work_shared_[r] = handovers + shared;
+      ++r;
+    }
+    clear_stop_counts(active);
+    int q = 0;
+    for (int i : by_deadline_)
+      if (!(s.delivered >> i & 1u)) due_[q++] = data(static_cast<std::size_t>(i)).deadline;
+    std::sort(earliest_, earliest_ + r);
+    std::sort(work_first_, work_first_ + r);
+    std::sort(work_shared_, work_shared_ + r);
+    double previous = -kNoRoute;
+    double busy_first = s.t, busy_shared = s.t;
+    const double gap = sim_.min_delivery_duration();
+    const double now = rs_.problem().now_s;
+    double completion = 0.0, lateness_sorted = 0.0;
+    for (int k = 0; k < r; ++k) {
+      busy_first += work_first_[k];
+      busy_shared += work_shared_[k];
+      const double c = std::max({earliest_[k], busy_first, busy_shared, previous + gap});
+      slot_[k] = c;
+      completion += c - now;
+      if (c > due_[k] + 1e-9) lateness_sorted += c - due_[k];
+      previous = c;
+    }
+    // Greedy on-time matching: deadlines ascending, each takes the earliest free slot if on time.
+    int next_slot = 0, on_time = 0;
+    for (int k = 0; k < r; ++k)
+      if (next_slot < r && slot_[next_slot] <= due_[k] + 1e-9) ++next_slot, ++on_time;
+    lb.late_jobs += std::max(late_alone, r - on_time);
+    lb.lateness_s += std::max(lateness_alone, lateness_sorted);
+    lb.completion_s += completion;
+    return true;
+  }
+  void clear_stop_counts(std::uint64_t active) {
+    for (; active; active &= active - 1) stops_at_[lowest_bit(active)] = 0;
+  }
+
+  double travel_bound(const Label& s) const {
+    double far = 0.0;
+    for (std::size_t i = 0; i < jobs_.size(); ++i) {
+      if (s.delivered >> i & 1u) continue;
+      const JobData& d = data(i);
+      far = std::max(far, sp(s.loc, d.del_loc));
+      if (!(s.picked >> i & 1u)) far = std::max(far, sp(s.loc, d.pick_loc));
+    }
+    return far;
   }
 
   // False when the bound says no completion of this partial route beats the incumbent.
-  bool bounded_below_best(const RouteState& s, std::uint32_t picked, std::uint32_t delivered) {
+  bool bounded_below_best(const Label& s) {
     Objective lb;
-    if (!lower_bound(s, picked, delivered, lb)) return false;
+    if (!lower_bound(s, lb)) return false;
     if (!found_) return true;
     if (compare(lb, best_) >= 0) return false;
     if (lb.late_jobs == best_.late_jobs && std::abs(lb.lateness_s - best_.lateness_s) < 1e-6 &&
         std::abs(lb.completion_s - best_.completion_s) < 1e-6) {
-      lb.travel_s += travel_bound(s, picked, delivered);
+      lb.travel_s += travel_bound(s);
       if (compare(lb, best_) >= 0) return false;
     }
     return true;
   }
 
+  // Two labels of one state (same jobs picked up and delivered, same place) face the same
+  // choices. Started at `early`, the rest of any route is no worse than started at `late` >=
+  // early, since every cost term is non-decreasing in the start time. The converse holds up to a
+  // penalty when nothing left can jump: if every handover left falls in the same presence window
+  // whether started at early or late, each later finish is at most late - early later, so the
+  // late label ends at most (late - early) x (jobs left) worse in completion and, for the jobs
+  // whose deadline could pass, one more late job and late - early more lateness each. Returns
+  // false when a window could be missed (no penalty bounds it).
+  bool delay_penalty(const Label& s, double early, double late, Objective& penalty) {
+    // Latest any handover left can finish: from `late`, every leg at its longest, no waiting
+    // after the latest window opening used.
+    double span = 0.0;
+    double waits_until = late;
+    int windowed = 0;
+    auto visit = [&](int place, double dur, const std::vector<TimeWindow>* windows) {
+      span += longest_leg_in_[static_cast<std::size_t>(place)] + dur;
+      if (!windows) return true;
+      for (const TimeWindow& w : *windows)
+        if (std::max(early, w.start_s) + dur <= w.end_s) {
+          waits_until = std::max(waits_until, w.start_s);
+          window_start_[windowed] = w.start_s;
+          latest_start_[windowed++] = w.end_s - dur;
+          return true;
+        }
+      return false;
+    };
+    int left = 0;
+    for (std::size_t i = 0; i < jobs_.size(); ++i) {
+      if (s.delivered >> i & 1u) continue;
+      const JobData& d = data(i);
+      const LocalJob& lj = local_jobs_[i];
+      if (!(s.picked >> i & 1u) && !visit(lj.pick_place, d.pick_dur, d.pick_windows)) return false;
+      if (!visit(lj.del_place, d.del_dur, d.del_windows)) return false;
+      ++left;
+    }
+    const double latest_finish = waits_until + span;
+    for (int k = 0; k < windowed; ++k)
+      if (std::max(latest_finish, window_start_[k]) > latest_start_[k]) return false;
+    const double delay = late - early;
+    penalty = Objective{};
+    penalty.completion_s = delay * left;
+    for (std::size_t i = 0; i < jobs_.size(); ++i)
+      if (!(s.delivered >> i & 1u) && data(i).deadline < latest_finish) {
+        ++penalty.late_jobs;
+        penalty.lateness_s += delay;
+      }
+    return true;
+  }
+
+  // `a` is no worse than `b` (same state) for every way to finish the route.
+  bool dominates(const Label& a, const Label& b) {
+    const int by_cost = compare(a.cost, b.cost);
+    if (a.t <= b.t + 1e-9) return by_cost <= 0;
+    if (by_cost >= 0) return false;
+    Objective penalty;
+    return delay_penalty(a, b.t, a.t, penalty) && compare(a.cost + penalty, b.cost) <= 0;
+  }
+
+  RouteState route_state(const Label& label) const {
+    RouteState s;
+    s.t = label.t;
+    s.loc = label.loc;
+    s.visited = label.visited;
+    s.cost = label.cost;
+    for (int j : base_aboard_) s.aboard[static_cast<std::size_t>(s.load++)] = j;
+    for (std::uint32_t rest = label.picked & ~label.delivered; rest; rest &= rest - 1)
+      s.aboard[static_cast<std::size_t>(s.load++)] = jobs_[static_cast<std::size_t>(lowest_bit(rest))];
+    return s;
+  }
+
+  // Adds a child to the layer being built unless a label of its state dominates it or the bound
+  // cuts it; drops the labels of its state it dominates.
+  void add_label(const Label& child, const StopRef& stop, int parent_trail) {
+    auto& slot = states_.claim(child.picked | static_cast<std::uint64_t>(child.delivered) << 32,
+                               child.loc);
+    for (int k = slot.head; k >= 0; k = next_[static_cast<std::size_t>(k)].next) {
+      Label& other = next_[static_cast<std::size_t>(k)];
+      if (!other.alive) continue;
+      if (dominates(other, child)) return;
+      // A label the child dominates cannot beat the child's best completion; dropping it is
+      // right even when the bound then cuts the child.
+      if (dominates(child, other)) other.alive = false;
+    }
+    if (!bounded_below_best(child)) return;
+    if (trail_.size() >= kMaxLabels) {
+      stopped_ = out_of_memory_ = true;
+      return;
+    }
+    trail_.push_back({parent_trail, stop});
+    Label kept = child;
+    kept.trail = static_cast<int>(trail_.size() - 1);
+    kept.next = slot.head;
+    next_.push_back(kept);
+    slot.head = static_cast<int>(next_.size() - 1);
+  }
+
+  // Breadth first by the number of stops done, so that every label of a state is known before
+  // any of them is expanded: only non-dominated labels are expanded (a depth-first search expands
+  // many that a later label dominates). Children are bounded against the incumbent when made;
+  // it only improves in the last layer (every complete route has the same number of stops), so
+  // a label bounded then is still worth expanding.
+  void search() {
+    Label root;
+    root.cost = start_.cost;
+    root.t = start_.t;
+    root.loc = start_.loc;
+    root.visited = start_.visited;
+    root.picked = initially_picked_;
+    current_.assign(1, root);
+    int best_trail = -2;  // -2: the incumbent given to run()
+    StopRef best_last;
+    const int base_load = static_cast<int>(base_aboard_.size());
+    while (!current_.empty() && !stopped_) {
+      states_.reset();
+      next_.clear();
+      for (std::size_t index = 0; index < current_.size() && !stopped_; ++index) {
+        const Label e = current_[index];
+        if (!e.alive) continue;
+        if ((++nodes_ & 1023u) == 0 && budget_.exhausted(nodes_ + rs_.work())) {
+          stopped_ = true;
+          break;
+        }
+        const RouteState s = route_state(e);
+        const std::uint32_t aboard = e.picked & ~e.delivered;
+        const bool full = base_load + bit_count(aboard) >= capacity_;
+        for (std::size_t i = 0; i < jobs_.size() && !stopped_; ++i) {
+          const std::uint32_t bit = 1u << i;
+          if (e.delivered & bit) continue;
+          const bool deliver = e.picked & bit;
+          const LocalJob& lj = local_jobs_[i];
+          if (!deliver && (full || lj.blocked_for_good || (lj.look_alikes & aboard))) continue;
+          const StopRef stop{jobs_[i], deliver ? StopKind::kDelivery : StopKind::kPickup};
+          RouteState after = s;
+          if (!sim_.advance(after, stop)) continue;
+          Label child;
+          child.cost = after.cost;
+          child.t = after.t;
+          child.loc = after.loc;
+          child.visited = true;
+          child.picked = e.picked | (deliver ? 0u : bit);
+          child.delivered = e.delivered | (deliver ? bit : 0u);
+          if (child.delivered == all_) {
+            if (!found_ || better(child.cost, best_)) {
+              best_ = child.cost;
+              best_trail = e.trail;
+              best_last = stop;
+              found_ = true;
+            }
+            continue;
+          }
+          if (found_ && compare(child.cost, best_) >= 0) continue;
+          add_label(child, stop, e.trail);
+        }
+      }
+      current_.swap(next_);
+    }
+    if (best_trail == -2) return;  // nothing better than the incumbent
+    best_route_.clear();
+    best_route_.push_back(best_last);
+    for (int k = best_trail; k >= 0; k = trail_[static_cast<std::size_t>(k)].parent)
+      best_route_.push_back(trail_[static_cast<std::size_t>(k)].stop);
+    std::reverse(best_route_.begin(), best_route_.end());
+  }
+
   RouteSearch& rs_;
   const RouteSimulator& sim_;
   const std::vector<double>& shortest_;
-  int courier_;
   std::vector<int> jobs_;
   RouteState start_;
   const SearchBudget& budget_;
@@ -375,15 +526,28 @@ class CourierSearch {
   int capacity_;
   std::uint32_t initially_picked_ = 0;
   std::uint32_t all_ = 0;
-  double earliest_[kMaxJobsPerCourier + 2] = {};
-  double handover_[kMaxJobsPerCourier + 2] = {};
+  std::vector<int> base_aboard_;
+  LocalJob local_jobs_[kMaxJobsPerCourier] = {};
   std::vector<int> local_;   // location -> place id, -1 if not a place of this search
   std::vector<int> places_;  // place id -> location
   std::vector<std::vector<std::pair<double, int>>> nearest_;
+  std::vector<double> longest_leg_in_;
   bool masks_ok_ = true;  // at most 64 places (else no travel is charged)
   std::vector<int> by_deadline_;
-  double due_[kMaxJobsPerCourier + 2] = {};
-  double slot_[kMaxJobsPerCourier + 2] = {};
+  // Scratch of lower_bound and delay_penalty (no allocation per label).
+  double earliest_[kMaxJobsPerCourier] = {};
+  double work_first_[kMaxJobsPerCourier] = {};
+  double work_shared_[kMaxJobsPerCourier] = {};
+  double due_[kMaxJobsPerCourier] = {};
+  double slot_[kMaxJobsPerCourier] = {};
+  int stops_at_[64] = {};
+  double leg_in_[64] = {};
+  double window_start_[2 * kMaxJobsPerCourier] = {};
+  double latest_start_[2 * kMaxJobsPerCourier] = {};
+  // The layers, the state table of the layer being built and every label's last step.
+  std::vector<Label> current_, next_;
+  StateTable states_;
+  std::vector<TrailStep> trail_;
   std::vector<StopRef> best_route_;
   Objective best_;
   bool found_ = false;
@@ -459,7 +623,7 @@ class ExactEngine final : public SchedulerEngine {
         return memo[{c, subset}] = solved;
       }
       std::sort(jobs.begin(), jobs.end());
-      CourierSearch search(rs, shortest, static_cast<int>(c), jobs, starts[c], budget);
+      CourierSearch search(rs, shortest, jobs, starts[c], problem.couriers[c].capacity, budget);
       // The heuristic's route is an incumbent when it does exactly these jobs.
       std::vector<StopRef> tail;
       bool use_heuristic = false;
@@ -475,7 +639,7 @@ class ExactEngine final : public SchedulerEngine {
       const bool finished = search.run(use_heuristic ? heuristic_costs[c] : worst_objective(),
                                        use_heuristic ? &tail : nullptr);
       complete = complete && finished;
-      if (search.out_of_memory()) why = "more than 2^19 partial routes to keep";
+      if (search.out_of_memory()) why = "more than 2^20 partial routes to keep";
       nodes += search.nodes();
       solved.feasible = search.found();
       solved.cost = search.best();
