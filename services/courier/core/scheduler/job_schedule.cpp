@@ -20,7 +20,15 @@ Objective worst_objective() {
 }
 
 const char* to_string(UnschedulableReason r) {
-  return r == UnschedulableReason::kUnreachable ? "unreachable" : "nobody_present";
+  switch (r) {
+    case UnschedulableReason::kUnreachable:
+      return "unreachable";
+    case UnschedulableReason::kNobodyPresent:
+      return "nobody_present";
+    case UnschedulableReason::kClash:
+      return "clash";
+  }
+  return "?";
 }
 
 const char* to_string(ScheduleStatus s) {

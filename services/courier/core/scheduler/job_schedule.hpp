@@ -80,7 +80,9 @@ struct RoomAssumption {
 
 enum class UnschedulableReason : std::uint8_t {
   kUnreachable,    // pickup or delivery cannot be reached (+inf travel)
-  kNobodyPresent,  // the person is never present again long enough for the handover
+  kNobodyPresent,  // the person is not present long enough for the handover at any time a
+                   // courier can be there (never again, or gone before the earliest arrival)
+  kClash,          // doable on its own, not together with the jobs kept before it
 };
 const char* to_string(UnschedulableReason r);
 

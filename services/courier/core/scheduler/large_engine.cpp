@@ -1,6 +1,8 @@
-// The large-scale engine: greedy parallel dispatch (or the previous schedule, repaired), local
-// descent (stop moves, job relocation across couriers), then ruin and recreate until the budget or
-// a number of rounds without improvement. Anytime: the best routes so far are always complete.
+// The large-scale engine: greedy parallel dispatch (or the previous schedule, repaired, or when
+// both fail the order the job selection found: job_selection.hpp), local descent (stop moves, job
+// relocation across couriers), then ruin and recreate until the budget or a number of rounds
+// without improvement. Anytime: the best routes so far are always complete. Never infeasible while
+// a schedule exists: the selection's search is complete, and only its proof says infeasible.
 #include "services/courier/core/scheduler/route_search.hpp"
 
 #include <algorithm>
@@ -71,14 +73,14 @@ class LargeEngine final : public SchedulerEngine {
       return failed_schedule(problem, ScheduleStatus::kInvalidProblem, e, name(), 0);
     RouteSearch search(problem, budget);
     Routes routes;
-    if (!large_search(search, routes, 400))
+    if (!large_search(search, routes, 400)) {
+      const JobSelection& sel = search.selection();
       return failed_schedule(
-          problem, search.stopped() ? ScheduleStatus::kNoSolution : ScheduleStatus::kInfeasible,
-          search.stopped() ? "the budget ran out before a first schedule"
-                           : "no feasible schedule found (greedy dispatch and "
-                             "insertion both failed)",
-          name(), search.work());
-    return finish_schedule(problem, routes, name(), false, search.work());
+          search, sel.proved ? ScheduleStatus::kInfeasible : ScheduleStatus::kNoSolution,
+          sel.reason.empty() ? "no order of the stops satisfies every constraint" : sel.reason,
+          name());
+    }
+    return finish_schedule(search, routes, name(), false);
   }
 };
 
@@ -100,6 +102,10 @@ bool large_search(RouteSearch& search, Routes& routes, int stale_limit) {
       total = prev_total;
       have = true;
     }
+  }
+  if (!have && search.selection().feasible) {
+    start = search.selection().witness;
+    have = search.total_cost(start, costs, total);
   }
   if (!have) return false;
   const int window = window_for(search);

@@ -65,11 +65,20 @@ class PaperEngine final : public SchedulerEngine {
       routes[c] = schedule_courier(search, static_cast<int>(c), assigned[c]);
     std::vector<Objective> costs;
     Objective total;
-    if (!search.total_cost(routes, costs, total))
-      return failed_schedule(problem, ScheduleStatus::kInfeasible,
-                             "SCHEDULE-DELIVERIES left a conflict it cannot remove", name(),
-                             search.work());
-    return finish_schedule(problem, routes, name(), false, search.work());
+    if (search.total_cost(routes, costs, total))
+      return finish_schedule(search, routes, name(), false);
+    // A conflict SCHEDULE-DELIVERIES cannot remove (e.g. presence windows it does not reorder
+    // for): the order the job selection found, when there is one; infeasible only when proved.
+    const JobSelection& sel = search.selection();
+    if (!sel.feasible)
+      return failed_schedule(
+          search, sel.proved ? ScheduleStatus::kInfeasible : ScheduleStatus::kNoSolution,
+          sel.reason.empty() ? "no order of the stops satisfies every constraint" : sel.reason,
+          name());
+    JobSchedule s = finish_schedule(search, sel.witness, name(), false);
+    if (s.ok())
+      s.reason = "SCHEDULE-DELIVERIES left a conflict it cannot remove: the job selection's order";
+    return s;
   }
 
  private:

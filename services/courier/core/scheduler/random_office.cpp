@@ -1,5 +1,6 @@
 #include "services/courier/core/scheduler/random_office.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <string>
@@ -111,6 +112,13 @@ SchedulingProblem random_office(const OfficeSpec& spec) {
     }
     p.jobs.push_back(job);
   }
+  if (spec.tight_presence_percent > 0)
+    for (Person& person : p.people)
+      if (dice.percent(spec.tight_presence_percent))
+        person.presence = {{spec.now_s - 3600.0,
+                            spec.now_s + 10.0 * dice.in(1, std::max(1, spec.tight_max_s / 10))}};
+  for (int k = 0; k < std::min(spec.closed_rooms, spec.rooms); ++k)
+    p.travel.cut_off(static_cast<std::size_t>(dice.in(1, spec.rooms)));
   return p;
 }
 

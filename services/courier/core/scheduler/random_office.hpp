@@ -8,6 +8,11 @@
 // room, at 0.7 m/s, plus 4 s per door passed. People hand over in 15-40 s and are present
 // 08:00-12:00 and 13:00-17:00, some only from 10:00. Jobs move one object (kind x colour, so some
 // look alike) between two random places; a share of them has a deadline.
+//
+// Harder instances (off by default; a spec that leaves them off gives the same instance for a
+// seed as before they existed, their dice are rolled after everything else): people with one
+// short presence window around now (some leave before a courier can get there, some clash with
+// each other), and rooms whose door is closed (TravelMatrix::cut_off of their desk).
 #include "services/courier/core/scheduler/scheduling_problem.hpp"
 
 #include <cstdint>
@@ -24,6 +29,11 @@ struct OfficeSpec {
   int kinds = 2;              // letter, parcel, book, ...
   int colours = 3;            // red, green, blue, ...
   bool presence = true;       // false: everybody always present
+  // Share of people present only in one window [now - 1 h, now + 1..tight_max_s], instead of
+  // their office hours.
+  int tight_presence_percent = 0;
+  int tight_max_s = 600;
+  int closed_rooms = 0;  // rooms cut off at random (their desk; never the mail station)
   double now_s = 9.0 * 3600.0;
   std::uint64_t seed = 1;
 };

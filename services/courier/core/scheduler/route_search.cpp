@@ -25,9 +25,13 @@ constexpr std::size_t kGranularPositions = 10;
 }  // namespace
 
 RouteSearch::RouteSearch(const SchedulingProblem& problem, const SearchBudget& budget)
-    : p_(&problem), budget_(&budget), sim_(problem), rng_(budget.seed) {
+    : p_(&problem),
+      budget_(&budget),
+      sim_(problem),
+      selection_(select_jobs(problem)),
+      rng_(budget.seed) {
   left_out_.assign(problem.jobs.size(), 0);
-  for (const auto& u : find_unschedulable(problem)) left_out_[static_cast<std::size_t>(u.job)] = 1;
+  for (const auto& u : selection_.unschedulable) left_out_[static_cast<std::size_t>(u.job)] = 1;
   // A job whose delivery is in a forced prefix is done by the prefix; one whose pickup only is
   // there is bound to that courier, like a job aboard.
   std::vector<char> in_prefix(problem.jobs.size(), 0);
@@ -433,6 +437,26 @@ JobSchedule finish_schedule(const SchedulingProblem& problem, const Routes& rout
   s.engine = engine;
   s.work = work;
   s.proved_optimal = proved_optimal && s.ok();
+  return s;
+}
+
+JobSchedule finish_schedule(const RouteSearch& search, const Routes& routes, const char* engine,
+                            bool proved_optimal) {
+  JobSchedule s = evaluate_order(search.problem(), routes, search.selection().unschedulable);
+  s.engine = engine;
+  s.work = search.work();
+  s.proved_optimal = proved_optimal && s.ok();
+  return s;
+}
+
+JobSchedule failed_schedule(const RouteSearch& search, ScheduleStatus status, std::string reason,
+                            const char* engine) {
+  JobSchedule s;
+  s.status = status;
+  s.reason = std::move(reason);
+  s.engine = engine;
+  s.work = search.work();
+  s.unschedulable = search.selection().unschedulable;
   return s;
 }
 

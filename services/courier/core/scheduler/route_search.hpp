@@ -2,6 +2,7 @@
 // Internal to the scheduler library: route building blocks shared by the engines. Routes are stop
 // lists per courier (forced prefixes included, never moved); costs come from RouteSimulator. Every
 // simulated stop counts as one unit of work against the SearchBudget.
+#include "services/courier/core/scheduler/job_selection.hpp"
 #include "services/courier/core/scheduler/route_simulation.hpp"
 #include "services/courier/core/scheduler/scheduler_engine.hpp"
 
@@ -28,6 +29,8 @@ class RouteSearch {
   // Jobs to schedule (not unschedulable, not in a forced prefix), in job order.
   const std::vector<int>& free_jobs() const { return free_jobs_; }
   const std::vector<char>& left_out() const { return left_out_; }
+  // The jobs left out (find_unschedulable's answer) and an order doing all the others.
+  const JobSelection& selection() const { return selection_; }
 
   // Rules (capacity, look-alike, aboard) + timing of one stop.
   bool step(int courier, RouteState& s, StopRef stop);
@@ -81,6 +84,7 @@ class RouteSearch {
   const SchedulingProblem* p_;
   const SearchBudget* budget_;
   RouteSimulator sim_;
+  JobSelection selection_;
   std::vector<int> fixed_;
   std::vector<int> stuck_;  // per courier: unschedulable objects aboard (they stay aboard)
   std::vector<int> free_jobs_;
@@ -94,17 +98,24 @@ class RouteSearch {
 };
 
 // The JobSchedule of routes an engine found (evaluate_order, then the engine's name and effort).
+// Given the search, its selection is not computed again.
 JobSchedule finish_schedule(const SchedulingProblem& problem, const Routes& routes,
                             const char* engine, bool proved_optimal, std::uint64_t work);
+JobSchedule finish_schedule(const RouteSearch& search, const Routes& routes, const char* engine,
+                            bool proved_optimal);
 // A JobSchedule for a problem that cannot be scheduled at all.
 JobSchedule failed_schedule(const SchedulingProblem& problem, ScheduleStatus status,
                             std::string reason, const char* engine, std::uint64_t work);
+JobSchedule failed_schedule(const RouteSearch& search, ScheduleStatus status, std::string reason,
+                            const char* engine);
 
 std::unique_ptr<SchedulerEngine> make_exact_engine();
 std::unique_ptr<SchedulerEngine> make_large_engine();
 std::unique_ptr<SchedulerEngine> make_paper_engine();
 
-// The large engine's search, for engines that want a good first incumbent.
+// The large engine's search, for engines that want a good first incumbent. Starts from greedy
+// dispatch, the repaired previous order or, when both fail, the selection's order; false only when
+// the selection found no order (the forced prefixes cannot be done).
 bool large_search(RouteSearch& search, Routes& routes, int stale_limit);
 
 }  // namespace autonomy::courier::scheduling::detail

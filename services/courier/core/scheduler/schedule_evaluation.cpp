@@ -1,21 +1,14 @@
 #include "services/courier/core/scheduler/schedule_evaluation.hpp"
 
+#include "services/courier/core/scheduler/job_selection.hpp"
 #include "services/courier/core/scheduler/route_simulation.hpp"
 
 #include <string>
+#include <utility>
 
 namespace autonomy::courier::scheduling {
 
 namespace {
-
-bool reachable(const SchedulingProblem& p, int from, int to) {
-  return p.travel.at(static_cast<std::size_t>(from), static_cast<std::size_t>(to)) < kNoRoute;
-}
-
-// The person is present again (at or after now) long enough for one handover.
-bool present_again(const SchedulingProblem& p, const Place& place) {
-  return earliest_handover_start(p, place.person, p.now_s, handover_duration(p, place)) < kNoRoute;
-}
 
 std::string stop_label(const SchedulingProblem& p, std::size_t courier, std::size_t index,
                        StopRef stop) {
@@ -29,53 +22,18 @@ std::string stop_label(const SchedulingProblem& p, std::size_t courier, std::siz
 }  // namespace
 
 std::vector<UnschedulableJob> find_unschedulable(const SchedulingProblem& p) {
-  std::vector<UnschedulableJob> out;
-  for (std::size_t j = 0; j < p.jobs.size(); ++j) {
-    const Job& job = p.jobs[j];
-    const int ji = static_cast<int>(j);
-    const std::string& del_name = p.locations[static_cast<std::size_t>(job.delivery.location)].name;
-    if (job.status == JobStatus::kAboard) {
-      const Courier& c = p.couriers[static_cast<std::size_t>(job.aboard_courier)];
-      if (!reachable(p, c.location, job.delivery.location)) {
-        out.push_back({ji, UnschedulableReason::kUnreachable,
-                       "delivery " + del_name + " cannot be reached from courier '" + c.id +
-                           "' at " + p.locations[static_cast<std::size_t>(c.location)].name});
-        continue;
-      }
-    } else {
-      const std::string& pick_name =
-          p.locations[static_cast<std::size_t>(job.pickup.location)].name;
-      bool any = false;
-      for (const Courier& c : p.couriers)
-        if (reachable(p, c.location, job.pickup.location) &&
-            reachable(p, job.pickup.location, job.delivery.location))
-          any = true;
-      if (!any) {
-        std::string detail;
-        bool pickup_reached = false;
-        for (const Courier& c : p.couriers)
-          pickup_reached = pickup_reached || reachable(p, c.location, job.pickup.location);
-        detail = pickup_reached
-                     ? "delivery " + del_name + " cannot be reached from pickup " + pick_name
-                     : "pickup " + pick_name + " cannot be reached by any courier";
-        out.push_back({ji, UnschedulableReason::kUnreachable, detail});
-        continue;
-      }
-      if (!present_again(p, job.pickup)) {
-        out.push_back({ji, UnschedulableReason::kNobodyPresent,
-                       describe_place(p, job.pickup) + " is not present again for the pickup"});
-        continue;
-      }
-    }
-    if (!present_again(p, job.delivery))
-      out.push_back({ji, UnschedulableReason::kNobodyPresent,
-                     describe_place(p, job.delivery) + " is not present again for the delivery"});
-  }
-  return out;
+  return detail::select_jobs(p).unschedulable;
 }
 
 JobSchedule evaluate_order(const SchedulingProblem& p,
                            const std::vector<std::vector<StopRef>>& order) {
+  if (!problem_error(p).empty()) return evaluate_order(p, order, {});
+  return evaluate_order(p, order, find_unschedulable(p));
+}
+
+JobSchedule evaluate_order(const SchedulingProblem& p,
+                           const std::vector<std::vector<StopRef>>& order,
+                           std::vector<UnschedulableJob> unschedulable) {
   JobSchedule out;
   out.engine = "evaluate";
   if (std::string e = problem_error(p); !e.empty()) {
@@ -83,7 +41,7 @@ JobSchedule evaluate_order(const SchedulingProblem& p,
     out.reason = std::move(e);
     return out;
   }
-  out.unschedulable = find_unschedulable(p);
+  out.unschedulable = std::move(unschedulable);
   out.status = ScheduleStatus::kInfeasible;
   if (order.size() != p.couriers.size()) {
     out.reason = "the order has " + std::to_string(order.size()) + " routes for " +

@@ -8,10 +8,14 @@
 
 namespace autonomy::courier::scheduling {
 
-// Jobs no schedule can contain, in job order: pickup or delivery unreachable from every courier
-// that could do the job (+inf travel; a job aboard can only be done by its courier), or a person
-// who is never present again long enough for the handover. Necessary conditions only: a problem
-// without such jobs may still be infeasible (engines then say kInfeasible).
+// The jobs every schedule leaves out, in job order, by the rule in docs/courier-scheduling.md
+// ("Jobs left out"): unreachable; nobody present again; missed even on its own (the person leaves
+// before any courier that may do the job can get there, from where it stands after its forced
+// prefix); and, when the others cannot all be done together, each job that cannot be done with
+// the jobs admitted before it (objects aboard first, then job order). Jobs with a stop in a forced
+// prefix are only left out for the first two reasons. Depends on the problem only (a fixed search
+// limit, no budget, no clock): every engine and evaluate_order leave out the same jobs. When even
+// the forced prefixes cannot be done, engines say kInfeasible.
 std::vector<UnschedulableJob> find_unschedulable(const SchedulingProblem& problem);
 
 // The schedule of `order` (one stop list per courier, forced prefixes included). Feasible when:
@@ -22,5 +26,9 @@ std::vector<UnschedulableJob> find_unschedulable(const SchedulingProblem& proble
 // status kInfeasible and the reason names the courier, the stop index and the broken rule.
 JobSchedule evaluate_order(const SchedulingProblem& problem,
                            const std::vector<std::vector<StopRef>>& order);
+// The same with the jobs left out already known (find_unschedulable(problem)'s answer): no search.
+JobSchedule evaluate_order(const SchedulingProblem& problem,
+                           const std::vector<std::vector<StopRef>>& order,
+                           std::vector<UnschedulableJob> unschedulable);
 
 }  // namespace autonomy::courier::scheduling

@@ -30,11 +30,15 @@ OpportunityCheck check_opportunity(const SchedulingProblem& problem, int courier
     out.keeps_deadlines = out.with_detour.ok();
     return out;
   }
+  // Every job on time without the detour is scheduled and on time with it (the detour may make
+  // a job clash with it: left out, it is not kept either).
   out.keeps_deadlines = true;
   for (const JobOutcome& before : out.without_detour.outcomes) {
     if (before.late) continue;
+    bool on_time = false;
     for (const JobOutcome& after : out.with_detour.outcomes)
-      if (after.job == before.job && after.late) out.keeps_deadlines = false;
+      if (after.job == before.job) on_time = !after.late;
+    if (!on_time) out.keeps_deadlines = false;
   }
   return out;
 }

@@ -98,12 +98,14 @@ TEST(EvaluateOrder, WaitsForPresenceAndRefusesOutsideIt) {
   EXPECT_DOUBLE_EQ(s.routes[0].stops[1].arrival_s, 36035.0);
   EXPECT_DOUBLE_EQ(s.routes[0].stops[1].handover_start_s, 36100.0);
   EXPECT_DOUBLE_EQ(s.routes[0].stops[1].finish_s, 36130.0);
-  // The window closes before a 30 s handover fits: nobody to hand over to.
-  p.people[0].presence = {{36000.0, 36050.0}};
-  s = evaluate_order(p, {{P(0), D(0)}});
+  // Another job first: the window closes before a 30 s handover fits, nobody to hand over to.
+  p.people[0].presence = {{36000.0, 36070.0}};
+  p.jobs.push_back(job("j2", 0, 1, "green"));
+  s = evaluate_order(p, {{P(1), D(1), P(0), D(0)}});
   EXPECT_EQ(s.status, ScheduleStatus::kInfeasible);
   EXPECT_NE(s.reason.find("no presence window fits at Michael at A-120 desk"), std::string::npos)
       << s.reason;
+  EXPECT_TRUE(evaluate_order(p, {{P(0), D(0), P(1), D(1)}}).ok());
   // Michael left for the day: the job is unschedulable.
   p.people[0].presence = {{30000.0, 35000.0}};
   const auto left = find_unschedulable(p);
@@ -134,14 +136,15 @@ TEST(FindUnschedulable, ClosedDoorCutsOffTheDeliveryButTheObjectStaysAboard) {
   p.jobs[0].aboard_courier = 0;
   p.travel.cut_off(2);  // A-120 closed
   const auto left = find_unschedulable(p);
-  ASSERT_EQ(left.size(), 1u);
+  ASSERT_EQ(left.size(), 2u);
   EXPECT_EQ(left[0].job, 0);
   EXPECT_EQ(left[0].reason, UnschedulableReason::kUnreachable);
   EXPECT_NE(left[0].detail.find("A-120 desk"), std::string::npos);
-  // The red letter stays aboard, so the second red letter cannot be loaded.
-  const JobSchedule s = evaluate_order(p, {{P(1), D(1)}});
-  EXPECT_EQ(s.status, ScheduleStatus::kInfeasible);
-  EXPECT_NE(s.reason.find("look-alike"), std::string::npos) << s.reason;
+  // The red letter stays aboard, so the second red letter cannot be loaded: left out too.
+  EXPECT_EQ(left[1].job, 1);
+  EXPECT_EQ(left[1].reason, UnschedulableReason::kClash);
+  EXPECT_NE(left[1].detail.find("stay aboard"), std::string::npos) << left[1].detail;
+  EXPECT_TRUE(evaluate_order(p, {{}}).ok());
   p.jobs[1].object.colour = "green";
   const JobSchedule ok = evaluate_order(p, {{P(1), D(1)}});
   ASSERT_TRUE(ok.ok()) << ok.reason;
