@@ -418,24 +418,23 @@ class CourierSearch {
     s.cost = label.cost;
     for (int j : base_aboard_) s.aboard[static_cast<std::size_t>(s.load++)] = j;
     for (std::uint32_t rest = label.picked & ~label.delivered; rest; rest &= rest - 1)
-      s.aboard[static_cast<std::size_t>(s.load++)] = jobs_[static_cast<std::size_t>(lowest_bit(rest))];
+      s.aboard[static_cast<std::size_t>(s.load++)] =
+          jobs_[static_cast<std::size_t>(lowest_bit(rest))];
     return s;
   }
 
-  // Adds a child to the layer being built unless a label of its state dominates it or the bound
-  // cuts it; drops the labels of its state it dominates.
+  // Adds a child to the layer being built unless a label of its state dominates it; drops the
+  // labels of its state it dominates. The bound waits for the expansion: most children are
+  // dominated by a sibling made later, and bounding them all cost more than it saved (measured).
   void add_label(const Label& child, const StopRef& stop, int parent_trail) {
-    auto& slot = states_.claim(child.picked | static_cast<std::uint64_t>(child.delivered) << 32,
-                               child.loc);
+    auto& slot =
+        states_.claim(child.picked | static_cast<std::uint64_t>(child.delivered) << 32, child.loc);
     for (int k = slot.head; k >= 0; k = next_[static_cast<std::size_t>(k)].next) {
       Label& other = next_[static_cast<std::size_t>(k)];
       if (!other.alive) continue;
       if (dominates(other, child)) return;
-      // A label the child dominates cannot beat the child's best completion; dropping it is
-      // right even when the bound then cuts the child.
       if (dominates(child, other)) other.alive = false;
     }
-    if (!bounded_below_best(child)) return;
     if (trail_.size() >= kMaxLabels) {
       stopped_ = out_of_memory_ = true;
       return;
@@ -450,9 +449,7 @@ class CourierSearch {
 
   // Breadth first by the number of stops done, so that every label of a state is known before
   // any of them is expanded: only non-dominated labels are expanded (a depth-first search expands
-  // many that a later label dominates). Children are bounded against the incumbent when made;
-  // it only improves in the last layer (every complete route has the same number of stops), so
-  // a label bounded then is still worth expanding.
+  // many that a later label dominates), each bounded against the incumbent first.
   void search() {
     Label root;
     root.cost = start_.cost;
@@ -470,6 +467,7 @@ class CourierSearch {
       for (std::size_t index = 0; index < current_.size() && !stopped_; ++index) {
         const Label e = current_[index];
         if (!e.alive) continue;
+        if (!bounded_below_best(e)) continue;
         if ((++nodes_ & 1023u) == 0 && budget_.exhausted(nodes_ + rs_.work())) {
           stopped_ = true;
           break;
