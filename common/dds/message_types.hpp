@@ -97,6 +97,7 @@ AUTONOMY_DDS_TYPE(msg::SpacecraftCommandStatus, autonomy_SpacecraftCommandStatus
 AUTONOMY_DDS_TYPE(msg::SpacecraftTelemetry, autonomy_SpacecraftTelemetry)
 AUTONOMY_DDS_TYPE(msg::SpacecraftFaultInjection, autonomy_SpacecraftFaultInjection)
 AUTONOMY_DDS_TYPE(msg::SpacecraftFaultState, autonomy_SpacecraftFaultState)
+AUTONOMY_DDS_TYPE(msg::SpacecraftEvent, autonomy_SpacecraftEvent)
 // The planner: requests, replies, progress, cancellation, the latest plan per requester.
 AUTONOMY_DDS_TYPE(msg::PlanningRequest, autonomy_PlanningRequest)
 AUTONOMY_DDS_TYPE(msg::PlanningReply, autonomy_PlanningReply)

@@ -10,6 +10,7 @@ const char* to_string(QosClass c) {
     case QosClass::Event: return "event";
     case QosClass::Request: return "request";
     case QosClass::Reply: return "reply";
+    case QosClass::Queue: return "queue";
   }
   return "?";
 }
@@ -44,6 +45,11 @@ Qos make_qos(QosClass c) {
       dds_qset_reliability(q.get(), DDS_RELIABILITY_RELIABLE, max_blocking);
       dds_qset_durability(q.get(), DDS_DURABILITY_VOLATILE);
       dds_qset_history(q.get(), DDS_HISTORY_KEEP_LAST, 64);
+      break;
+    case QosClass::Queue:
+      dds_qset_reliability(q.get(), DDS_RELIABILITY_RELIABLE, max_blocking);
+      dds_qset_durability(q.get(), DDS_DURABILITY_VOLATILE);
+      dds_qset_history(q.get(), DDS_HISTORY_KEEP_ALL, 0);
       break;
   }
   return q;

@@ -15,6 +15,8 @@ enum class QosClass {
   Event,    // reliable, volatile, keep-last 256: occurrences, counted by their readers
   Request,  // reliable, volatile, keep-last 64: the asking half of request/reply
   Reply,    // reliable, volatile, keep-last 64: the answering half, correlated by request id
+  Queue,    // reliable, volatile, keep-all: nothing dropped; a writer whose readers fall behind
+            // blocks (up to the blocking time) and then fails its write, so the loss is seen
 };
 
 const char* to_string(QosClass c);

@@ -54,15 +54,16 @@ inline constexpr TopicSpec<msg::CourierSchedule> courier_schedule{"autonomy/cour
 inline constexpr TopicSpec<msg::CourierReport> courier_report{"autonomy/courier/report", QosClass::Event};
 // The spacecraft (docs/spacecraft.md): device commands and their status, telemetry, faults.
 inline constexpr TopicSpec<msg::SpacecraftCommand> spacecraft_command{"autonomy/spacecraft/command",
-                                                                      QosClass::Command};
+                                                                      QosClass::Queue};
 inline constexpr TopicSpec<msg::SpacecraftCommandStatus> spacecraft_command_status{
-    "autonomy/spacecraft/command_status", QosClass::Reply};
+    "autonomy/spacecraft/command_status", QosClass::Queue};
 inline constexpr TopicSpec<msg::SpacecraftTelemetry> spacecraft_telemetry{"autonomy/spacecraft/telemetry",
                                                                           QosClass::State};
 inline constexpr TopicSpec<msg::SpacecraftFaultInjection> spacecraft_fault_injection{
     "autonomy/spacecraft/fault_injection", QosClass::Command};
 inline constexpr TopicSpec<msg::SpacecraftFaultState> truth_spacecraft_fault{"autonomy/truth/spacecraft_fault",
                                                                              QosClass::State};
+inline constexpr TopicSpec<msg::SpacecraftEvent> spacecraft_event{"autonomy/spacecraft/event", QosClass::Event};
 // The planner: requests in, one reply each, progress of long searches, cancels, latest plans.
 inline constexpr TopicSpec<msg::PlanningRequest> planner_request{"autonomy/planner/request", QosClass::Request};
 inline constexpr TopicSpec<msg::PlanningReply> planner_reply{"autonomy/planner/reply", QosClass::Reply};
@@ -113,6 +114,7 @@ void for_each_topic(Visitor&& visit) {
   visit(spacecraft_telemetry);
   visit(spacecraft_fault_injection);
   visit(truth_spacecraft_fault);
+  visit(spacecraft_event);
   visit(planner_request);
   visit(planner_reply);
   visit(planner_progress);

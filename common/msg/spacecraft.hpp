@@ -24,6 +24,7 @@ struct SpacecraftCommandStatus {
   std::string reason;
   int64_t tick = 0;
   int64_t sim_time_ns = 0;
+  bool busy = false;
 };
 
 struct DeviceReport {
@@ -79,6 +80,15 @@ struct StorageTelemetry {
   double capacity_mb = 0.0;
 };
 
+struct FaultProtectionTelemetry {
+  bool safe_mode = false;
+  std::string reason;
+  int64_t safed_at_ns = 0;
+  uint32_t safings = 0;
+  double commander_silent_s = 0.0;
+  double commander_timeout_s = 0.0;
+};
+
 struct SpacecraftTelemetry {
   std::string spacecraft;
   int64_t tick = 0;
@@ -93,6 +103,16 @@ struct SpacecraftTelemetry {
   StorageTelemetry storage;
   uint64_t commands_accepted = 0;
   uint64_t commands_rejected = 0;
+  FaultProtectionTelemetry fault_protection;
+  uint64_t commands_busy = 0;
+};
+
+struct SpacecraftEvent {
+  std::string spacecraft;
+  int64_t tick = 0;
+  int64_t sim_time_ns = 0;
+  std::string kind;
+  std::string detail;
 };
 
 struct SpacecraftFaultInjection {

@@ -37,6 +37,33 @@ TEST(SpacecraftConversionsTest, CommandAndStatusRoundTrip) {
   EXPECT_EQ(sb.reason, "camera is off");
   EXPECT_EQ(sb.tick, 42);
   EXPECT_EQ(sb.sim_time_ns, 7);
+  EXPECT_FALSE(sb.busy);
+  msg::SpacecraftCommandStatus busy = s;
+  busy.busy = true;
+  EXPECT_TRUE(round_trip(busy).busy);
+}
+
+TEST(SpacecraftConversionsTest, FaultProtectionAndEventRoundTrip) {
+  msg::SpacecraftTelemetry t;
+  t.fault_protection = {true, "no command or heartbeat of executive for 600 s", 600'000'000'000,
+                        2, 601.5, 600.0};
+  t.commands_busy = 17;
+  const msg::SpacecraftTelemetry b = round_trip(t);
+  EXPECT_TRUE(b.fault_protection.safe_mode);
+  EXPECT_EQ(b.fault_protection.reason, "no command or heartbeat of executive for 600 s");
+  EXPECT_EQ(b.fault_protection.safed_at_ns, 600'000'000'000);
+  EXPECT_EQ(b.fault_protection.safings, 2u);
+  EXPECT_DOUBLE_EQ(b.fault_protection.commander_silent_s, 601.5);
+  EXPECT_DOUBLE_EQ(b.fault_protection.commander_timeout_s, 600.0);
+  EXPECT_EQ(b.commands_busy, 17u);
+
+  const msg::SpacecraftEvent e{"ds1", 601, 600'000'000'000, "safed", "ips to standby"};
+  const msg::SpacecraftEvent eb = round_trip(e);
+  EXPECT_EQ(eb.spacecraft, "ds1");
+  EXPECT_EQ(eb.tick, 601);
+  EXPECT_EQ(eb.sim_time_ns, 600'000'000'000);
+  EXPECT_EQ(eb.kind, "safed");
+  EXPECT_EQ(eb.detail, "ips to standby");
 }
 
 TEST(SpacecraftConversionsTest, TelemetryRoundTrip) {

@@ -21,6 +21,9 @@ namespace {
 
 constexpr auto kHousekeepingPeriod = std::chrono::milliseconds(10);
 constexpr auto kStatusPeriod = std::chrono::milliseconds(200);
+// Readers of what others send the simulator (commands, acks, requests, team messages) keep all
+// samples: the history kept on this side never drops one (docs/topics.md, "What can drop").
+constexpr auto kInputQos = dds::QosClass::Queue;
 
 msg::RobotState to_msg(const RobotStatus& r, int64_t tick, int64_t sim_time_ns) {
   msg::RobotState s;
@@ -145,12 +148,12 @@ SimulatorNode::SimulatorNode(service::Service& service, Scenario scenario, Simul
       link_writer_(service.participant(), link_topic_),
       team_writer_(service.participant(), team_topic_),
       inbox_writer_(service.participant(), inbox_topic_),
-      cmd_reader_(service.participant(), cmd_topic_),
-      ack_reader_(service.participant(), ack_topic_),
+      cmd_reader_(service.participant(), cmd_topic_, kInputQos),
+      ack_reader_(service.participant(), ack_topic_, kInputQos),
       registration_reader_(service.participant(), registration_topic_),
-      spawn_request_reader_(service.participant(), spawn_request_topic_),
-      door_command_reader_(service.participant(), door_command_topic_),
-      outbox_reader_(service.participant(), outbox_topic_),
+      spawn_request_reader_(service.participant(), spawn_request_topic_, kInputQos),
+      door_command_reader_(service.participant(), door_command_topic_, kInputQos),
+      outbox_reader_(service.participant(), outbox_topic_, kInputQos),
       goal_status_reader_(service.participant(), goal_status_topic_),
       mission_status_reader_(service.participant(), mission_status_topic_),
       handover_request_topic_(service.participant(), dds::topics::handover_request),
@@ -158,7 +161,7 @@ SimulatorNode::SimulatorNode(service::Service& service, Scenario scenario, Simul
       object_truth_topic_(service.participant(), dds::topics::truth_object),
       handover_status_writer_(service.participant(), handover_status_topic_),
       object_truth_writer_(service.participant(), object_truth_topic_),
-      handover_request_reader_(service.participant(), handover_request_topic_) {
+      handover_request_reader_(service.participant(), handover_request_topic_, kInputQos) {
   if (options_.radio_period_ticks < 1) throw std::invalid_argument("radio period must be at least 1 tick");
   delivery_rng_.seed(options_.settings.seed ^ kDeliveryStreamSalt);
   if (!options_.metrics_prefix.empty()) {
@@ -234,6 +237,9 @@ void SimulatorNode::on_commands(std::vector<dds::Sample<msg::VelocityCommand>> s
     msg::VelocityCommand& c = s.value;
     if (auto problem = msg::first_length_problem(
             {{"robot_id", c.robot_id, msg::kMaxNameLength}, {"source", c.source, msg::kMaxNameLength}})) {
+      // Still counted when its source can be a participant: its tick must not wait for it.
+      if (lockstep() && !msg::length_problem("source", c.source, msg::kMaxNameLength))
+        (void)barrier_.on_command(c.source, c.tick);
       reject(c, *problem);
       continue;
     }
@@ -254,6 +260,7 @@ void SimulatorNode::on_acks(std::vector<dds::Sample<msg::TickAck>> samples) {
   if (!lockstep()) return;
   for (const auto& s : samples) {
     if (!s.valid) continue;
+    if (spacecraft_) spacecraft_->on_ack(s.value.participant);  // the commander's sign of life
     if (barrier_.on_ack(s.value.participant, s.value.tick, s.value.commands_sent, s.value.quiet_until_tick) ==
         LockstepBarrier::AckOutcome::Rejoined)
       spdlog::info("participant {} answered again at tick {} and rejoined lockstep", s.value.participant, s.value.tick);

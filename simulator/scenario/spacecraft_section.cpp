@@ -37,6 +37,7 @@ class SectionChecker {
     telecom(f, at.nested("telecom"), spec.telecom);
     storage(f, at.nested("storage"), spec.storage);
     electronics(f, at, spec);
+    fault_protection(f, at, spec);
     if (errors_.size() != before) return std::nullopt;  // faults refer to checked devices
     faults(f, at, spec);
     if (errors_.size() != before) return std::nullopt;
@@ -277,6 +278,27 @@ class SectionChecker {
         unit.devices.push_back(u.devices(k));
       }
       spec.electronics.push_back(std::move(unit));
+    }
+  }
+
+  void fault_protection(const config::Spacecraft& f, const Locator& root, sc::SpacecraftSpec& spec) {
+    const config::FaultProtection& p = f.fault_protection();
+    const Locator at = root.nested("fault_protection");
+    sc::FaultProtectionSpec& out = spec.fault_protection;
+    out.commander_timeout_s =
+        value(p.has_commander_timeout_s(), p.commander_timeout_s(), out.commander_timeout_s,
+              p.commander_timeout_s() >= 0, "fault_protection: commander_timeout_s",
+              ">= 0 (0: off)", at.at("commander_timeout_s"));
+    if (p.has_commander()) {
+      out.commander = p.commander();
+      if (out.commander.empty() || out.commander.size() > 64)
+        error(at.at("commander"), "fault_protection: commander must be a service name of 1..64 "
+                                  "characters");
+    }
+    if (f.has_command_queue_limit()) {
+      spec.command_queue_limit = f.command_queue_limit();
+      if (spec.command_queue_limit < 1)
+        error(root.at("command_queue_limit"), "command_queue_limit must be at least 1 (got 0)");
     }
   }
 

@@ -85,6 +85,12 @@ void Attitude::turn_to(const std::string& target) {
   pointing_.clear();
 }
 
+bool Attitude::hold() {
+  if (!turn_) return false;
+  turn_.reset();  // pointing at no target: the boresight stays where the turn left it
+  return true;
+}
+
 void Attitude::step(double dt_s, const std::set<std::string>& stuck) {
   last_rate_deg_s_ = 0.0;
   if (!turn_) return;

@@ -37,6 +37,8 @@ class Attitude {
   // Starts a turn to `target` (known); a target already within tolerance ends at once.
   void turn_to(const std::string& target);
   void set_mode(const std::string& mode) { mode_ = mode; }
+  // Stops a turn under way where it is (fault protection holds attitude); false when none was.
+  bool hold();
   // Turns by at most the mode's rate times dt (none when the mode is not usable).
   void step(double dt_s, const std::set<std::string>& stuck);
 

@@ -81,7 +81,12 @@ std::optional<FaultKind> fault_kind_from_string(const std::string& text) {
 }
 
 Spacecraft::Spacecraft(SpacecraftSpec spec)
-    : spec_(std::move(spec)), attitude_(spec_.attitude, spec_.targets) {
+    : spec_(std::move(spec)),
+      attitude_(spec_.attitude, spec_.targets),
+      protection_(spec_.fault_protection) {
+  if (!(std::isfinite(spec_.fault_protection.commander_timeout_s) &&
+        spec_.fault_protection.commander_timeout_s >= 0.0))
+    throw std::invalid_argument("spacecraft: commander_timeout_s must be >= 0");
   for (const char* d : kFixedDevices) device_names_.emplace_back(d);
   for (const std::string& t : spec_.attitude.thrusters) device_names_.push_back(t);
   for (const ElectronicsSpec& u : spec_.electronics) device_names_.push_back(u.name);
@@ -235,6 +240,7 @@ std::vector<FaultEvent> Spacecraft::take_fault_events() {
 // --- Commands -----------------------------------------------------------------------------------
 
 CommandResult Spacecraft::submit(const Command& c) {
+  commander_heard("command " + c.id + " from " + c.source);
   if (auto reason = check(c)) {
     ++rejected_;
     return {false, *reason};
@@ -393,9 +399,53 @@ bool Spacecraft::powered(const std::string& device) const {
   return true;
 }
 
+// --- Fault protection ---------------------------------------------------------------------------
+
+void Spacecraft::commander_heard(const std::string& sign) {
+  if (protection_.heard(time_s_))
+    own_events_.push_back({"resumed", "safe mode ended by " + sign, time_s_});
+}
+
+void Spacecraft::enter_safe_mode() {
+  const std::string reason = "no command or heartbeat of " + spec_.fault_protection.commander +
+                             " for " + number(spec_.fault_protection.commander_timeout_s) + " s";
+  std::vector<std::string> done;
+  if (thrust_level_ > 0) {
+    if (active(FaultKind::StuckOn, "ips")) {
+      done.emplace_back("ips stuck on, still thrusting");
+    } else {
+      thrust_level_ = 0;
+      done.emplace_back("ips to standby");
+    }
+  }
+  if (camera_mode_ != "off") {
+    if (camera_mode_ == "imaging" && active(FaultKind::StuckOn, "camera")) {
+      done.emplace_back("camera stuck on, still imaging");
+    } else {
+      camera_mode_ = "off";
+      exposure_left_s_ = 0.0;
+      done.emplace_back("camera off");
+    }
+  }
+  const std::string target = attitude_.turn_target();
+  if (attitude_.hold())
+    done.push_back("turn to " + target + " stopped, attitude held");
+  else
+    done.emplace_back("attitude held");
+  protection_.safed(time_s_, reason);
+  own_events_.push_back({"safed", reason + ": " + join(done), time_s_});
+}
+
+std::vector<SpacecraftEventRecord> Spacecraft::take_events() {
+  std::vector<SpacecraftEventRecord> out;
+  out.swap(own_events_);
+  return out;
+}
+
 // --- Time ---------------------------------------------------------------------------------------
 
 void Spacecraft::step(double dt_s) {
+  if (protection_.due(time_s_)) enter_safe_mode();
   for (auto it = armed_.begin(); it != armed_.end();) {
     if (it->at_s && *it->at_s <= time_s_ + 1e-9) {
       FaultSpec f = std::move(*it);
@@ -569,6 +619,13 @@ msg::SpacecraftTelemetry Spacecraft::telemetry() const {
   t.storage = {used_mb_, spec_.storage.capacity_mb};
   t.commands_accepted = accepted_;
   t.commands_rejected = rejected_;
+  t.fault_protection.safe_mode = protection_.safe_mode();
+  t.fault_protection.reason = protection_.safe_mode() ? protection_.reason() : "";
+  t.fault_protection.safed_at_ns =
+      static_cast<std::int64_t>(std::llround(protection_.safed_at_s().value_or(0.0) * 1e9));
+  t.fault_protection.safings = protection_.safings();
+  t.fault_protection.commander_silent_s = protection_.silent_s(time_s_);
+  t.fault_protection.commander_timeout_s = spec_.fault_protection.commander_timeout_s;
   return t;
 }
 

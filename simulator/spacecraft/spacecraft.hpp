@@ -22,6 +22,12 @@
 // carried out at once and its device's confirmation (command, id, tick) shows in telemetry,
 // unless a NeverConfirmed fault holds the device.
 //
+// Fault protection (fault_protection.hpp): when neither a command nor commander_heard() came for
+// the spec's commander_timeout_s, step() safes the spacecraft: ion engine to standby, camera off,
+// attitude held (a turn under way stops where it is); a device a StuckOn fault holds stays on and
+// the event says so. Commands are not refused while safed: the next command or commander_heard()
+// ends safe mode ("resumed") and the command is checked as always.
+//
 // Readings (telemetry sensor values): for each bus switch S "S_status" (1 closed, 0 open) and its
 // two downstream voltage sensors "S_voltage_a", "S_voltage_b" (per unit of the bus voltage, 1
 // when closed); "battery_soc", "solar_array_w", "load_w", "ips_power_w", "camera_power_w",
@@ -30,6 +36,7 @@
 // (the voltages of the same switch) tell a false status sensor from an open switch.
 #include "common/msg/spacecraft.hpp"
 #include "simulator/spacecraft/attitude.hpp"
+#include "simulator/spacecraft/fault_protection.hpp"
 #include "simulator/spacecraft/spacecraft_spec.hpp"
 
 #include <cstdint>
@@ -63,6 +70,13 @@ struct FaultEvent {
   double time_s = 0.0;
 };
 
+// Something the spacecraft did on its own (autonomy/spacecraft/event).
+struct SpacecraftEventRecord {
+  std::string kind;    // "safed", "resumed"
+  std::string detail;  // what it did, or which sign of the commander ended safe mode
+  double time_s = 0.0;
+};
+
 class Spacecraft {
  public:
   // Throws std::invalid_argument when the spec is inconsistent (the loader reports such
@@ -76,6 +90,10 @@ class Spacecraft {
   CommandResult inject(FaultSpec fault, const std::string& trigger = "injected");
   // Ends an active or armed fault; false when there is none with that id.
   bool clear_fault(const std::string& id);
+  // A sign of life of the commander now (`sign`: "heartbeat of executive/ds1"): restarts the
+  // command-loss timer and ends safe mode. submit() counts as one ("command c-1 from x").
+  void commander_heard(const std::string& sign);
+  bool safe_mode() const { return protection_.safe_mode(); }
 
   // Advances time: faults due by now activate, then the subsystems move (turns, exposures,
   // thrusting, downlink, power balance).
@@ -88,6 +106,7 @@ class Spacecraft {
   std::string mode(const std::string& device) const;  // as telemetry reports it
   std::optional<double> reading(const std::string& sensor) const;
   std::vector<FaultEvent> take_fault_events();
+  std::vector<SpacecraftEventRecord> take_events();
   const std::vector<std::string>& devices() const { return device_names_; }
   const SpacecraftSpec& spec() const { return spec_; }
   const Attitude& attitude() const { return attitude_; }
@@ -125,6 +144,7 @@ class Spacecraft {
   const StationWindowSpec* window_at(double t) const;
   std::map<std::string, double> true_readings() const;
   void unpower(const std::string& device);
+  void enter_safe_mode();  // fault protection's safe configuration
 
   SpacecraftSpec spec_;
   std::vector<std::string> device_names_;  // sorted
@@ -156,6 +176,9 @@ class Spacecraft {
   std::vector<FaultEvent> events_;
   std::uint64_t accepted_ = 0;
   std::uint64_t rejected_ = 0;
+
+  CommandLossTimer protection_;
+  std::vector<SpacecraftEventRecord> own_events_;
 };
 
 }  // namespace autonomy::sim::spacecraft

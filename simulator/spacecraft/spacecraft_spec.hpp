@@ -5,6 +5,7 @@
 // Units: seconds, watts, watt-hours, megabytes, kilobits per second, degrees.
 #include <Eigen/Core>
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -112,6 +113,14 @@ struct FaultSpec {
   std::string on_command;  // "ips thrust"; empty: not on an event
 };
 
+// Fault protection: safe the spacecraft when its commander has been silent this long (simulated
+// seconds; 0: never). Signs of the commander reach the Spacecraft as commander_heard() calls
+// (the node decides what counts: heartbeats, lockstep acks) and as submitted commands.
+struct FaultProtectionSpec {
+  double commander_timeout_s = 600;
+  std::string commander = "executive";  // the service whose heartbeats count
+};
+
 struct SpacecraftSpec {
   std::string name = "spacecraft";
   std::vector<TargetSpec> targets;
@@ -123,6 +132,9 @@ struct SpacecraftSpec {
   StorageSpec storage;
   std::vector<ElectronicsSpec> electronics;
   std::vector<FaultSpec> faults;
+  FaultProtectionSpec fault_protection;
+  // Commands waiting for their step (in the node), at most; more are answered "busy".
+  std::size_t command_queue_limit = 1000;
 };
 
 }  // namespace autonomy::sim::spacecraft

@@ -687,6 +687,7 @@ struct Fields<msg::SpacecraftCommandStatus> {
     v.field("reason", m.reason);
     v.field("tick", m.tick);
     v.field("sim_time_ns", m.sim_time_ns);
+    v.field("busy", m.busy);
   }
 };
 
@@ -787,6 +788,20 @@ struct Fields<msg::StorageTelemetry> {
 };
 
 template <>
+struct Fields<msg::FaultProtectionTelemetry> {
+  static constexpr const char* name = "FaultProtectionTelemetry";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("safe_mode", m.safe_mode);
+    v.field("reason", m.reason);
+    v.field("safed_at_ns", m.safed_at_ns);
+    v.field("safings", m.safings);
+    v.field("commander_silent_s", m.commander_silent_s);
+    v.field("commander_timeout_s", m.commander_timeout_s);
+  }
+};
+
+template <>
 struct Fields<msg::SpacecraftTelemetry> {
   static constexpr const char* name = "SpacecraftTelemetry";
   template <typename V, typename M>
@@ -804,6 +819,8 @@ struct Fields<msg::SpacecraftTelemetry> {
     v.field("storage", m.storage);
     v.field("commands_accepted", m.commands_accepted);
     v.field("commands_rejected", m.commands_rejected);
+    v.field("fault_protection", m.fault_protection);
+    v.field("commands_busy", m.commands_busy);
   }
 };
 
@@ -835,6 +852,19 @@ struct Fields<msg::SpacecraftFaultState> {
     v.field("trigger", m.trigger);
     v.field("ended_by", m.ended_by);
     v.field("since_ns", m.since_ns);
+  }
+};
+
+template <>
+struct Fields<msg::SpacecraftEvent> {
+  static constexpr const char* name = "SpacecraftEvent";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("spacecraft", m.spacecraft);
+    v.field("tick", m.tick);
+    v.field("sim_time_ns", m.sim_time_ns);
+    v.field("kind", m.kind);
+    v.field("detail", m.detail);
   }
 };
 

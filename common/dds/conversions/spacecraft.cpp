@@ -26,6 +26,7 @@ void DdsType<msg::SpacecraftCommandStatus>::to_c(const msg::SpacecraftCommandSta
   out.reason = c_str(v.reason);
   out.tick = v.tick;
   out.sim_time_ns = v.sim_time_ns;
+  out.busy = v.busy;
 }
 
 msg::SpacecraftCommandStatus DdsType<msg::SpacecraftCommandStatus>::from_c(const C& in) {
@@ -36,7 +37,8 @@ msg::SpacecraftCommandStatus DdsType<msg::SpacecraftCommandStatus>::from_c(const
           in.accepted,
           from_c_str(in.reason),
           in.tick,
-          in.sim_time_ns};
+          in.sim_time_ns,
+          in.busy};
 }
 
 void DdsType<msg::SpacecraftTelemetry>::to_c(const msg::SpacecraftTelemetry& v, C& out,
@@ -76,6 +78,10 @@ void DdsType<msg::SpacecraftTelemetry>::to_c(const msg::SpacecraftTelemetry& v, 
   out.storage = {v.storage.used_mb, v.storage.capacity_mb};
   out.commands_accepted = v.commands_accepted;
   out.commands_rejected = v.commands_rejected;
+  const msg::FaultProtectionTelemetry& fp = v.fault_protection;
+  out.fault_protection = {fp.safe_mode,   c_str(fp.reason),          fp.safed_at_ns,
+                          fp.safings,     fp.commander_silent_s,     fp.commander_timeout_s};
+  out.commands_busy = v.commands_busy;
 }
 
 msg::SpacecraftTelemetry DdsType<msg::SpacecraftTelemetry>::from_c(const C& in) {
@@ -111,6 +117,10 @@ msg::SpacecraftTelemetry DdsType<msg::SpacecraftTelemetry>::from_c(const C& in) 
   v.storage = {in.storage.used_mb, in.storage.capacity_mb};
   v.commands_accepted = in.commands_accepted;
   v.commands_rejected = in.commands_rejected;
+  const auto& fp = in.fault_protection;
+  v.fault_protection = {fp.safe_mode, from_c_str(fp.reason), fp.safed_at_ns,
+                        fp.safings,   fp.commander_silent_s,  fp.commander_timeout_s};
+  v.commands_busy = in.commands_busy;
   return v;
 }
 
@@ -155,6 +165,19 @@ msg::SpacecraftFaultState DdsType<msg::SpacecraftFaultState>::from_c(const C& in
           from_c_str(in.trigger),
           from_c_str(in.ended_by),
           in.since_ns};
+}
+
+void DdsType<msg::SpacecraftEvent>::to_c(const msg::SpacecraftEvent& v, C& out, Arena&) {
+  out.spacecraft = c_str(v.spacecraft);
+  out.tick = v.tick;
+  out.sim_time_ns = v.sim_time_ns;
+  out.kind = c_str(v.kind);
+  out.detail = c_str(v.detail);
+}
+
+msg::SpacecraftEvent DdsType<msg::SpacecraftEvent>::from_c(const C& in) {
+  return {from_c_str(in.spacecraft), in.tick, in.sim_time_ns, from_c_str(in.kind),
+          from_c_str(in.detail)};
 }
 
 }  // namespace autonomy::dds

@@ -48,6 +48,28 @@ TEST(SpacecraftSection, MinimalSectionNeedsNoWorldAndTakesTheDefaults) {
   EXPECT_DOUBLE_EQ(s.power.battery_soc, 1.0);
   EXPECT_DOUBLE_EQ(r.scenario->world.width, 1.0);  // the empty stand-in world
   EXPECT_TRUE(r.scenario->world.robots_at_start.empty());
+  EXPECT_DOUBLE_EQ(s.fault_protection.commander_timeout_s, 600.0);
+  EXPECT_EQ(s.fault_protection.commander, "executive");
+  EXPECT_EQ(s.command_queue_limit, 1000u);
+}
+
+TEST(SpacecraftSection, FaultProtectionAndQueueLimitAreReadAndChecked) {
+  const ScenarioLoadResult r = load_scenario_text(
+      section(kMinimal + "  fault_protection { commander_timeout_s: 30 commander: \"exec\" }\n"
+                         "  command_queue_limit: 5\n"),
+      "s.pbtxt");
+  ASSERT_TRUE(r.ok()) << r.error_text();
+  EXPECT_DOUBLE_EQ(r.scenario->spacecraft->fault_protection.commander_timeout_s, 30.0);
+  EXPECT_EQ(r.scenario->spacecraft->fault_protection.commander, "exec");
+  EXPECT_EQ(r.scenario->spacecraft->command_queue_limit, 5u);
+  EXPECT_EQ(errors_of(section(
+                kMinimal + "  fault_protection { commander_timeout_s: -1 commander: \"\" }\n"
+                           "  command_queue_limit: 0\n")),
+            (Errors{"s.pbtxt:11:22: fault_protection: commander_timeout_s must be >= 0 (0: off) "
+                    "(got -1.0)",
+                    "s.pbtxt:11:46: fault_protection: commander must be a service name of 1..64 "
+                    "characters",
+                    "s.pbtxt:12:3: command_queue_limit must be at least 1 (got 0)"}));
 }
 
 TEST(SpacecraftSection, FaultsWithTimesAndEventsAreRead) {

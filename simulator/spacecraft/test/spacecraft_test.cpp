@@ -33,6 +33,7 @@ SpacecraftSpec test_spec() {
   s.telecom.windows = {{"goldstone", 100, 200, 80}};  // 80 kbps = 0.01 MB/s
   s.storage = {10, 0};
   s.electronics = {{"lpe", {"camera"}}};
+  s.fault_protection.commander_timeout_s = 0;  // these tests are about physics and faults
   return s;
 }
 

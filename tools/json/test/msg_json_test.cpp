@@ -203,7 +203,11 @@ TEST(MsgJson, SpacecraftTypesRoundTrip) {
   t.camera.images_taken = 2;
   t.telecom.ground_station = "dss-14";
   t.storage.capacity_mb = 64;
+  t.fault_protection = {true, "no command or heartbeat of executive for 600 s", 600, 1, 601.0, 600.0};
+  t.commands_busy = 3;
   expect_round_trip(t);
+  expect_round_trip(msg::SpacecraftEvent{"ds1", 601, 600, "safed", "ips to standby"});
+  expect_round_trip(msg::SpacecraftCommandStatus{"c-2", "tool", "ips", "thrust", false, "busy: ...", 4, 9, true});
   expect_round_trip(msg::SpacecraftCommand{"c-1", "executive", 4, "ips", "thrust", {"6"}});
   expect_round_trip(msg::SpacecraftCommandStatus{"c-1", "executive", "ips", "thrust", false, "out of range", 4, 9});
   expect_round_trip(msg::SpacecraftFaultInjection{"f", "test", "failed", "lpe", 0.0, true, false});
