@@ -1,13 +1,13 @@
 #pragma once
 // One prepared SQLite statement with typed binds and columns; finalised on every path. Shared by
-// the journal's files (journal.cpp, experience_store.cpp); not part of its interface.
+// the services' journals (the courier's, the executive's); not part of their interfaces.
 #include <sqlite3.h>
 
 #include <optional>
 #include <stdexcept>
 #include <string>
 
-namespace autonomy::courier::sql {
+namespace autonomy::sql {
 
 class Statement {
  public:
@@ -21,6 +21,10 @@ class Statement {
 
   Statement& text(int i, const std::string& v) {
     sqlite3_bind_text(stmt_, i, v.data(), static_cast<int>(v.size()), SQLITE_TRANSIENT);
+    return *this;
+  }
+  Statement& null(int i) {
+    sqlite3_bind_null(stmt_, i);
     return *this;
   }
   Statement& integer(int i, long long v) {
@@ -60,4 +64,4 @@ class Statement {
   sqlite3_stmt* stmt_ = nullptr;
 };
 
-}  // namespace autonomy::courier::sql
+}  // namespace autonomy::sql

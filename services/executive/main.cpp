@@ -29,6 +29,9 @@ int main(int argc, char** argv) {
             ->capture_default_str();
         app.add_option("--report-dir", options.report_dir,
                        "Write plan.svg (planned against executed, faults) and report.md here when the mission ends");
+        app.add_option("--journal", options.journal_path,
+                       "Flight journal (SQLite): goal outcomes, devices given up and the plan's state, so that "
+                       "a restarted executive resumes the mission instead of starting it again");
         app.add_option("--watchdog-s", options.watchdog_s,
                        "A tick taking longer than this raises the alarm and safes the spacecraft (wall s)")
             ->check(CLI::Range(0.05, 600.0))

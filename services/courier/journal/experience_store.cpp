@@ -4,7 +4,7 @@
 #include <sqlite3.h>
 
 #include "services/courier/journal/journal.hpp"
-#include "services/courier/journal/sqlite_statement.hpp"
+#include "common/sqlite/statement.hpp"
 
 namespace autonomy::courier {
 

@@ -4,7 +4,8 @@
 
 #include <stdexcept>
 
-#include "services/courier/journal/sqlite_statement.hpp"
+#include "common/sqlite/database.hpp"
+#include "common/sqlite/statement.hpp"
 
 namespace autonomy::courier {
 
@@ -30,25 +31,10 @@ void bind_job(Statement& s, const Job& j) {
 }  // namespace
 
 Journal::Journal(const std::string& path) : path_(path) {
-  if (sqlite3_open_v2(path.c_str(), &db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) != SQLITE_OK) {
-    const std::string why = db_ ? sqlite3_errmsg(db_) : "out of memory";
-    sqlite3_close(db_);
-    throw std::runtime_error("journal " + path + ": " + why);
-  }
+  db_ = sql::open_journal(path);
   try {
-    exec("PRAGMA journal_mode=WAL");
-    exec("PRAGMA synchronous=FULL");
-    exec("CREATE TABLE IF NOT EXISTS meta (key TEXT PRIMARY KEY, value INTEGER NOT NULL)");
-    {
-      Statement version(db_, "SELECT value FROM meta WHERE key = 'schema'");
-      if (version.step() && version.column_integer(0) > kSchemaVersion)
-        throw std::runtime_error("schema " + std::to_string(version.column_integer(0)) + " is newer than " +
-                                 std::to_string(kSchemaVersion));
-    }
-    exec("INSERT OR IGNORE INTO meta VALUES ('schema', 1), ('jobs_created', 0), ('runs', 0)");
-    exec("UPDATE meta SET value = value + 1 WHERE key = 'runs'");
-    Statement runs(db_, "SELECT value FROM meta WHERE key = 'runs'");
-    if (runs.step()) run_ = static_cast<int>(runs.column_integer(0));
+    run_ = sql::count_opening(db_, kSchemaVersion);
+    exec("INSERT OR IGNORE INTO meta VALUES ('jobs_created', 0)");
     exec("CREATE TABLE IF NOT EXISTS commands (command_id TEXT PRIMARY KEY, reply TEXT NOT NULL)");
     exec("CREATE TABLE IF NOT EXISTS jobs (job_id TEXT PRIMARY KEY, command_id TEXT, object_id TEXT, "
          "object_kind TEXT, object_colour TEXT, pickup TEXT, destination TEXT, deadline_s REAL, accepted_at_s REAL, "
@@ -66,14 +52,7 @@ Journal::Journal(const std::string& path) : path_(path) {
 
 Journal::~Journal() { sqlite3_close(db_); }
 
-void Journal::exec(const char* sql) const {
-  char* error = nullptr;
-  if (sqlite3_exec(db_, sql, nullptr, nullptr, &error) != SQLITE_OK) {
-    const std::string why = error ? error : "unknown error";
-    sqlite3_free(error);
-    throw std::runtime_error(why);
-  }
-}
+void Journal::exec(const char* statement) const { sql::exec(db_, statement); }
 
 void Journal::record_command(const std::string& command_id, const std::string& reply_json, const Job* job,
                              bool new_job) {

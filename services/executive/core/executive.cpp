@@ -176,12 +176,18 @@ void Executive::abort(const Observations& seen, std::string reason, Tick* tick) 
 
 Tick Executive::step(const Observations& input) {
   Tick tick;
-  if (aborted_) return tick;  // safe and waiting for a new plan: nothing to dispatch
   const Time now = input.time;
   Observations seen = input;
   for (const std::string& s : ignored_sensors_) seen.readings.erase(s);
   for (const DeviceCommand& late : tracker_.expire(now))
     seen.unconfirmed_devices.push_back(late.device);
+  if (aborted_) {
+    // Safe and waiting for a new plan: nothing to dispatch, but a fault that comes meanwhile
+    // (a thruster sticking while the replan is made) is answered now, not by another abort.
+    std::string ignored;
+    respond_to_faults(seen, now, &tick, &ignored);
+    return tick;
+  }
 
   // Token ends the world controls: the device reports the mode that ends them.
   const auto& tokens = dispatcher_.plan().tokens;
@@ -239,6 +245,14 @@ Tick Executive::step(const Observations& input) {
     tick.commands.push_back(std::move(end));
   }
 
+  respond_to_faults(seen, now, &tick, &broken);
+  if (!broken.empty()) abort(seen, broken, &tick);
+  return tick;
+}
+
+void Executive::respond_to_faults(const Observations& seen, Time now, Tick* tick_out, std::string* broken_out) {
+  Tick& tick = *tick_out;
+  std::string& broken = *broken_out;
   PlanState state = plan_state(now);
   for (auto& part : faults_)
     for (const FaultAction& a : part->assess(seen, state)) {
@@ -267,8 +281,6 @@ Tick Executive::step(const Observations& input) {
           break;
       }
     }
-  if (!broken.empty()) abort(seen, broken, &tick);
-  return tick;
 }
 
 }  // namespace autonomy::executive

@@ -61,7 +61,13 @@ class Executive {
                                            ExecutiveOptions options, Time start,
                                            std::string* error);
 
-  Tick step(const Observations& seen);  // seen.time is now; ticks must not go back in time
+  // seen.time is now; ticks must not go back in time. Once aborted it dispatches nothing but
+  // still answers faults (reset, switch control mode, ignore a sensor, stop commanding; an
+  // abort is no answer then: the replan is under way).
+  Tick step(const Observations& seen);
+  // What a replan from now would start from (the current value of each timeline, the goals
+  // left, the faults seen), without aborting: the node journals it as tokens start and end.
+  ReplanRequest state_now(const Observations& seen) const { return replan_request(seen, ""); }
   // A command confirmed in telemetry; false when none was awaited.
   bool confirm(const std::string& device, const std::string& command);
   // A command the device refused (its status gave `reason`, e.g. "lpe has failed"): no longer
@@ -97,6 +103,8 @@ class Executive {
   void stop_commanding(const std::string& device);
   std::size_t next_on_timeline(std::size_t token) const;  // SIZE_MAX for the last
   void abort(const Observations& seen, std::string reason, Tick* tick);
+  // The fault table's answers to what is seen; an abort's reason goes to *broken.
+  void respond_to_faults(const Observations& seen, Time now, Tick* tick, std::string* broken);
   // A goal token ended: achieved unless its device was not commanded for it.
   void goal_ended(std::size_t token, Time now, Tick* tick);
 

@@ -73,6 +73,10 @@ ExecutiveNode::ExecutiveNode(service::Service& service, ExecutiveNodeOptions opt
   loop.on_condition(planner_.reply_reader().data_condition(), [this] { on_reply(); });
   loop.every(std::chrono::milliseconds(20), [this] { on_timer(); });
   loop.every(std::chrono::seconds(1), [this] { publish_status(); });
+  if (!options_.journal_path.empty()) {
+    journal_ = std::make_unique<FlightJournal>(options_.journal_path, config_.problem_path);
+    restore_from_journal();
+  }
   lockstep_.register_participant();
   spdlog::info("executive {}: mission {} ({} goals, horizon {} s, plans of {} s), {} command rules",
                name_, config_.problem_path, mission_.goal_labels().size(), mission_.horizon(),
@@ -134,10 +138,22 @@ void ExecutiveNode::run_tick(const msg::SimClock& clock) {
   }
 
   std::vector<DeviceCommand> out;
+  if (journal_) journal_->alive(now_);
+  if (resume_pending_) resume(out);
   ask_first();
   settle();
   reask();
-  if (state_ == State::kExecuting) dispatch(now_, out);
+  if (state_ == State::kExecuting) {
+    dispatch(now_, out);
+  } else if (state_ == State::kSafeWaiting && executive_) {
+    // Safe and waiting: the aborted plan's executive still answers faults.
+    Observations seen = telemetry_ ? observations_of(*telemetry_, now_) : Observations{};
+    seen.time = now_;
+    if (robots_) robots_->observe(seen);
+    step_plan(seen, out);
+  }
+  if (state_ != State::kFinished && now_ >= mission_.horizon())
+    end_mission("the mission ended before a plan had it (" + std::string(state_name()) + ")");
   finish_tick(clock, send(out, clock.tick));
   watchdog_.tick_ended();
 }
@@ -165,11 +181,7 @@ std::map<std::string, std::string> ExecutiveNode::device_modes() const {
   return modes;
 }
 
-PlannerLink::Clock::duration ExecutiveNode::hold_limit() const {
-  // Never longer than a request waits for its reply: a request asked again holds afresh, so a
-  // longer hold would hold the world for as long as the planner stays away.
-  return seconds(std::min(options_.plan_hold_s, options_.plan_timeout_s));
-}
+PlannerLink::Clock::duration ExecutiveNode::hold_limit() const { return seconds(options_.plan_hold_s); }
 
 void ExecutiveNode::finish_tick(const msg::SimClock& clock, std::uint32_t sent) {
   lockstep_mode_ = clock.mode == msg::ClockMode::Lockstep;
@@ -177,8 +189,12 @@ void ExecutiveNode::finish_tick(const msg::SimClock& clock, std::uint32_t sent) 
   const bool waiting = state_ == State::kWaitingForPlan || state_ == State::kSafeWaiting ||
                        (state_ == State::kExecuting && now_ >= horizon_end_ && !next_plan_ &&
                         horizon_end_ < mission_.horizon());
+  // The hold is bounded per outage, not per request: requests asked again while the planner
+  // stays silent do not renew it (any reply does).
+  const bool may_hold = !hold_since_ || WallClock::now() - *hold_since_ < hold_limit();
   if (waiting && (state_ == State::kWaitingForPlan || planner_.waiting()) &&
-      clock.mode == msg::ClockMode::Lockstep && WallClock::now() - wait_since_ < hold_limit()) {
+      clock.mode == msg::ClockMode::Lockstep && may_hold) {
+    if (!hold_since_) hold_since_ = WallClock::now();
     held_ = HeldTick{clock};
     held_commands_ = sent;
     spdlog::debug("tick {} held for a plan", clock.tick);
@@ -193,8 +209,8 @@ void ExecutiveNode::ask_first() {
   if (state_ != State::kWaitingForPlan || planner_.waiting() || !asked_purpose_.empty() ||
       last_tick_ < 0 || planner_.planners() == 0)
     return;
-  const Time end = config_.horizon_s > 0 ? now_ + config_.horizon_s : mission_.horizon();
-  ask_for_plan(now_, end, {}, "first horizon");
+  // On the horizons' grid (a restart before any plan began joins it where it is).
+  ask_for_plan(now_, horizon_end_for(now_), {}, "first horizon");
 }
 
 void ExecutiveNode::dispatch(Time now, std::vector<DeviceCommand>& out) {
@@ -216,11 +232,7 @@ void ExecutiveNode::dispatch(Time now, std::vector<DeviceCommand>& out) {
     if (!step_plan(seen, out)) return;
   }
   if (now >= horizon_end_ && horizon_end_ >= mission_.horizon()) {
-    state_ = State::kFinished;
-    event("finished", now, std::to_string(achieved_.size()) + " goals achieved, " +
-                               std::to_string(lost_.size()) + " lost");
-    write_report();  // before the status says finished: whoever waits for it finds the report
-    publish_status();
+    end_mission("the mission ended before it was achieved");
     return;
   }
   if (!next_asked_ && horizon_end_ < mission_.horizon() &&
@@ -246,25 +258,46 @@ bool ExecutiveNode::step_plan(const Observations& seen, std::vector<DeviceComman
   }
   for (DeviceCommand& c : result.commands) out.push_back(std::move(c));
   for (const std::string& d : executive_->disabled_devices())
-    if (!disabled_.count(d)) disabled_[d] = "no longer commanded (a command was not confirmed)";
-  for (const std::string& s : executive_->ignored_sensors()) ignored_sensors_.insert(s);
-  if (!result.replan) return true;
+    if (!disabled_.count(d)) disable(d, "no longer commanded (a command was not confirmed)");
+  for (const std::string& s : executive_->ignored_sensors()) ignore_sensor(s);
+  if (!result.replan) {
+    const bool changed = std::any_of(result.events.begin(), result.events.end(), [](const ExecutiveEvent& e) {
+      return e.kind == "started" || e.kind == "ended";
+    });
+    if (changed && !executive_->aborted()) journal_state(seen);
+    return !executive_->aborted();
+  }
 
   // Aborted: safing is in `out`; ask for the rest of the horizon from now.
   const ReplanRequest& r = *result.replan;
   fault_seen_ = WallClock::now();
   ++replans_;
   for (const auto& [device, mode] : r.known_faults)
-    if (mode != "failed" && !disabled_.count(device)) disabled_[device] = device + " " + mode;
+    if (mode != "failed" && !disabled_.count(device)) disable(device, device + " " + mode);
   next_plan_.reset();
   next_asked_ = false;
   state_ = State::kSafeWaiting;
   planner_.forget();
   // A token the world ends (a turn) goes on after the abort: the new plan starts from where
   // it arrives, once it has (its report), not from a value no plan can start with.
-  settle_state_ = current_values(r);
+  settle_target(r, settle_state_, settling_);
   settle_purpose_ = "replan: " + r.reason;
-  settling_.clear();
+  if (journal_) journal_->plan(plan_id_, horizon_end_, settle_state_, settling_, seen.time);
+  settle_deadline_ = seen.time + kSettleLimit;
+  if (settling_.empty()) {
+    ask_for_plan(seen.time, horizon_end_for(seen.time), settle_state_, settle_purpose_);
+  } else {
+    std::string what;
+    for (const auto& [device, s] : settling_) what += (what.empty() ? "" : ", ") + device + " " + s.end_mode;
+    event("settling", seen.time, "replanning once " + what + " (at most " + std::to_string(kSettleLimit) + " s)");
+  }
+  return false;
+}
+
+void ExecutiveNode::settle_target(const ReplanRequest& r, std::vector<msg::PlannerTimelineValue>& values,
+                                  std::map<std::string, SettlingRecord>& settling) const {
+  values = current_values(r);
+  settling.clear();
   const planner::FlexiblePlan& plan = executive_->dispatcher().plan();
   const CommandMap map = config_.command_map();
   for (const planner::PlanTimeline& line : plan.timelines)
@@ -275,21 +308,12 @@ bool ExecutiveNode::step_plan(const Observations& seen, std::vector<DeviceComman
         continue;
       auto after = value_of(plan.tokens[line.tokens[k + 1]]);
       if (!after) continue;
-      for (auto& v : settle_state_)
+      for (auto& v : values)
         if (v.timeline == line.name) v = *after;
-      Settling& s = settling_[rule->device];
+      Settling& s = settling[rule->device];
       s = {rule->end_mode, line.name, std::nullopt};
       if (k > 0) s.if_blocked = value_of(plan.tokens[line.tokens[k - 1]]);
     }
-  settle_deadline_ = seen.time + kSettleLimit;
-  if (settling_.empty()) {
-    ask_for_plan(seen.time, horizon_end_for(seen.time), settle_state_, settle_purpose_);
-  } else {
-    std::string what;
-    for (const auto& [device, s] : settling_) what += (what.empty() ? "" : ", ") + device + " " + s.end_mode;
-    event("settling", seen.time, "replanning once " + what + " (at most " + std::to_string(kSettleLimit) + " s)");
-  }
-  return false;
 }
 
 void ExecutiveNode::settle() {
@@ -338,6 +362,11 @@ std::vector<msg::PlannerTimelineValue> ExecutiveNode::current_values(const Repla
     if (!carried.count(v.timeline)) continue;
     if (single_values(v.parameters)) state.push_back({v.timeline, v.predicate, v.parameters});
   }
+  apply_safe_values(state);
+  return state;
+}
+
+void ExecutiveNode::apply_safe_values(std::vector<msg::PlannerTimelineValue>& state) const {
   for (const TimelineValue& safe : config_.safe_values) {
     auto it = std::find_if(state.begin(), state.end(),
                            [&](const auto& v) { return v.timeline == safe.timeline; });
@@ -345,7 +374,6 @@ std::vector<msg::PlannerTimelineValue> ExecutiveNode::current_values(const Repla
     if (it != state.end()) *it = v;
     else state.push_back(v);
   }
-  return state;
 }
 
 void ExecutiveNode::ask_for_plan(Time origin, Time end, std::vector<msg::PlannerTimelineValue> state,
@@ -383,7 +411,6 @@ void ExecutiveNode::ask_for_plan(Time origin, Time end, std::vector<msg::Planner
   asked_end_ = end;
   asked_state_ = state;
   asked_purpose_ = purpose;
-  wait_since_ = WallClock::now();
   std::string values;
   for (const auto& v : state) {
     values += (values.empty() ? "" : "; ") + v.timeline + " == " + v.predicate + "(";
@@ -431,7 +458,7 @@ Time ExecutiveNode::horizon_end_for(Time now) const {
 void ExecutiveNode::on_timer() {
   ask_first();
   if (planner_.waiting() && planner_.waited() > seconds(options_.plan_timeout_s)) ask_again();
-  if (held_ && WallClock::now() - wait_since_ > hold_limit()) {
+  if (held_ && hold_since_ && WallClock::now() - *hold_since_ > hold_limit()) {
     event("plan_late", now_, "no plan within " + std::to_string(wall_s(hold_limit())) +
                                  " s: the world goes on with the spacecraft safe");
     lockstep_.acknowledge(held_->clock.tick, held_commands_);
@@ -442,6 +469,8 @@ void ExecutiveNode::on_timer() {
 void ExecutiveNode::on_reply() {
   auto reply = planner_.take_reply();
   if (!reply) return;
+  hold_since_.reset();  // the planner answers: a new wait may hold the world afresh
+  if (state_ == State::kFinished) return;
   const bool for_next = state_ == State::kExecuting;
   if (!usable(*reply)) {
     std::string why = reply->reason.empty() ? "no usable plan" : reply->reason;
@@ -459,11 +488,11 @@ void ExecutiveNode::on_reply() {
       ask_for_plan(asked_origin_, asked_end_, asked_state_, asked_purpose_ + " (without the lost goals)");
     } else {
       // Rejected (busy, stopping, ...) or a plan that does not validate: asked again in a moment.
-      reask_ = true;
-      reask_after_ = WallClock::now() + seconds(std::min(1.0, options_.plan_timeout_s));
+      reask_later();
     }
     return;
   }
+  refusals_ = 0;
   if (for_next) {
     next_plan_ = std::move(*reply);
     next_goals_ = asked_goals_;
@@ -516,7 +545,8 @@ void ExecutiveNode::start_plan(const msg::PlanningReply& reply, Time origin, Tim
   if (!next) {
     if (executive_) executive_->set_fault_table(config_.fault_table());  // the old plan goes on
     event("plan_refused", now_, reply.request_id + ": not dispatchable: " + error);
-    return;  // the timer asks again
+    reask_later();
+    return;
   }
   if (executive_) report_.add_plan(plan_id_, executive_->dispatcher(), now_);
   for (const auto& [device, why] : disabled_) next->disable_device(device);
@@ -528,6 +558,13 @@ void ExecutiveNode::start_plan(const msg::PlanningReply& reply, Time origin, Tim
   plan_origin_ = origin;
   horizon_end_ = horizon_end;
   state_ = State::kExecuting;
+  lost_while_down_.clear();
+  refusals_ = 0;
+  if (journal_) {
+    Observations seen = telemetry_ ? observations_of(*telemetry_, now_) : Observations{};
+    seen.time = now_;
+    journal_state(seen);
+  }
   decision_us_sum_ = decision_us_max_ = 0;
   decisions_ = 0;
   std::map<std::string, std::string> omitted;
@@ -542,6 +579,7 @@ void ExecutiveNode::note_goals(const ExecutiveEvent& e) {
   const std::size_t colon = e.text.find(':');
   const std::string label = e.text.substr(0, colon);
   const std::string how = colon == std::string::npos ? "" : e.text.substr(colon + 2);
+  if (journal_) journal_->goal(label, e.kind == "goal_achieved", how, now_);
   if (e.kind == "goal_achieved")
     achieved_[label] = how;
   else
@@ -549,11 +587,33 @@ void ExecutiveNode::note_goals(const ExecutiveEvent& e) {
 }
 
 void ExecutiveNode::lose_goals(const std::map<std::string, std::string>& lost, Time now) {
-  for (const auto& [label, why] : lost) {
+  for (const auto& [label, reason] : lost) {
     if (achieved_.count(label) || lost_.count(label)) continue;
+    // Windows that closed while no executive ran say so.
+    const std::string why = lost_while_down_.empty() ? reason : lost_while_down_ + ": " + reason;
+    if (journal_) journal_->goal(label, false, why, now);
     lost_[label] = why;
     event("goal_lost", now, label + ": " + why);
   }
+}
+
+void ExecutiveNode::end_mission(const std::string& why) {
+  std::map<std::string, std::string> unsettled;
+  for (const std::string& label : mission_.goal_labels())
+    if (!achieved_.count(label) && !lost_.count(label)) unsettled[label] = why;
+  lose_goals(unsettled, now_);
+  state_ = State::kFinished;  // the tick being answered is acknowledged, never held again
+  event("finished", now_, std::to_string(achieved_.size()) + " goals achieved, " + std::to_string(lost_.size()) + " lost");
+  write_report();  // before the status says finished: whoever waits for it finds the report
+  publish_status();
+}
+
+void ExecutiveNode::reask_later() {
+  // 1, 2, 4 ... s after the refusal, never longer than a request waits for its reply.
+  const double wait = std::min(options_.plan_timeout_s, std::ldexp(1.0, static_cast<int>(std::min(refusals_, 10u))));
+  ++refusals_;
+  reask_ = true;
+  reask_after_ = WallClock::now() + seconds(wait);
 }
 
 void ExecutiveNode::write_report() {

@@ -15,7 +15,17 @@
 //                      from now, with the current values as state, the faulty devices never
 //                      commanded again; the tick is held as above; an unanswered request is
 //                      sent again every --plan-timeout-s (the planner may have died)
-//   finished           the mission's horizon is over
+//   finished           the mission's horizon is over (checked in every state: a mission always
+//                      ends, with its report, even while no plan executes)
+// With --journal (flight_journal.hpp) every goal outcome, device given up, sensor judged false
+// and the plan's state values are journalled before they are acted on; a restarted executive
+// safes the spacecraft, takes them back and plans from the journalled values corrected by the
+// configured safe values (resume.cpp), as after an abort.
+// Holds: a lockstep tick is held while a plan is awaited for at most --plan-hold-s in total per
+// planner outage (any reply from the planner renews it), not per request: while the planner is
+// away the world goes on with the spacecraft safe and the request is asked again every
+// --plan-timeout-s. A refused plan (not dispatchable, rejected) is asked again after 1, 2, 4 ...
+// s (at most --plan-timeout-s).
 // Every response, plan and goal is an event on autonomy/executive/event; the status
 // (autonomy/executive/status) follows every change and every second.
 #include <atomic>
@@ -31,6 +41,7 @@
 #include "common/service/service.hpp"
 #include "executive.hpp"
 #include "executive_config.hpp"
+#include "flight_journal.hpp"
 #include "mission.hpp"
 #include "planner_link.hpp"
 #include "robot_link.hpp"
@@ -47,6 +58,7 @@ struct ExecutiveNodeOptions {
   double plan_hold_s = 10;     // hold a lockstep tick at most this long for a plan (wall)
   double watchdog_s = 2;       // a tick handler running longer raises the alarm and safes
   std::string report_dir;      // where plan.svg and report.md go when the mission ends ("": none)
+  std::string journal_path;    // the flight journal ("": none; a restart then starts afresh)
 };
 
 class ExecutiveNode {
@@ -58,7 +70,7 @@ class ExecutiveNode {
 
  private:
   enum class State { kWaitingForPlan, kExecuting, kSafeWaiting, kFinished };
-  struct HeldTick {  // how long it may be held: hold_limit() from wait_since_
+  struct HeldTick {  // how long it may be held: hold_limit() from hold_since_
     msg::SimClock clock;
   };
 
@@ -86,12 +98,30 @@ class ExecutiveNode {
   Time horizon_end_for(Time now) const;
   std::vector<msg::PlannerTimelineValue> held_values() const;  // the plan's values at its end
   std::vector<msg::PlannerTimelineValue> current_values(const ReplanRequest& r) const;
+  // The configuration's safe values (the engine off) replace what the state says.
+  void apply_safe_values(std::vector<msg::PlannerTimelineValue>& state) const;
   void note_goals(const ExecutiveEvent& e);
   void lose_goals(const std::map<std::string, std::string>& lost, Time now);
   void event(const std::string& kind, Time now, const std::string& text);
   void publish_status();
   void write_report();
   void safe_from_watchdog(PlannerLink::Clock::duration busy);
+  // The values a replan from `r` starts with and the devices it waits for (a token the world
+  // ends that is under way: its next value, once its device reports the end mode).
+  void settle_target(const ReplanRequest& r, std::vector<msg::PlannerTimelineValue>& values,
+                     std::map<std::string, SettlingRecord>& settling) const;
+  // Journals the plan's state values when tokens started or ended (journal_state), the first
+  // tick after a restart (resume.cpp): safing sent, journalled outcomes restored, replan asked.
+  void journal_state(const Observations& seen);
+  void resume(std::vector<DeviceCommand>& out);
+  void restore_from_journal();
+  void disable(const std::string& device, const std::string& why);
+  void ignore_sensor(const std::string& sensor);
+  // The mission's horizon is over: whatever state it is in, goals not settled are lost with
+  // `why`, the report is written, the status says finished.
+  void end_mission(const std::string& why);
+  // A refused reply or plan: asked again after a back-off (1, 2, 4 ... s, at most the timeout).
+  void reask_later();
   const char* state_name() const;
 
   service::Service& service_;
@@ -126,7 +156,6 @@ class ExecutiveNode {
   bool lockstep_mode_ = true;  // of the last tick
   std::optional<HeldTick> held_;
   std::uint32_t held_commands_ = 0;      // already sent for the held tick
-  PlannerLink::Clock::time_point wait_since_ = PlannerLink::Clock::now();  // for a plan
   std::optional<msg::SpacecraftTelemetry> telemetry_;
   std::int64_t last_tick_ = -1;
   std::atomic<std::int64_t> watched_tick_{-1};  // last_tick_ for the watchdog's thread
@@ -136,11 +165,7 @@ class ExecutiveNode {
   // A device whose token the abort left running (a drive): the replan waits for its end mode.
   // A device that reports "blocked" instead (a robot's goal given up) has settled too, where
   // it started: its timeline is asked for with the token's predecessor value.
-  struct Settling {
-    std::string end_mode;
-    std::string timeline;
-    std::optional<msg::PlannerTimelineValue> if_blocked;
-  };
+  using Settling = SettlingRecord;
   static constexpr char kBlockedMode[] = "blocked";
   std::map<std::string, Settling> settling_;  // by device
   std::vector<msg::PlannerTimelineValue> settle_state_;
@@ -158,6 +183,12 @@ class ExecutiveNode {
   PlannerLink::Clock::time_point fault_seen_{};  // wall time of the last abort, for its figure
 
   RunReport report_;
+
+  std::unique_ptr<FlightJournal> journal_;
+  bool resume_pending_ = false;        // restarted from a journal: resume at the first tick
+  std::string lost_while_down_;        // "executive down from T1 s to T2 s", for goals it cost
+  unsigned refusals_ = 0;              // in a row, for the back-off
+  std::optional<PlannerLink::Clock::time_point> hold_since_;  // this outage's first held tick
 
   Watchdog watchdog_;  // last: its thread starts when everything above exists
 };

@@ -703,6 +703,26 @@ TEST(Executive, DispatchesThePlannersCameraPlan) {
   EXPECT_GE(sc.received[1].sent, turn_done);  // the picture waits for the observed turn end
 }
 
+// The camera sticks (abort at 16); the thruster sticks at 30, while the replan is awaited: the
+// control mode is switched then, and there is no second abort.
+TEST(Executive, AThrusterStickingWhileAReplanIsAwaitedIsAnsweredWithoutASecondAbort) {
+  auto exec = ds1_executive();
+  ToySpacecraft sc;
+  sc.stuck.insert("camera");
+  Outcome r = run(exec.get(), &sc, 100, [](Time t, ToySpacecraft* s) {
+    if (t == 30) s->modes["thruster_x"] = "stuck_closed";
+  });
+  ASSERT_TRUE(r.replan);
+  const std::vector<std::string> responses = r.responses();
+  ASSERT_FALSE(responses.empty());
+  EXPECT_EQ(std::count(responses.begin(), responses.end(), "fault switch_control_mode@30"), 1) << responses.back();
+  EXPECT_EQ(std::count_if(responses.begin(), responses.end(),
+                          [](const std::string& x) { return x.rfind("fault abort_and_replan", 0) == 0; }),
+            1);
+  const std::vector<std::string> commands = sent(sc);
+  EXPECT_EQ(std::count(commands.begin(), commands.end(), "adcs set_mode@30"), 1);
+}
+
 }  // namespace
 }  // namespace autonomy::executive
 
@@ -737,9 +757,13 @@ TEST(Executive, WithAllFiveTheStuckCameraAbortsAfterTheEarlierResponses) {
   sc.never_confirm.insert("ips");
   sc.stuck.insert("camera");
   Outcome r = run(exec.get(), &sc, 100, four_faults);
+  // The electronics unit that fails at 20, after the abort, is still reset: faults are answered
+  // while the replan is awaited.
   EXPECT_EQ(r.responses(),
             (std::vector<std::string>{"fault ignore_sensor@7", "fault switch_control_mode@12",
-                                      "fault abort_and_replan@16"}));
+                                      "fault abort_and_replan@16", "fault reset@20"}));
+  const std::vector<std::string> commands = sent(sc);
+  EXPECT_EQ(std::count(commands.begin(), commands.end(), "lpe reset@20"), 1);
   ASSERT_TRUE(r.replan);
   EXPECT_EQ(r.replan->known_faults, (std::map<std::string, std::string>{
                                         {"camera", "imaging"}, {"thruster_x", "stuck_closed"}}));
