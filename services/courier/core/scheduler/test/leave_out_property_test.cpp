@@ -273,13 +273,13 @@ std::vector<int> brute_left_out(const SchedulingProblem& p) {
 TEST(LeaveOutProperty, LargeAndExactAgreeOnFeasibilityAndOnTheJobsLeftOut) {
   auto large = make_scheduler_engine("large");
   auto exact = make_scheduler_engine("exact");
-  constexpr int kInstances = 3000;
+  constexpr int kInstances = 2400;
   int full = 0, partial = 0, infeasible = 0, large_wrong = 0, brute_checked = 0, large_better = 0;
   for (int i = 0; i < kInstances; ++i) {
     const SchedulingProblem p = instance(i);
     const std::string what = "instance " + std::to_string(i);
     SearchBudget budget;
-    budget.max_work = 20000;
+    budget.max_work = 4000;  // its first schedule is what is compared, not its search
     const JobSchedule e = exact->solve(p, {});
     const JobSchedule l = large->solve(p, budget);
     ASSERT_NE(e.status, ScheduleStatus::kNoSolution) << what << ": " << e.reason;
