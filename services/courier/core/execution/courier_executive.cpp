@@ -492,6 +492,10 @@ void CourierExecutive::adopt(const Plan& plan, double now_s) {
         if (allocation.empty()) allocation = "assigned to " + id;
         allocation += " (" + job.reason + ")";
       }
+      if (job.reason.rfind("not in the schedule: ", 0) == 0) {
+        job.reason.clear();
+        changed(job);
+      }
       if (job.robot != id || job.estimated_completion_s != eta || job.allocation != allocation) {
         job.robot = id;
         job.estimated_completion_s = eta;
@@ -519,7 +523,18 @@ void CourierExecutive::adopt(const Plan& plan, double now_s) {
     const NextStep step = next_step(job);
     const std::string& place = step == NextStep::load ? job.object_place : job.target_place();
     const auto door = floor_.door_to(place);
-    make_opportunistic(job, door && !doors_.believed_open(*door) ? closed_reason(*door) : why, now_s);
+    if (door && !doors_.believed_open(*door)) {
+      make_opportunistic(job, closed_reason(*door), now_s);
+      continue;
+    }
+    // No door to blame (it clashes with jobs accepted earlier, or its place cannot be reached):
+    // it stays queued and is planned again at every reschedule, when the jobs before it are done.
+    const std::string waiting = "not in the schedule: " + why;
+    if (job.reason != waiting) {
+      job.reason = waiting;
+      job.estimated_completion_s.reset();
+      changed(job);
+    }
   }
 }
 

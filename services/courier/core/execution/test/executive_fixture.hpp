@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -49,6 +50,10 @@ class InOrderScheduler : public ScheduleSource {
         plan.unschedulable[j.id] = "behind a closed door";
         continue;
       }
+      if (clashes.count(j.id)) {
+        plan.unschedulable[j.id] = clashes.at(j.id);
+        continue;
+      }
       if (gone.count(j.destination)) {
         plan.unschedulable[j.id] = "nobody at " + j.destination + " again today";
         plan.gone_for_good.insert(j.id);
@@ -72,6 +77,7 @@ class InOrderScheduler : public ScheduleSource {
   PlanRequest last_request;
   bool newest_first = false;  // the jobs in the reverse order of the request
   std::set<std::string> gone;  // places whose person is not there again today
+  std::map<std::string, std::string> clashes;  // jobs left out -> why (no door, not gone)
 
  private:
   const Floor& floor_;

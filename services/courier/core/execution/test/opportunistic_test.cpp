@@ -151,6 +151,23 @@ TEST_F(OpportunisticTest, AWaitingJobWhosePersonIsGoneIsGivenUpAtTheNextSchedule
   EXPECT_EQ(exec_.job("j1")->reason, "cannot be done today: nobody at a114-desk again today");
 }
 
+// Left out of the schedule with no door to blame (it clashes with a job accepted before it): not
+// opportunistic, it stays queued, says why, and is planned when the schedule has room for it.
+TEST_F(OpportunisticTest, AJobTheScheduleLeavesOutWithoutADoorStaysQueuedAndIsPlannedLater) {
+  scheduler_.clashes["j2"] = "cannot be done together with job 'j1'";
+  exec_.add_job(delivery("j1", "letter-red", "red", "letter", "meeting-table", "michael-desk"), now_);
+  exec_.add_job(delivery("j2", "book-green", "green", "book", "librarian-desk", "a114-desk"), now_);
+  step();
+  EXPECT_EQ(exec_.job("j2")->state, JobState::queued);
+  EXPECT_EQ(exec_.job("j2")->reason, "not in the schedule: cannot be done together with job 'j1'");
+  scheduler_.clashes.clear();
+  arrive();
+  complete_handover();  // the letter aboard: rescheduled, now with j2
+  EXPECT_TRUE(exec_.job("j2")->reason.empty()) << exec_.job("j2")->reason;
+  EXPECT_EQ(exec_.job("j2")->robot, "rhino");
+  EXPECT_TRUE(exec_.job("j2")->estimated_completion_s.has_value());
+}
+
 // Capacity 1: the letter waiting for A-120 takes the only place aboard; a new job needs it.
 TEST(Opportunistic, AnObjectWaitingAboardGoesBackWhenItsPlaceIsNeededForAnotherJob) {
   const Floor floor = test_support::paper_floor();
