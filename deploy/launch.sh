@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Starts a service set, waits until every process reports ready through its heartbeat, then
-# supervises it: a process that ends is reported (exit code or signal, the last lines of its
-# output) and handled by its on-exit policy (stop the set, respawn it with a back-off, or ignore
-# it). The launcher owns the run: Ctrl-C, SIGTERM or `launch.sh stop RUN_DIR` from another
+# supervises it: a process that ends, or hangs (no heartbeat for its hang limit), is reported
+# (exit code or signal, the last lines of its output) and handled by its on-exit policy (stop the
+# set, respawn it with a back-off, or ignore it). The launcher owns the run: Ctrl-C, SIGTERM or `launch.sh stop RUN_DIR` from another
 # terminal make it stop the whole set and end. With --detach the launcher itself goes to the
 # background (its pid in RUN_DIR/launch.pid, its reports in RUN_DIR/launch.log).
 set -euo pipefail
@@ -19,7 +19,8 @@ Usage: deploy/launch.sh [options] SET        start service set SET (deploy/sets/
 
 Every process of the set runs in its own session with its output in RUN_DIR/NAME.out and its pid
 in RUN_DIR/NAME.pid (NAME with / as -). The launcher waits until each one's heartbeat says ready
-(autonomy node wait), prints "launch: set 'SET' ready", then supervises the set:
+(autonomy node wait) and its liveliness watcher (below) has heard it, prints "launch: set 'SET'
+ready", then supervises the set:
   - by default in the foreground; Ctrl-C, SIGTERM, SIGHUP (the terminal closed) or
     'launch.sh stop RUN_DIR' from another terminal stop the whole set, and the launcher ends
     (exit code 0);
@@ -45,6 +46,21 @@ how long it ran, and the last 10 lines of its output. Then its on-exit policy de
                      and its readiness is checked again (autonomy node wait, --timeout).
 A process that ends before the set is ready is handled the same way.
 
+A process that stops answering is noticed too. The launcher runs 'autonomy node watch' on the
+set (its events in RUN_DIR/launch.watch), which follows every process's heartbeat (each one
+publishes every --heartbeat-period, 0.5 s by default):
+  - not heard for 3 heartbeat periods (at least 1 s), or its DDS lease expired: reported as
+    silent ("launch: NAME (pid P) is silent: ..."); heard again before its hang limit: reported
+    and left alone (a SIGSTOP followed by SIGCONT, a long pause);
+  - silent for its hang limit (default 10 s; --hang-after S for every process, hang-after=S on
+    a line for that one; 0 turns it off): reported as hung with the last 10 lines of its output,
+    then its on-exit policy applies: respawn kills it (SIGKILL) and starts it again exactly as
+    after an exit (same count and back-off); stop kills it and stops the set (exit code 1);
+    ignore only reports it.
+When a respawned process is ready, the launcher says "launch: set 'SET' ready again".
+While a process is silent, 'autonomy node list' shows it as stale (the watcher republishes its
+last heartbeat), also in a listing started after it went silent.
+
 Options:
   --domain N        DDS domain id (default: \$AUTONOMY_DOMAIN or 0)
   --profile P       Cyclone DDS profile: loopback (default), lan, or a path to an XML file.
@@ -52,16 +68,18 @@ Options:
   --run-dir DIR     run folder (default: runs/SET-<date>-<time> in the repository)
   --bin DIR         folder of the programs (default: build/bin in the repository)
   --timeout S       seconds to wait for readiness (default 20), also after a respawn
+  --hang-after S    seconds without a heartbeat after which a process is hung (default 10;
+                    0: never); a set line's hang-after=S wins
   --detach          start, wait until ready, return; the launcher supervises in the background
   -h, --help        this text
 
 A set file has one process per line:
-  NAME [on-exit=POLICY] PROGRAM [ARGS...]
+  NAME [on-exit=POLICY] [hang-after=S] PROGRAM [ARGS...]
 NAME is service/instance as its heartbeat reports it (service alone means service/main), PROGRAM
 a program in the --bin folder. Lines starting with # are comments. {run} in an argument stands
 for the run folder, {repo} for the repository. launch.sh adds --domain and --log-dir RUN_DIR to
-each. Mistakes (unknown program or policy, a NAME twice) are reported as FILE:LINE before
-anything starts.
+each. Mistakes (unknown program or policy, a bad hang-after, a NAME twice) are reported as
+FILE:LINE before anything starts.
 USAGE
 }
 
@@ -153,6 +171,7 @@ profile=loopback
 run_dir=""
 bin="$repo/build/bin"
 timeout=20
+hang_after=10
 detach=0
 set_arg=""
 # Set by a launcher for the copy of itself it leaves in the background (--detach).
@@ -169,6 +188,7 @@ while [ $# -gt 0 ]; do
     --run-dir) need_value "$@"; run_dir=$2; shift 2 ;;
     --bin) need_value "$@"; bin=$2; shift 2 ;;
     --timeout) need_value "$@"; timeout=$2; shift 2 ;;
+    --hang-after) need_value "$@"; hang_after=$2; shift 2 ;;
     --detach) detach=1; shift ;;
     stop)
       [ $# -eq 2 ] || { echo "launch: usage: launch.sh stop RUN_DIR" >&2; exit 2; }
@@ -191,6 +211,7 @@ set_file="$(cd "$(dirname "$set_file")" && pwd)/$(basename "$set_file")"
 set_name=$(basename "$set_file" .set)
 [[ "$domain" =~ ^[0-9]+$ ]] && [ "$domain" -le 232 ] || { echo "launch: --domain must be 0..232, got '$domain'" >&2; exit 2; }
 [[ "$timeout" =~ ^[0-9]+([.][0-9]+)?$ ]] || { echo "launch: --timeout must be a number of seconds, got '$timeout'" >&2; exit 2; }
+[[ "$hang_after" =~ ^[0-9]+([.][0-9]+)?$ ]] || { echo "launch: --hang-after must be a number of seconds (0: never), got '$hang_after'" >&2; exit 2; }
 [ -d "$bin" ] || { echo "launch: --bin $bin is not a folder" >&2; exit 2; }
 bin=$(cd "$bin" && pwd)
 [ -x "$bin/autonomy" ] || { echo "launch: $bin/autonomy not found: build first (bash deploy/build.sh --demo)" >&2; exit 2; }
@@ -218,7 +239,7 @@ if pid=$(launcher_of "$run_dir") && [ "$pid" != $$ ]; then
 fi
 
 # ---- The set file, checked whole before anything starts.
-names=() files=() programs=() commands=() policies=() max_respawns=() backoffs=()
+names=() files=() programs=() commands=() policies=() max_respawns=() backoffs=() hang_afters=()
 declare -A line_of_name=()
 line_no=0
 set_error() { echo "launch: $set_file:$line_no: $*" >&2; exit 2; }
@@ -232,9 +253,19 @@ while IFS= read -r line || [ -n "$line" ]; do
   [[ "$name" == */* ]] || name="$name/main"
   [ -z "${line_of_name[$name]:-}" ] || set_error "$name is already line ${line_of_name[$name]}'s process"
   line_of_name[$name]=$line_no
-  policy=stop max=3 backoff=1
+  policy=stop max=3 backoff=1 hang=$hang_after seen_policy=0 seen_hang=0
   rest=("${words[@]:1}")
-  if [ ${#rest[@]} -gt 0 ] && [[ "${rest[0]}" == on-exit=* ]]; then
+  while [ ${#rest[@]} -gt 0 ] && [[ "${rest[0]}" == on-exit=* || "${rest[0]}" == hang-after=* ]]; do
+    if [[ "${rest[0]}" == hang-after=* ]]; then
+      [ $seen_hang -eq 0 ] || set_error "hang-after is given twice"
+      seen_hang=1
+      hang=${rest[0]#hang-after=}
+      rest=("${rest[@]:1}")
+      [[ "$hang" =~ ^[0-9]+([.][0-9]+)?$ ]] || set_error "hang-after must be seconds (0: never), got '$hang'"
+      continue
+    fi
+    [ $seen_policy -eq 0 ] || set_error "on-exit is given twice"
+    seen_policy=1
     spec=${rest[0]#on-exit=}
     rest=("${rest[@]:1}")
     IFS=: read -r -a parts <<<"$spec"
@@ -254,8 +285,8 @@ while IFS= read -r line || [ -n "$line" ]; do
         done ;;
       *) set_error "unknown on-exit policy '$spec' (stop, ignore, respawn[:max=N][:backoff=S])" ;;
     esac
-  fi
-  [ ${#rest[@]} -ge 1 ] || set_error "expected NAME [on-exit=POLICY] PROGRAM [ARGS...]"
+  done
+  [ ${#rest[@]} -ge 1 ] || set_error "expected NAME [on-exit=POLICY] [hang-after=S] PROGRAM [ARGS...]"
   program=${rest[0]}
   [[ "$program" != */* ]] || set_error "PROGRAM is a name in the --bin folder, not a path: '$program'"
   [ -x "$bin/$program" ] || set_error "program $bin/$program not found"
@@ -265,7 +296,7 @@ while IFS= read -r line || [ -n "$line" ]; do
     command+="$(printf '%q' "${w//\{repo\}/$repo}") "
   done
   names+=("$name"); files+=("${name//\//-}"); programs+=("$program"); commands+=("$command")
-  policies+=("$policy"); max_respawns+=("$max"); backoffs+=("$backoff")
+  policies+=("$policy"); max_respawns+=("$max"); backoffs+=("$backoff"); hang_afters+=("$hang")
 done <"$set_file"
 [ ${#names[@]} -gt 0 ] || { echo "launch: $set_file has no process" >&2; exit 2; }
 
@@ -274,7 +305,7 @@ done <"$set_file"
 if [ $detach -eq 1 ]; then
   rm -f "$run_dir/launch.state"
   AUTONOMY_LAUNCH_DETACHED=1 setsid bash "$self" --domain "$domain" --profile "$profile" --run-dir "$run_dir" --bin "$bin" \
-    --timeout "$timeout" "$set_file" >"$run_dir/launch.log" 2>&1 </dev/null &
+    --timeout "$timeout" --hang-after "$hang_after" "$set_file" >"$run_dir/launch.log" 2>&1 </dev/null &
   launcher=$!
   trap 'kill -TERM $launcher 2>/dev/null; wait $launcher 2>/dev/null; cat "$run_dir/launch.log"; exit 130' INT TERM
   state=""
@@ -301,10 +332,21 @@ set_state starting
 declare -A index_of_pid=()   # pid of a set process -> its index
 declare -A respawn_timer=()  # pid of a back-off sleep -> index of the process it respawns
 declare -A ready_check=()    # pid of an 'autonomy node wait' -> index of the process it awaits
-started_at=() respawn_count=() ready=() gone=()
+declare -A index_of_name=()  # NAME -> its index
+started_at=() respawn_count=() ready=() gone=() pid_of=() killed_hung=()
+# A process is ready when its heartbeat said so (ready_seen: autonomy node wait) and the watcher
+# has heard it (watched), so that it cannot hang unnoticed from then on.
+ready_seen=() watched=()
 set_ready=0
 stop_request=""
 stopped=0
+for i in "${!names[@]}"; do index_of_name[${names[$i]}]=$i; killed_hung[$i]=0; done
+# The liveliness watcher (autonomy node watch) appends its events to watch_file; the loop reads
+# them every tick (a short sleep child, so that 'wait -n' also wakes for them).
+watch_file="$run_dir/launch.watch"
+watch_pid="" watch_restart="" tick=""
+watch_rest=""  # an unfinished last line of watch_file
+this_host=$(uname -n)
 
 # start_process I [respawn]: starts process I in its own session (SIGTERM reaches it when this
 # launcher dies, however it dies) and the check that it becomes ready.
@@ -322,8 +364,10 @@ start_process() {
   pid=$!
   echo $pid >"$run_dir/$file.pid"
   index_of_pid[$pid]=$i
+  pid_of[$i]=$pid
+  killed_hung[$i]=0
   started_at[$i]=$SECONDS
-  ready[$i]=0
+  ready[$i]=0 ready_seen[$i]=0 watched[$i]=0
   echo "launch: started ${names[$i]} (pid $pid): ${programs[$i]} ${args[*]}"
   "$bin/autonomy" node wait --domain "$domain" --timeout "$timeout" "${names[$i]}" &
   ready_check[$!]=$i
@@ -335,7 +379,9 @@ stop_set() {
   stopped=1
   set_state stopping
   local pid
-  for pid in "${!respawn_timer[@]}" "${!ready_check[@]}"; do kill -TERM "$pid" 2>/dev/null || true; done
+  for pid in "${!respawn_timer[@]}" "${!ready_check[@]}" $watch_pid $watch_restart $tick; do
+    kill -TERM "$pid" 2>/dev/null || true
+  done
   stop_processes "$run_dir"
   wait 2>/dev/null || true
   set_state stopped
@@ -374,8 +420,13 @@ process_ended() {
   for pid in "${!ready_check[@]}"; do
     [ "${ready_check[$pid]}" != "$i" ] || { kill -TERM "$pid" 2>/dev/null || true; unset "ready_check[$pid]"; }
   done
-  echo "launch: $name (pid $3) ended: $(describe_exit "$status") after $ran s"
-  print_tail "${files[$i]}"
+  if [ "${killed_hung[$i]}" -eq 1 ]; then
+    # Its report and last lines came when it was found hung.
+    echo "launch: $name (pid $3) ended: $(describe_exit "$status") by the launcher (hung) after $ran s"
+  else
+    echo "launch: $name (pid $3) ended: $(describe_exit "$status") after $ran s"
+    print_tail "${files[$i]}"
+  fi
   case ${policies[$i]} in
     ignore)
       gone[$i]=1
@@ -403,8 +454,8 @@ process_ended() {
 ready_checked() {
   local i=$1
   if [ "$2" -eq 0 ]; then
-    ready[$i]=1
-    check_set_ready
+    ready_seen[$i]=1
+    became_ready "$i"
   elif [ $set_ready -eq 0 ]; then
     echo "launch: ${names[$i]} did not become ready within $timeout s, stopping the set"
     print_tail "${files[$i]}"
@@ -415,13 +466,100 @@ ready_checked() {
   fi
 }
 
+# became_ready I: once process I's heartbeat said ready and the watcher heard it, it is ready.
+became_ready() {
+  local i=$1
+  [ "${ready_seen[$i]}" -eq 1 ] && [ "${watched[$i]}" -eq 1 ] && [ "${ready[$i]}" -eq 0 ] || return 0
+  ready[$i]=1
+  if [ $set_ready -eq 1 ]; then
+    check_set_ready_again "$i"
+  else
+    check_set_ready
+  fi
+}
+
+# check_set_ready_again I: process I, respawned, is ready; when every process expected to run is
+# ready too, the set is whole again.
+check_set_ready_again() {
+  local i j
+  for j in "${!names[@]}"; do
+    [ "${gone[$j]:-0}" -eq 1 ] || [ "${ready[$j]}" -eq 1 ] || return 0
+  done
+  echo "launch: set '$set_name' ready again (${names[$1]} respawned as pid ${pid_of[$1]})"
+}
+
+# ---- Liveliness: the watcher, its events, hung processes.
+start_watch() {
+  local i targets=()
+  for i in "${!names[@]}"; do targets+=("${names[$i]}=${hang_afters[$i]}"); done
+  setpriv --pdeathsig TERM "$bin/autonomy" node watch --domain "$domain" "${targets[@]}" \
+    >>"$watch_file" 2>&1 </dev/null &
+  watch_pid=$!
+}
+
+start_tick() { sleep 0.25 & tick=$!; }
+
+# read_watch: handles the events appended to watch_file since the last call.
+read_watch() {
+  local line
+  while IFS= read -r -u "$watch_fd" line; do
+    handle_watch_event "$watch_rest$line"
+    watch_rest=""
+  done
+  watch_rest+=$line
+}
+
+# handle_watch_event LINE: "EVENT NAME pid PID on HOST: DETAIL" from autonomy node watch, about
+# one of the set's processes as it runs now (events about an earlier pid are history).
+handle_watch_event() {
+  local event name pid host detail i
+  read -r event name _ pid _ host detail <<<"$1" || true
+  host=${host%:}
+  [ -n "$name" ] && [ -n "$pid" ] || return 0
+  i=${index_of_name[$name]:-}
+  [ -n "$i" ] && [ "$host" = "$this_host" ] && [ "$pid" = "${pid_of[$i]:-}" ] || return 0
+  [ -n "${index_of_pid[$pid]:-}" ] || return 0
+  case $event in
+    heard) watched[$i]=1; became_ready "$i" ;;
+    silent)
+      local limit="hung after ${hang_afters[$i]} s"
+      [ "$(awk -v s="${hang_afters[$i]}" 'BEGIN { print (s > 0) }')" = 1 ] || limit="never called hung: hang-after=0"
+      echo "launch: $name (pid $pid) is silent: $detail; $limit" ;;
+    heard_again) echo "launch: $name (pid $pid) is $detail; left running" ;;
+    hung) process_hung "$i" "$pid" "$detail" ;;
+  esac
+}
+
+# process_hung I PID DETAIL: report, then the process's on-exit policy.
+process_hung() {
+  local i=$1 pid=$2 name=${names[$1]}
+  echo "launch: $name (pid $pid) is hung: ${3#hung: }"
+  print_tail "${files[$i]}"
+  case ${policies[$i]} in
+    ignore)
+      echo "launch: $name: on-exit=ignore, left as it is" ;;
+    stop)
+      echo "launch: $name: on-exit=stop, killing it (SIGKILL) and stopping the set"
+      kill -KILL "$pid" 2>/dev/null || true
+      stop_set; exit 1 ;;
+    respawn)
+      echo "launch: $name: on-exit=respawn, killing it (SIGKILL) to start it again"
+      killed_hung[$i]=1
+      kill -KILL "$pid" 2>/dev/null || true ;;
+  esac
+}
+
 on_exit() { stop_set >/dev/null 2>&1 || true; }
 trap on_exit EXIT
 trap 'stop_request=SIGINT' INT
 trap 'stop_request=SIGTERM' TERM
 trap 'stop_request=SIGHUP' HUP  # the terminal closed
 
+: >"$watch_file"
+exec {watch_fd}<"$watch_file"
+start_watch
 for i in "${!names[@]}"; do start_process "$i"; done
+start_tick
 
 # One event loop: whichever child ends first (a set process, a readiness check, a back-off
 # timer) is handled; a signal interrupts the wait at once.
@@ -439,9 +577,26 @@ while :; do
     echo "launch: no process of the set is left"
     stop_set; exit 0
   fi
-  if [ -n "${index_of_pid[$who]:-}" ]; then
+  if [ "$who" = "$tick" ]; then
+    read_watch
+    start_tick
+  elif [ -n "${index_of_pid[$who]:-}" ]; then
     i=${index_of_pid[$who]}; unset "index_of_pid[$who]"
     process_ended "$i" "$status" "$who"
+    if [ ${#index_of_pid[@]} -eq 0 ] && [ ${#respawn_timer[@]} -eq 0 ]; then
+      echo "launch: no process of the set is left"
+      stop_set; exit 0
+    fi
+  elif [ "$who" = "$watch_pid" ]; then
+    read_watch
+    echo "launch: the liveliness watcher (autonomy node watch, pid $who) ended: $(describe_exit "$status"); starting it again in 1 s"
+    tail -n 3 "$watch_file" | sed 's/^/  | /'
+    watch_pid=""
+    sleep 1 &
+    watch_restart=$!
+  elif [ "$who" = "$watch_restart" ]; then
+    watch_restart=""
+    start_watch
   elif [ -n "${respawn_timer[$who]:-}" ]; then
     i=${respawn_timer[$who]}; unset "respawn_timer[$who]"
     start_process "$i" respawn

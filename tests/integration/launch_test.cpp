@@ -2,7 +2,7 @@
 // (--bin: the build's bin folder) over Cyclone DDS on loopback, a second launch.sh as "another
 // terminal", kill -9 as a crash; every outcome is polled for with a deadline.
 //
-// One DDS domain per test (ctest runs them in parallel); this file uses 150-159 only:
+// One DDS domain per test (ctest runs them in parallel); this file uses 150-159 and 185-186:
 //
 //   domain  test
 //   ------  -----------------------------------------------------------
@@ -13,13 +13,22 @@
 //    154    LaunchTest.IgnoredExitIsReportedAndTheRestGoesOn
 //    155    LaunchTest.DetachedSetIsSupervisedAndStoppedFromAnotherTerminal
 //    156    LaunchTest.SetFileMistakesAreReportedAtFileLineBeforeAnythingStarts
+//    157    LaunchTest.HungProcessIsReportedWithItsLastLinesAndRespawned
+//    158    LaunchTest.ProcessResumedBeforeItsHangLimitIsLeftAlone
+//    159    LaunchTest.HungProcessUnderPolicyStopStopsTheSet
+//    185    LaunchTest.NodeListShowsAStoppedProcessAsStaleAndIgnoreOnlyReportsIt
+//    186    LaunchTest.NodeListShowsEveryProcessOfOneName
 #include "tests/support/process_test.hpp"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <csignal>
 #include <filesystem>
+#include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace autonomy::test {
@@ -134,6 +143,24 @@ class LaunchTest : public ProcessTest {
                       .empty();
         }));
     return fresh;
+  }
+
+  // `autonomy node list --json` on this test's domain: its rows, or a failure with its output.
+  ::testing::AssertionResult node_list(nlohmann::json& rows, const std::string& name = "node-list") {
+    auto& cli = start(name, AUTONOMY_AUTONOMY_BIN, {"node", "list", "--json", "--domain", std::to_string(domain_)},
+                      false, true);
+    const auto status = cli.wait_for_exit(kDeadline);
+    if (!status || !status->exited || status->code != 0)
+      return ::testing::AssertionFailure() << "autonomy node list did not succeed: " << cli.log_tail();
+    rows = nlohmann::json::parse(read_file(cli.log_file()), nullptr, false);
+    if (!rows.is_array()) return ::testing::AssertionFailure() << "not a JSON array: " << read_file(cli.log_file());
+    return ::testing::AssertionSuccess();
+  }
+  // The row of `node list --json` for this pid (null when none).
+  static nlohmann::json row_of(const nlohmann::json& rows, pid_t pid) {
+    for (const auto& r : rows)
+      if (r.value("pid", 0) == pid) return r;
+    return nullptr;
   }
 
   std::string run_;
@@ -355,7 +382,12 @@ TEST_F(LaunchTest, SetFileMistakesAreReportedAtFileLineBeforeAnythingStarts) {
       {"program", std::string(kSimulatorLine) + "behavior/r1  no-such-program\n",
        ":2: program " + bin_dir() + "/no-such-program not found"},
       {"empty", std::string(kSimulatorLine) + "behavior/r1  on-exit=ignore\n",
-       ":2: expected NAME [on-exit=POLICY] PROGRAM"},
+       ":2: expected NAME [on-exit=POLICY] [hang-after=S] PROGRAM"},
+      {"hang", std::string(kSimulatorLine) + "behavior/r1  hang-after=soon  behavior --robot r1\n",
+       ":2: hang-after must be seconds (0: never), got 'soon'"},
+      {"hang-twice",
+       std::string(kSimulatorLine) + "behavior/r1  hang-after=1  on-exit=ignore  hang-after=2  behavior --robot r1\n",
+       ":2: hang-after is given twice"},
   };
   for (const auto& c : cases) {
     const auto set = write_set(c.name, c.text);
@@ -366,6 +398,200 @@ TEST_F(LaunchTest, SetFileMistakesAreReportedAtFileLineBeforeAnythingStarts) {
     EXPECT_FALSE(contains(out, "started")) << c.name << ": " << out;
     EXPECT_FALSE(fs::exists(run_ + "/simulator-main.pid")) << c.name;
   }
+}
+
+// Issue 23: a process that hangs (SIGSTOP here) under on-exit=respawn. The launcher says it went
+// silent, then, at its hang limit, that it is hung, with its last output lines; kills it
+// (SIGKILL), respawns it with the usual back-off, and says when the set is ready again. The rest
+// of the set is untouched.
+TEST_F(LaunchTest, HungProcessIsReportedWithItsLastLinesAndRespawned) {
+  join(157);
+  Recorder<msg::Heartbeat> beats(participant(), dds::topics::heartbeat);
+  const auto set = write_set(
+      "hang", std::string(kSimulatorLine) +
+                  "behavior/r1  on-exit=respawn:max=3:backoff=0.2  hang-after=3  behavior --robot r1\n");
+  auto& launcher = launch(set, {}, "launcher", true);
+  ASSERT_TRUE(await_text(launcher.log_file(), "launch: set 'hang' ready on domain 157"));
+  const pid_t simulator = pid_in("simulator-main.pid"), first = pid_in("behavior-r1.pid");
+  ASSERT_GT(first, 0);
+  const std::string who = "launch: behavior/r1 (pid " + std::to_string(first) + ")";
+
+  ASSERT_EQ(::kill(first, SIGSTOP), 0);
+  ASSERT_TRUE(await_text(launcher.log_file(), who + " is silent: not heard for"));
+  ASSERT_TRUE(await_text(launcher.log_file(), who + " is hung: not heard for"));
+  ASSERT_TRUE(await_text(launcher.log_file(),
+                         "launch: behavior/r1: on-exit=respawn, killing it (SIGKILL) to start it again"));
+  ASSERT_TRUE(await_text(launcher.log_file(), who + " ended: killed by SIGKILL by the launcher (hung)"));
+  ASSERT_TRUE(await_text(launcher.log_file(),
+                         "launch: behavior/r1: respawning in 0.2 s (respawn 1 of at most 3)"));
+  const pid_t second = await_respawned_ready(beats, "behavior-r1.pid", first);
+  ASSERT_GT(second, 0);
+  ASSERT_TRUE(await_text(launcher.log_file(), "launch: set 'hang' ready again (behavior/r1 respawned as pid " +
+                                                  std::to_string(second) + ")"));
+
+  const std::string out = read_file(launcher.log_file());
+  // In order: silent, hung with the quoted output (the process's own log lines), killed, ended.
+  const auto silent = out.find(who + " is silent"), hung = out.find(who + " is hung");
+  const auto killed = out.find("killing it (SIGKILL)"), ended = out.find(who + " ended");
+  ASSERT_LT(silent, hung) << out;
+  ASSERT_LT(hung, killed) << out;
+  ASSERT_LT(killed, ended) << out;
+  const auto quoted = out.find("  | ", hung);
+  ASSERT_LT(quoted, killed) << out;
+  EXPECT_TRUE(contains(out.substr(quoted, killed - quoted), "[behavior/r1]")) << out;
+  EXPECT_TRUE(contains(out, "hung after 3 s")) << out;
+  EXPECT_FALSE(contains(out, "stopping the set")) << out;
+  EXPECT_FALSE(process_running(first));
+  EXPECT_EQ(pid_in("simulator-main.pid"), simulator);
+  EXPECT_TRUE(process_running(simulator));
+  EXPECT_TRUE(contains(read_file(run_ + "/launch.watch"), "hung behavior/r1 pid " + std::to_string(first)));
+
+  stop_watching(launcher);
+  launcher.signal(SIGINT);
+  ASSERT_TRUE(await_ended(launcher, 0));
+  EXPECT_FALSE(process_running(second));
+}
+
+// SIGSTOP, then SIGCONT before the hang limit: the launcher says it was silent and is heard
+// again, and touches nothing: same pid, no hung report, no respawn.
+TEST_F(LaunchTest, ProcessResumedBeforeItsHangLimitIsLeftAlone) {
+  join(158);
+  const auto set = write_set(
+      "pause", std::string(kSimulatorLine) +
+                   "behavior/r1  on-exit=respawn:max=3:backoff=0.2  hang-after=25  behavior --robot r1\n");
+  auto& launcher = launch(set, {}, "launcher", true);
+  ASSERT_TRUE(await_text(launcher.log_file(), "launch: set 'pause' ready on domain 158"));
+  const pid_t behavior = pid_in("behavior-r1.pid");
+  ASSERT_GT(behavior, 0);
+  const std::string who = "launch: behavior/r1 (pid " + std::to_string(behavior) + ")";
+
+  ASSERT_EQ(::kill(behavior, SIGSTOP), 0);
+  ASSERT_TRUE(await_text(launcher.log_file(), who + " is silent: not heard for"));
+  ASSERT_EQ(::kill(behavior, SIGCONT), 0);
+  ASSERT_TRUE(await_text(launcher.log_file(), who + " is heard again after"));
+  EXPECT_TRUE(contains(read_file(launcher.log_file()), "; left running")) << read_file(launcher.log_file());
+
+  // A second pause, now past the DDS lease (2 s): it is rediscovered and left alone too.
+  ASSERT_EQ(::kill(behavior, SIGSTOP), 0);
+  ASSERT_TRUE(await("behavior/r1 silent a second time", [&] {
+    const std::string out = read_file(launcher.log_file());
+    return out.find(who + " is silent", out.find(who + " is heard again")) != std::string::npos;
+  }));
+  std::this_thread::sleep_for(std::chrono::seconds(3));  // the pause itself, not a wait for an outcome
+  ASSERT_EQ(::kill(behavior, SIGCONT), 0);
+  ASSERT_TRUE(await("behavior/r1 heard again a second time", [&] {
+    const std::string out = read_file(launcher.log_file());
+    const auto first = out.find(who + " is heard again");
+    return first != std::string::npos && out.find(who + " is heard again", first + 1) != std::string::npos;
+  }));
+
+  const std::string out = read_file(launcher.log_file());
+  EXPECT_FALSE(contains(out, "is hung")) << out;
+  EXPECT_FALSE(contains(out, "ended")) << out;
+  EXPECT_FALSE(contains(out, "respawn")) << out;
+  EXPECT_EQ(pid_in("behavior-r1.pid"), behavior);
+  EXPECT_TRUE(process_running(behavior));
+  EXPECT_TRUE(launcher.running());
+}
+
+// on-exit=stop: a hung process is killed and the set stopped, as for a crash (exit code 1).
+TEST_F(LaunchTest, HungProcessUnderPolicyStopStopsTheSet) {
+  join(159);
+  const auto set = write_set(
+      "stopping", std::string(kSimulatorLine) + "behavior/r1  hang-after=2  behavior --robot r1\n");
+  auto& launcher = launch(set);
+  ASSERT_TRUE(await_text(launcher.log_file(), "ready on domain 159"));
+  const pid_t simulator = pid_in("simulator-main.pid"), behavior = pid_in("behavior-r1.pid");
+
+  ASSERT_EQ(::kill(behavior, SIGSTOP), 0);
+  ASSERT_TRUE(await_ended(launcher, 1));
+  const std::string out = read_file(launcher.log_file());
+  EXPECT_TRUE(contains(out, "launch: behavior/r1 (pid " + std::to_string(behavior) + ") is hung: not heard for"))
+      << out;
+  EXPECT_TRUE(contains(out, "launch: behavior/r1: on-exit=stop, killing it (SIGKILL) and stopping the set")) << out;
+  EXPECT_FALSE(contains(out, "respawning")) << out;
+  EXPECT_FALSE(process_running(behavior));
+  EXPECT_FALSE(process_running(simulator));
+}
+
+// `autonomy node list` started after a process went silent still lists it, as stale, with how
+// long ago it was last heard (the launcher's watcher remembers it); under on-exit=ignore the
+// launcher only reports it hung. Resumed, it is listed as ready again.
+TEST_F(LaunchTest, NodeListShowsAStoppedProcessAsStaleAndIgnoreOnlyReportsIt) {
+  join(185);
+  const auto set = write_set(
+      "listed", std::string(kSimulatorLine) + "behavior/r1  on-exit=ignore  hang-after=2  behavior --robot r1\n");
+  auto& launcher = launch(set, {}, "launcher", true);
+  ASSERT_TRUE(await_text(launcher.log_file(), "ready on domain 185"));
+  const pid_t simulator = pid_in("simulator-main.pid"), behavior = pid_in("behavior-r1.pid");
+  const std::string who = "launch: behavior/r1 (pid " + std::to_string(behavior) + ")";
+
+  nlohmann::json rows;
+  ASSERT_TRUE(node_list(rows, "list-before"));
+  ASSERT_FALSE(row_of(rows, behavior).is_null()) << rows.dump();
+  EXPECT_EQ(row_of(rows, behavior)["state"], "ready") << rows.dump();
+
+  ASSERT_EQ(::kill(behavior, SIGSTOP), 0);
+  ASSERT_TRUE(await_text(launcher.log_file(), who + " is hung: not heard for"));
+  ASSERT_TRUE(await_text(launcher.log_file(), "launch: behavior/r1: on-exit=ignore, left as it is"));
+  // Hung is reported after 2 s of silence: past the DDS lease (2 s), so a new participant can no
+  // longer discover the stopped one; the listing has it from the watcher.
+  ASSERT_TRUE(node_list(rows, "list-stopped"));
+  const auto stale = row_of(rows, behavior);
+  ASSERT_FALSE(stale.is_null()) << rows.dump();
+  EXPECT_EQ(stale["state"], "stale") << rows.dump();
+  EXPECT_EQ(stale["last_state"], "ready") << rows.dump();
+  EXPECT_EQ(stale["service"], "behavior");
+  EXPECT_EQ(stale["instance"], "r1");
+  EXPECT_GE(stale["age_s"].get<double>(), 1.0) << rows.dump();
+  EXPECT_EQ(row_of(rows, simulator)["state"], "ready") << rows.dump();
+  // The table says it too, with the age.
+  auto& text = start("list-text", AUTONOMY_AUTONOMY_BIN, {"node", "list", "--domain", std::to_string(domain_)}, false);
+  ASSERT_TRUE(text.wait_for_exit(kDeadline));
+  std::string stale_line;
+  for (std::istringstream lines(read_file(text.log_file())); std::getline(lines, stale_line);)
+    if (contains(stale_line, " " + std::to_string(behavior) + " ")) break;
+  EXPECT_TRUE(contains(stale_line, "stale")) << read_file(text.log_file());
+  EXPECT_TRUE(contains(stale_line, "last heard")) << read_file(text.log_file());
+
+  ASSERT_EQ(::kill(behavior, SIGCONT), 0);
+  ASSERT_TRUE(await_text(launcher.log_file(), who + " is heard again after"));
+  ASSERT_TRUE(await("node list shows behavior/r1 ready again", [&] {
+    nlohmann::json now;
+    return node_list(now, "list-resumed") && !row_of(now, behavior).is_null() &&
+           row_of(now, behavior)["state"] == "ready";
+  }));
+  EXPECT_TRUE(process_running(behavior));
+  EXPECT_EQ(pid_in("behavior-r1.pid"), behavior);
+  EXPECT_FALSE(contains(read_file(launcher.log_file()), "ended")) << read_file(launcher.log_file());
+}
+
+// Two processes under one name (a mistake node list must show, not hide): two rows, and a
+// warning that names them.
+TEST_F(LaunchTest, NodeListShowsEveryProcessOfOneName) {
+  join(186);
+  Recorder<msg::Heartbeat> beats(participant(), dds::topics::heartbeat);
+  const std::vector<std::string> args = {"--instance", "twin", "--domain", std::to_string(domain_), "--log-dir",
+                                         dir().path()};
+  auto& a = start("twin-a", AUTONOMY_FAKE_SERVICE_BIN, args);
+  auto& b = start("twin-b", AUTONOMY_FAKE_SERVICE_BIN, args);
+  ASSERT_TRUE(await_ready(beats, a));
+  ASSERT_TRUE(await_ready(beats, b));
+
+  nlohmann::json rows;
+  ASSERT_TRUE(node_list(rows));
+  ASSERT_FALSE(row_of(rows, a.pid()).is_null()) << rows.dump();
+  ASSERT_FALSE(row_of(rows, b.pid()).is_null()) << rows.dump();
+  for (const pid_t pid : {a.pid(), b.pid()}) {
+    EXPECT_EQ(row_of(rows, pid)["service"], "fake");
+    EXPECT_EQ(row_of(rows, pid)["instance"], "twin");
+    EXPECT_EQ(row_of(rows, pid)["state"], "ready");
+  }
+  auto& text = start("list-text", AUTONOMY_AUTONOMY_BIN, {"node", "list", "--domain", std::to_string(domain_)}, false,
+                     true);
+  ASSERT_TRUE(text.wait_for_exit(kDeadline));
+  EXPECT_TRUE(contains(read_file(text.stderr_file()), "2 processes are named fake/twin"))
+      << read_file(text.stderr_file());
 }
 
 }  // namespace

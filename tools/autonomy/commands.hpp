@@ -10,6 +10,7 @@ Command add_topic_hz(CLI::App& topic);
 Command add_topic_pub(CLI::App& topic);
 Command add_node_list(CLI::App& node);
 Command add_node_wait(CLI::App& node);
+Command add_node_watch(CLI::App& node);
 Command add_courier_send(CLI::App& courier);
 Command add_courier_jobs(CLI::App& courier);
 Command add_courier_cancel(CLI::App& courier);

@@ -1,6 +1,8 @@
-// autonomy node list: our processes, from their heartbeats.
+// autonomy node list: our processes, from their heartbeats, and the silent ones a watcher
+// (`autonomy node watch`, run by deploy/launch.sh) still remembers.
 #include <cstdio>
 #include <iostream>
+#include <map>
 #include <memory>
 
 #include "common/dds/topics.hpp"
@@ -19,58 +21,113 @@ struct Options {
   bool all = false;
 };
 
+struct Listed {
+  const ProcessView* row = nullptr;
+  std::string state;  // starting, ready, stopping; stale; stopped (with -a)
+  bool from_watcher = false;
+  double age_s = 0.0;  // since its last heartbeat, by its source timestamp
+};
+
+// Takes every sample for `wait` (or until Ctrl-C): a heartbeat reader deep enough that two
+// processes of one name both show, and the watcher's silent processes.
+bool listen(const Interrupt& interrupt, const dds::Participant& participant, std::chrono::nanoseconds wait,
+            const dds::Reader<msg::Heartbeat>& beats, const dds::Reader<msg::Heartbeat>& silent,
+            ProcessTable& heard, ProcessTable& remembered) {
+  dds::WaitSet ws(participant);
+  ws.attach(beats.data_condition(), 1);
+  ws.attach(silent.data_condition(), 2);
+  ws.attach(interrupt.condition(), 3);
+  const auto deadline = std::chrono::steady_clock::now() + wait;
+  for (;;) {
+    heard.update(beats.take());
+    remembered.update(silent.take());
+    if (interrupt.requested()) return false;
+    const auto left = deadline - std::chrono::steady_clock::now();
+    if (left <= std::chrono::nanoseconds::zero()) return true;
+    ws.wait(left);
+  }
+}
+
 int run(const Options& o, Context& ctx) {
   dds::Participant participant(o.domain);
   Interrupt interrupt(ctx.signals, participant);
-  // Heartbeats are of the state class: the last one of every live process arrives at once.
   dds::Topic<msg::Heartbeat> topic(participant, dds::topics::heartbeat);
-  dds::Reader<msg::Heartbeat> reader(participant, topic);
-  if (!sleep_for(interrupt, participant, seconds(o.wait_s))) return kExitInterrupted;
+  dds::Reader<msg::Heartbeat> reader(participant, topic, every_process_qos().get());
+  dds::Topic<msg::Heartbeat> silent_topic(participant, silent_heartbeat);
+  dds::Reader<msg::Heartbeat> silent_reader(participant, silent_topic);
 
-  ProcessTable table;
-  table.update(reader.read());
+  ProcessTable heard, remembered;
+  if (!listen(interrupt, participant, seconds(o.wait_s), reader, silent_reader, heard, remembered))
+    return kExitInterrupted;
   const dds_time_t now = dds_time();
-
-  std::vector<const ProcessView*> shown;
-  for (const auto& [key, row] : table.rows()) {
-    if (row.instance_state == dds::InstanceState::Disposed || !row.has_data) continue;  // stopped cleanly
-    if (row.instance_state == dds::InstanceState::NoWriters && !o.all) continue;
-    shown.push_back(&row);
-  }
   auto age_of = [now](const ProcessView& r) { return static_cast<double>(now - r.source_timestamp) / 1e9; };
+
+  std::map<ProcessKey, Listed> listed;
+  for (const auto& [key, row] : heard.rows()) {
+    Listed l{&row, msg::to_string(row.last.state), false, age_of(row)};
+    if (row.instance_state == dds::InstanceState::Disposed) {
+      if (!o.all) continue;
+      l.state = "stopped";
+    } else if (row.instance_state == dds::InstanceState::NoWriters ||
+               now - row.source_timestamp > silent_after_ns(row.last.period_ms)) {
+      l.state = "stale";
+    }
+    listed[key] = l;
+  }
+  // A watcher's silent process: unless this listing heard it speak since (it resumed).
+  for (const auto& [key, row] : remembered.rows()) {
+    if (row.instance_state != dds::InstanceState::Alive) continue;  // heard again, stopped or gone
+    const auto it = listed.find(key);
+    if (it != listed.end() && it->second.row->source_timestamp > row.source_timestamp) continue;
+    listed[key] = Listed{&row, "stale", true, age_of(row)};
+  }
+
+  std::map<std::string, int> per_name;
+  for (const auto& [key, l] : listed) {
+    if (l.state != "stopped") ++per_name[key.name()];
+  }
 
   if (o.json) {
     json::Json out = json::Json::array();
-    for (const auto* r : shown) {
-      out.push_back({{"service", r->last.service},
-                     {"instance", r->last.instance},
-                     {"host", r->last.host},
-                     {"pid", r->last.pid},
-                     {"state", r->state()},
-                     {"age_s", age_of(*r)},
-                     {"uptime_s", r->last.uptime_s},
-                     {"period_ms", r->last.period_ms}});
+    for (const auto& [key, l] : listed) {
+      const auto& b = l.row->last;
+      out.push_back({{"service", b.service},
+                     {"instance", b.instance},
+                     {"host", b.host},
+                     {"pid", b.pid},
+                     {"state", l.state},
+                     {"last_state", msg::to_string(b.state)},
+                     {"age_s", l.age_s},
+                     {"uptime_s", b.uptime_s},
+                     {"period_ms", b.period_ms},
+                     {"from_watcher", l.from_watcher}});
     }
     print_line(out.dump(-1, ' ', false, json::Json::error_handler_t::replace));
     return kExitOk;
   }
 
   size_t sw = 7, iw = 8, hw = 4;
-  for (const auto* r : shown) {
-    sw = std::max(sw, r->last.service.size());
-    iw = std::max(iw, r->last.instance.size());
-    hw = std::max(hw, r->last.host.size());
+  for (const auto& [key, l] : listed) {
+    sw = std::max(sw, key.service.size());
+    iw = std::max(iw, key.instance.size());
+    hw = std::max(hw, key.host.size());
   }
   char line[1024];
   std::snprintf(line, sizeof(line), "%-*s  %-*s  %-*s  %8s  %-8s  %7s", int(sw), "SERVICE", int(iw), "INSTANCE",
                 int(hw), "HOST", "PID", "STATE", "AGE");
   print_line(line);
-  for (const auto* r : shown) {
-    std::snprintf(line, sizeof(line), "%-*s  %-*s  %-*s  %8d  %-8s  %6.1fs", int(sw), r->last.service.c_str(), int(iw),
-                  r->last.instance.c_str(), int(hw), r->last.host.c_str(), r->last.pid, r->state().c_str(), age_of(*r));
+  for (const auto& [key, l] : listed) {
+    std::string note;
+    if (l.state == "stale") note = std::string("  last heard ") + (l.from_watcher ? "by a watcher, " : "") + "as " +
+                                   msg::to_string(l.row->last.state);
+    std::snprintf(line, sizeof(line), "%-*s  %-*s  %-*s  %8d  %-8s  %6.1fs%s", int(sw), key.service.c_str(), int(iw),
+                  key.instance.c_str(), int(hw), key.host.c_str(), key.pid, l.state.c_str(), l.age_s, note.c_str());
     print_line(line);
   }
-  if (shown.empty()) std::cerr << "no autonomy processes seen on domain " << o.domain << "\n";
+  for (const auto& [name, n] : per_name) {
+    if (n > 1) std::cerr << "autonomy node list: " << n << " processes are named " << name << "\n";
+  }
+  if (listed.empty()) std::cerr << "no autonomy processes seen on domain " << o.domain << "\n";
   return kExitOk;
 }
 
@@ -80,16 +137,21 @@ Command add_node_list(CLI::App& node) {
   auto o = std::make_shared<Options>();
   auto* cmd = node.add_subcommand(
       "list",
-      "List our processes from their heartbeats (autonomy/heartbeat): service, instance, host, pid, state "
-      "(starting, ready, stopping; lost with -a) and age, the seconds since the last heartbeat (by its source "
-      "timestamp). Cleanly stopped processes are not listed.");
+      "List our processes from their heartbeats (autonomy/heartbeat), one row per process (two processes with one "
+      "name are two rows, and a warning): service, instance, host, pid, state and age, the seconds since its last "
+      "heartbeat (by its source timestamp). State is the heartbeat's (starting, ready, stopping), or stale when "
+      "the process has not been heard for 3 heartbeat periods (at least 1 s) or its DDS lease expired: hung, "
+      "stopped (SIGSTOP), killed or cut off. A process that went silent before this command started is listed "
+      "when a watcher remembers it (autonomy/heartbeat/silent: deploy/launch.sh runs `autonomy node watch`). "
+      "Cleanly stopped processes are not listed.");
   add_domain_option(cmd, o->domain);
   cmd->add_option("--wait", o->wait_s, "Seconds to listen before printing")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   cmd->add_flag("--json", o->json,
-                "Print one JSON array of {service, instance, host, pid, state, age_s, uptime_s, period_ms}");
-  cmd->add_flag("-a,--all", o->all, "Also processes whose heartbeat writer is gone without stopping (\"lost\")");
+                "Print one JSON array of {service, instance, host, pid, state, last_state, age_s, uptime_s, "
+                "period_ms, from_watcher}");
+  cmd->add_flag("-a,--all", o->all, "Also processes that stopped cleanly while this command listened (\"stopped\")");
   cmd->footer("Exit codes: 0 listed (also when none); 1 DDS error; 2 bad arguments; 130 Ctrl-C.");
   return {cmd, [o](Context& ctx) { return run(*o, ctx); }};
 }
