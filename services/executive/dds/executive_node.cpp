@@ -282,7 +282,7 @@ bool ExecutiveNode::step_plan(const Observations& seen, std::vector<DeviceComman
   // it arrives, once it has (its report), not from a value no plan can start with.
   settle_target(r, settle_state_, settling_);
   settle_purpose_ = "replan: " + r.reason;
-  if (journal_) journal_->plan(plan_id_, horizon_end_, settle_state_, settling_, seen.time);
+  if (journal_) journal_->plan(plan_id_, horizon_end_, settle_state_, settling_, executing_goals(), seen.time);
   settle_deadline_ = seen.time + kSettleLimit;
   if (settling_.empty()) {
     ask_for_plan(seen.time, horizon_end_for(seen.time), settle_state_, settle_purpose_);
@@ -388,13 +388,9 @@ void ExecutiveNode::ask_for_plan(Time origin, Time end, std::vector<msg::Planner
   for (const auto& [label, how] : achieved_) settled.insert(label);
   for (const auto& [label, why] : lost_) settled.insert(label);
   std::set<std::string> executing;
-  if (executive_ && purpose.rfind("replan", 0) == 0) {
-    const planner::FlexiblePlan& plan = executive_->dispatcher().plan();
-    for (std::size_t i = 0; i < plan.tokens.size(); ++i) {
-      const std::string label = goal_label(plan.tokens[i].origin);
-      if (!label.empty() && executive_->dispatcher().executing(i)) executing.insert(label);
-    }
-  }
+  if (executive_ && purpose.rfind("replan", 0) == 0) executing = executing_goals();
+  // After a restart: the goals the journal had under way.
+  if (purpose.rfind("resume", 0) == 0 && journal_) executing = journal_->record().executing_goals;
   // With a device given up, some goals may be out of reach: the planner may leave goals out
   // (rather than search the infeasible problem to exhaustion first).
   if (!impossible.empty()) every_goal_optional = true;
@@ -422,6 +418,16 @@ void ExecutiveNode::ask_for_plan(Time origin, Time end, std::vector<msg::Planner
   event("plan_requested", now_, purpose + ": " + std::to_string(cut.goals.size()) +
                                     (every_goal_optional ? " goals, each optional, for [" : " goals for [") +
                                     std::to_string(origin) + ", " + std::to_string(end) + ") s as " + id);
+}
+
+std::set<std::string> ExecutiveNode::executing_goals() const {
+  std::set<std::string> executing;
+  const planner::FlexiblePlan& plan = executive_->dispatcher().plan();
+  for (std::size_t i = 0; i < plan.tokens.size(); ++i) {
+    const std::string label = goal_label(plan.tokens[i].origin);
+    if (!label.empty() && executive_->dispatcher().executing(i)) executing.insert(label);
+  }
+  return executing;
 }
 
 void ExecutiveNode::ask_again() {
@@ -558,7 +564,6 @@ void ExecutiveNode::start_plan(const msg::PlanningReply& reply, Time origin, Tim
   plan_origin_ = origin;
   horizon_end_ = horizon_end;
   state_ = State::kExecuting;
-  lost_while_down_.clear();
   refusals_ = 0;
   if (journal_) {
     Observations seen = telemetry_ ? observations_of(*telemetry_, now_) : Observations{};
@@ -569,9 +574,11 @@ void ExecutiveNode::start_plan(const msg::PlanningReply& reply, Time origin, Tim
   decisions_ = 0;
   std::map<std::string, std::string> omitted;
   for (const std::string& g : reply.plan.omitted_goals)
-    omitted[g] = asked_optional_ ? "left out by the planner: no plan has it with the faults known"
+    omitted[g] = asked_optional_ ? std::string("left out by the planner: no plan has it") +
+                                       (disabled_.empty() ? "" : " with the faults known")
                                  : "left out by the planner (optional)";
   lose_goals(omitted, now_);
+  lost_while_down_.clear();  // what the first plan after a restart left out was the outage's cost
 }
 
 void ExecutiveNode::note_goals(const ExecutiveEvent& e) {

@@ -100,6 +100,7 @@ class ExecutiveNode {
   std::vector<msg::PlannerTimelineValue> current_values(const ReplanRequest& r) const;
   // The configuration's safe values (the engine off) replace what the state says.
   void apply_safe_values(std::vector<msg::PlannerTimelineValue>& state) const;
+  std::set<std::string> executing_goals() const;  // labels of the plan's goal tokens under way
   void note_goals(const ExecutiveEvent& e);
   void lose_goals(const std::map<std::string, std::string>& lost, Time now);
   void event(const std::string& kind, Time now, const std::string& text);

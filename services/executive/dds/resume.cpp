@@ -26,7 +26,7 @@ void ExecutiveNode::journal_state(const Observations& seen) {
   std::vector<msg::PlannerTimelineValue> values;
   std::map<std::string, SettlingRecord> settling;
   settle_target(executive_->state_now(seen), values, settling);
-  journal_->plan(plan_id_, horizon_end_, values, settling, seen.time);
+  journal_->plan(plan_id_, horizon_end_, values, settling, executing_goals(), seen.time);
 }
 
 void ExecutiveNode::restore_from_journal() {

@@ -59,6 +59,7 @@ FlightJournal::FlightJournal(const std::string& path, const std::string& mission
     sql::exec(db_, "CREATE TABLE IF NOT EXISTS state (timeline TEXT PRIMARY KEY, predicate TEXT, parameters TEXT)");
     sql::exec(db_, "CREATE TABLE IF NOT EXISTS settling (device TEXT PRIMARY KEY, end_mode TEXT, timeline TEXT, "
                    "blocked_predicate TEXT, blocked_parameters TEXT)");
+    sql::exec(db_, "CREATE TABLE IF NOT EXISTS executing (label TEXT PRIMARY KEY)");
     const auto flown = text_of(db_, "mission");
     if (flown && *flown != mission)
       throw std::runtime_error("it is the journal of mission " + *flown + ", not of " + mission +
@@ -96,6 +97,8 @@ void FlightJournal::load() {
       r.if_blocked = msg::PlannerTimelineValue{r.timeline, settling.column_text(3), split(settling.column_text(4))};
     record_.settling[settling.column_text(0)] = std::move(r);
   }
+  Statement executing(db_, "SELECT label FROM executing");
+  while (executing.step()) record_.executing_goals.insert(executing.column_text(0));
   if (record_.alive_until) written_alive_ = *record_.alive_until;
 }
 
@@ -139,7 +142,8 @@ void FlightJournal::sensor_ignored(const std::string& sensor, MissionSeconds now
 
 void FlightJournal::plan(const std::string& plan_id, MissionSeconds horizon_end,
                          const std::vector<msg::PlannerTimelineValue>& state,
-                         const std::map<std::string, SettlingRecord>& settling, MissionSeconds now) {
+                         const std::map<std::string, SettlingRecord>& settling,
+                         const std::set<std::string>& executing_goals, MissionSeconds now) {
   sql::in_transaction(db_, [&] {
     set_text(db_, "plan_id", plan_id);
     set_text(db_, "horizon_end", std::to_string(horizon_end));
@@ -160,8 +164,15 @@ void FlightJournal::plan(const std::string& plan_id, MissionSeconds horizon_end,
       wait.step();
       wait.reset();
     }
+    sql::exec(db_, "DELETE FROM executing");
+    Statement goal(db_, "INSERT INTO executing VALUES (?)");
+    for (const std::string& label : executing_goals) {
+      goal.text(1, label).step();
+      goal.reset();
+    }
     write_alive(now);
   });
+  record_.executing_goals = executing_goals;
   record_.settling = settling;
   record_.plan_id = plan_id;
   record_.horizon_end = horizon_end;

@@ -5,9 +5,10 @@
 //   - each goal's outcome, achieved or lost with the reason (a restart never reports a goal it
 //     achieved as lost, or asks for it again);
 //   - the devices given up and the sensors judged false (never commanded or believed again);
-//   - the plan in execution: its id, its horizon's end, and the timeline values it leaves the
+//   - the plan in execution: its id, its horizon's end, the timeline values it leaves the
 //     spacecraft in (the value each state timeline holds, or will hold once the token the world
-//     ends has ended), updated whenever a token starts or ends and at every abort;
+//     ends has ended) and the goals under way, updated whenever a token starts or ends and at
+//     every abort;
 //   - the last mission time it was alive (every minute of mission time and with every write):
 //     goals whose window passed while it was down are lost "executive down from T1 to T2".
 // A restart does not resume the old plan's dispatch in the middle: the world went on without
@@ -47,6 +48,7 @@ struct FlightRecord {
   MissionSeconds state_at = 0;  // when `state` was journalled
   std::vector<msg::PlannerTimelineValue> state;
   std::map<std::string, SettlingRecord> settling;  // by device
+  std::set<std::string> executing_goals;  // goals under way (asked for again from the restart)
   bool fresh() const { return !alive_until.has_value(); }
 };
 
@@ -66,7 +68,8 @@ class FlightJournal {
   void device_disabled(const std::string& device, const std::string& why, MissionSeconds now);
   void sensor_ignored(const std::string& sensor, MissionSeconds now);
   void plan(const std::string& plan_id, MissionSeconds horizon_end, const std::vector<msg::PlannerTimelineValue>& state,
-            const std::map<std::string, SettlingRecord>& settling, MissionSeconds now);
+            const std::map<std::string, SettlingRecord>& settling, const std::set<std::string>& executing_goals,
+            MissionSeconds now);
   // Alive at `now`: written when a minute of mission time has passed since the last write.
   void alive(MissionSeconds now);
 

@@ -33,7 +33,7 @@ TEST_F(FlightJournalTest, ANewJournalIsFreshAndEverythingWrittenIsFoundAfterReop
            {{"dsone.attitude", "pointAt", {"earth"}}, {"dsone.engine", "thrusting", {"1"}},
             {"dsone.camera", "ready", {}}},
            {{"adcs", {"pointing", "dsone.attitude", msg::PlannerTimelineValue{"dsone.attitude", "pointAt", {"mars"}}}}},
-           1000);
+           {"thrust1", "hidden1"}, 1000);
     j.alive(1030);  // within a minute of the last write: not written
   }
   FlightJournal again(path_, "ds1-day.problem");
@@ -59,6 +59,7 @@ TEST_F(FlightJournalTest, ANewJournalIsFreshAndEverythingWrittenIsFoundAfterReop
   EXPECT_EQ(r.settling.at("adcs").end_mode, "pointing");
   ASSERT_TRUE(r.settling.at("adcs").if_blocked);
   EXPECT_EQ(r.settling.at("adcs").if_blocked->parameters, std::vector<std::string>{"mars"});
+  EXPECT_EQ(r.executing_goals, (std::set<std::string>{"hidden1", "thrust1"}));
 }
 
 TEST_F(FlightJournalTest, AliveIsWrittenOncePerMinuteOfMissionTime) {
