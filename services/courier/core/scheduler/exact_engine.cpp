@@ -457,6 +457,13 @@ class CourierSearch {
     root.loc = start_.loc;
     root.visited = start_.visited;
     root.picked = initially_picked_;
+    if (jobs_.empty()) {
+      // Nothing to do is a complete route: a courier left idle (e.g. one available only after
+      // the others have done everything) is a valid assignment, not an infeasible one.
+      if (!found_ || better(root.cost, best_)) best_ = root.cost, best_route_.clear();
+      found_ = true;
+      return;
+    }
     current_.assign(1, root);
     int best_trail = -2;  // -2: the incumbent given to run()
     StopRef best_last;
