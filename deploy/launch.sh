@@ -29,8 +29,9 @@ ready", then supervises the set:
     'launch.sh stop RUN_DIR' ends it and the set.
 The launcher's pid is in RUN_DIR/launch.pid. 'stop' sends it SIGTERM and waits for it to end; when
 no launcher is alive (it was killed) 'stop' stops the processes of the pid files itself.
-Stopping sends SIGINT to every process, waits up to 10 s, then SIGKILLs what is left; a process
-whose launcher dies anyhow (even kill -9) gets SIGTERM from the kernel: no orphans either way.
+Stopping sends SIGINT (and SIGCONT, for a paused one) to every process, waits up to 10 s, then
+SIGKILLs what is left; a process whose launcher dies anyhow (even kill -9) gets SIGTERM from the
+kernel: no orphans either way.
 
 When a process of the set ends while the set runs, the launcher reports it: its name and pid,
 "exit code N" or "killed by SIGNAME" (a program's own exit code above 128 reads as a signal),
@@ -111,7 +112,12 @@ stop_processes() {
   local targets=()
   for f in "${pidfiles[@]}"; do [ "$(basename "$f")" = launch.pid ] || targets+=("$f"); done
   [ ${#targets[@]} -gt 0 ] || return 0
-  for f in "${targets[@]}"; do kill -INT "$(cat "$f")" 2>/dev/null || true; done
+  # SIGCONT too: a process paused (SIGSTOP) would otherwise sit on its SIGINT until the SIGKILL.
+  for f in "${targets[@]}"; do
+    pid=$(cat "$f")
+    kill -INT "$pid" 2>/dev/null || true
+    kill -CONT "$pid" 2>/dev/null || true
+  done
   deadline=$((SECONDS + 10))
   while :; do
     alive=0
@@ -491,8 +497,10 @@ check_set_ready_again() {
 # ---- Liveliness: the watcher, its events, hung processes.
 start_watch() {
   local i targets=()
-  for i in "${!names[@]}"; do targets+=("${names[$i]}=${hang_afters[$i]}"); done
-  setpriv --pdeathsig TERM "$bin/autonomy" node watch --domain "$domain" "${targets[@]}" \
+  for i in "${!names[@]}"; do
+    if [ "${hang_afters[$i]}" = "$hang_after" ]; then targets+=("${names[$i]}"); else targets+=("${names[$i]}=${hang_afters[$i]}"); fi
+  done
+  setpriv --pdeathsig TERM "$bin/autonomy" node watch --domain "$domain" --hang-after "$hang_after" "${targets[@]}" \
     >>"$watch_file" 2>&1 </dev/null &
   watch_pid=$!
 }
