@@ -37,7 +37,11 @@ constexpr int kMaxJobsPerCourier = 30;
 // the search gives up, not proved.
 constexpr std::size_t kMaxLabels = 1u << 20;
 constexpr std::uint64_t kMaxAssignments = 1u << 14;
-constexpr int kIncumbentRounds = 5;  // ruin-and-recreate rounds without improvement
+// Ruin-and-recreate rounds without improvement for the incumbent. The search is breadth first, so
+// it finds complete routes only in its last layer and prunes with the incumbent until then: at 5
+// rounds the incumbent was 1-2 % above the optimum on most loose 12-job offices (9 % on one),
+// at 60 it is nearly always optimal and the search 20-30 % cheaper (bench 1b, CPU medians).
+constexpr int kIncumbentRounds = 60;
 
 // C++17 has no <bit>: the compiler builtins (GCC and Clang) for the mask loops.
 int lowest_bit(std::uint64_t x) {
