@@ -253,7 +253,10 @@ Tick Executive::step(const Observations& input) {
 void Executive::respond_to_faults(const Observations& seen, Time now, Tick* tick_out, std::string* broken_out) {
   Tick& tick = *tick_out;
   std::string& broken = *broken_out;
-  PlanState state = plan_state(now);
+  // Aborted, the plan expects nothing any more: comparing modes with it would judge a stuck
+  // device's honest report false. Faults the world shows by itself (a failed unit, a stuck
+  // actuator) are still answered.
+  PlanState state = aborted_ ? PlanState{now, {}} : plan_state(now);
   for (auto& part : faults_)
     for (const FaultAction& a : part->assess(seen, state)) {
       tick.events.push_back({std::string("fault ") + to_string(a.kind), now, a.reason});
