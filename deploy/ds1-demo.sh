@@ -68,8 +68,20 @@ while [ ! -s "$run_dir/report.md" ]; do
     echo "ds1-demo: the mission was not finished within 600 s; logs in $run_dir" >&2
     exit 1
   fi
+  # The set stopped (a process beyond its respawns, or stopped from outside): say so, with the
+  # launcher's last words, instead of polling on in silence.
+  case $(cat "$run_dir/launch.state" 2>/dev/null || true) in
+    stopping|stopped)
+      echo "ds1-demo: the set stopped before the mission ended; its launcher said:" >&2
+      tail -n 15 "$run_dir/launch.log" >&2 || true
+      exit 1 ;;
+  esac
   status=$("$cli" topic echo autonomy/executive/status --count 1 --timeout 2 2>/dev/null || true)
-  [ -n "$status" ] && jq -r '"ds1-demo: \(.state) tick \(.tick): \(.goals_achieved | length) goals achieved, \(.goals_lost | length) lost, \(.replans) replans, executing \(.executing | join("; "))"' <<<"$status" 2>/dev/null | cut -c1-200
+  if [ -n "$status" ]; then
+    jq -r '"ds1-demo: \(.state) tick \(.tick): \(.goals_achieved | length) goals achieved, \(.goals_lost | length) lost, \(.replans) replans, executing \(.executing | join("; "))"' <<<"$status" 2>/dev/null | cut -c1-200
+  else
+    echo "ds1-demo: no executive status for 2 s (restarting?); the launcher's log: $run_dir/launch.log"
+  fi
   sleep 2
 done
 sleep 1
