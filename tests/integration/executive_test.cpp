@@ -351,9 +351,16 @@ TEST_F(ExecutiveTest, APlannerThatStaysAwayHoldsTheWorldTenSecondsInAllAndTheDay
   // The day ended anyway; nothing was commanded after the abort but safing.
   const auto after = commands_->matching([&](const auto& c) { return c.source == kExecutive && c.tick > aborted; });
   for (const auto& c : after) EXPECT_EQ(c.device + " " + c.command, "ips standby");
+  // Every goal lost says why no plan had it: its window closed while the requests went
+  // unanswered (how many depends on how fast the world runs), or the mission ended.
   for (const auto& why : final_status().goals_lost)
     if (why.find("camera") == std::string::npos)
-      EXPECT_NE(why.find("the mission ended before a plan had it (safe_waiting_for_plan)"), std::string::npos) << why;
+      EXPECT_TRUE(why.find("the mission ended before a plan had it (safe_waiting_for_plan)") != std::string::npos ||
+                  why.find("its window closed before") != std::string::npos)
+          << why;
+  EXPECT_TRUE(std::any_of(final_status().goals_lost.begin(), final_status().goals_lost.end(), [](const std::string& why) {
+    return why.find("the mission ended before a plan had it (safe_waiting_for_plan)") != std::string::npos;
+  })) << story();
   EXPECT_TRUE(std::ifstream(dir().file("report/report.md")).good());
   ASSERT_TRUE(last_telemetry_);
   EXPECT_EQ(last_telemetry_->propulsion.thrust_level, 0u);
