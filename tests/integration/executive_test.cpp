@@ -123,6 +123,21 @@ class ExecutiveTest : public ProcessTest {
     EXPECT_EQ(numbers.back(), numbers.size());
   }
 
+  // Once the first plan executes: the planner is killed (not watched any more) and the camera
+  // sticks at its next picture, so the executive aborts and owes a plan nobody makes.
+  void kill_the_planner_then_stick_the_camera() {
+    ASSERT_TRUE(await("the first plan executing", [&] {
+      poll();
+      return !events("plan_executing").empty();
+    })) << story();
+    planner_->signal(SIGKILL);
+    stop_watching(*planner_);
+    dds::Topic<msg::SpacecraftFaultInjection> topic(participant(), dds::topics::spacecraft_fault_injection);
+    dds::Writer<msg::SpacecraftFaultInjection> inject(participant(), topic);
+    ASSERT_TRUE(inject.wait_for_readers(1, kDeadline));
+    inject.write({"stuck", "test", "stuck_on", "camera", 0, false, false});
+  }
+
   ChildProcess* planner_ = nullptr;
   ChildProcess* executive_ = nullptr;
   std::optional<ExecutiveWatch> watch_;
@@ -281,17 +296,7 @@ TEST_F(ExecutiveTest, AllFiveFaultsTogetherEachGetTheirResponse) {
 
 TEST_F(ExecutiveTest, APlannerKilledMidReplanIsAskedAgainAndTheSpacecraftStaysSafe) {
   fly(217, {});  // the shipped settings: requests asked again after 5 s, holds of 10 s per outage
-  ASSERT_TRUE(await("the first plan executing", [&] {
-    poll();
-    return !events("plan_executing").empty();
-  })) << story();
-  planner_->signal(SIGKILL);
-  stop_watching(*planner_);
-  // The camera sticks at its next picture: the executive aborts and owes a plan nobody makes.
-  dds::Topic<msg::SpacecraftFaultInjection> topic(participant(), dds::topics::spacecraft_fault_injection);
-  dds::Writer<msg::SpacecraftFaultInjection> inject(participant(), topic);
-  ASSERT_TRUE(inject.wait_for_readers(1, kDeadline));
-  inject.write({"stuck", "test", "stuck_on", "camera", 0, false, false});
+  ASSERT_NO_FATAL_FAILURE(kill_the_planner_then_stick_the_camera());
   // Unanswered after 5 s: asked again, the tick still held (the hold lasts 10 s in all).
   ASSERT_TRUE(await("asked again after no reply", [&] {
     poll();
@@ -324,16 +329,7 @@ TEST_F(ExecutiveTest, APlannerKilledMidReplanIsAskedAgainAndTheSpacecraftStaysSa
 // again every 5 s; the day ends all the same, with its report, the goals no plan had lost.
 TEST_F(ExecutiveTest, APlannerThatStaysAwayHoldsTheWorldTenSecondsInAllAndTheDayEndsSafe) {
   fly(229, {});
-  ASSERT_TRUE(await("the first plan executing", [&] {
-    poll();
-    return !events("plan_executing").empty();
-  })) << story();
-  planner_->signal(SIGKILL);
-  stop_watching(*planner_);
-  dds::Topic<msg::SpacecraftFaultInjection> topic(participant(), dds::topics::spacecraft_fault_injection);
-  dds::Writer<msg::SpacecraftFaultInjection> inject(participant(), topic);
-  ASSERT_TRUE(inject.wait_for_readers(1, kDeadline));
-  inject.write({"stuck", "test", "stuck_on", "camera", 0, false, false});
+  ASSERT_NO_FATAL_FAILURE(kill_the_planner_then_stick_the_camera());
   ASSERT_TRUE(finished()) << story();
   ASSERT_EQ(events("aborted").size(), 1u) << story();
   const int64_t aborted = events("aborted")[0].tick;

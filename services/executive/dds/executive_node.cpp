@@ -147,10 +147,7 @@ void ExecutiveNode::run_tick(const msg::SimClock& clock) {
     dispatch(now_, out);
   } else if (state_ == State::kSafeWaiting && executive_) {
     // Safe and waiting: the aborted plan's executive still answers faults.
-    Observations seen = telemetry_ ? observations_of(*telemetry_, now_) : Observations{};
-    seen.time = now_;
-    if (robots_) robots_->observe(seen);
-    step_plan(seen, out);
+    step_plan(observed(now_), out);
   }
   if (state_ != State::kFinished && now_ >= mission_.horizon())
     end_mission("the mission ended before a plan had it (" + std::string(state_name()) + ")");
@@ -167,6 +164,13 @@ std::uint32_t ExecutiveNode::send(const std::vector<DeviceCommand>& commands, st
     (robots_->handles(c.device) ? to_robots : to_spacecraft).push_back(c);
   robots_->send(to_robots);
   return spacecraft_.send(to_spacecraft, tick);
+}
+
+Observations ExecutiveNode::observed(Time now) const {
+  Observations seen = telemetry_ ? observations_of(*telemetry_, now) : Observations{};
+  seen.time = now;
+  if (robots_) robots_->observe(seen);
+  return seen;
 }
 
 std::map<std::string, std::string> ExecutiveNode::device_modes() const {
@@ -214,9 +218,7 @@ void ExecutiveNode::ask_first() {
 }
 
 void ExecutiveNode::dispatch(Time now, std::vector<DeviceCommand>& out) {
-  Observations seen = telemetry_ ? observations_of(*telemetry_, now) : Observations{};
-  seen.time = now;
-  if (robots_) robots_->observe(seen);
+  const Observations seen = observed(now);
   // The plan's own step first: at its horizon's end its last tokens end there.
   if (!step_plan(seen, out)) return;
   if (now >= horizon_end_ && next_plan_) {
@@ -565,11 +567,7 @@ void ExecutiveNode::start_plan(const msg::PlanningReply& reply, Time origin, Tim
   horizon_end_ = horizon_end;
   state_ = State::kExecuting;
   refusals_ = 0;
-  if (journal_) {
-    Observations seen = telemetry_ ? observations_of(*telemetry_, now_) : Observations{};
-    seen.time = now_;
-    journal_state(seen);
-  }
+  if (journal_) journal_state(observed(now_));
   decision_us_sum_ = decision_us_max_ = 0;
   decisions_ = 0;
   std::map<std::string, std::string> omitted;

@@ -81,6 +81,8 @@ class ExecutiveNode {
   PlannerLink::Clock::duration hold_limit() const;
   void dispatch(Time now, std::vector<DeviceCommand>& out);
   std::uint32_t send(const std::vector<DeviceCommand>& commands, std::int64_t tick);
+  // The newest telemetry and the robots' reports as the core's Observations at `now`.
+  Observations observed(Time now) const;
   std::map<std::string, std::string> device_modes() const;  // the spacecraft's and the robots' 
   bool step_plan(const Observations& seen, std::vector<DeviceCommand>& out);  // false: aborted
   void on_reply();

@@ -66,6 +66,11 @@ FlightJournal::FlightJournal(const std::string& path, const std::string& mission
                                "; name another journal file or remove this one");
     if (!flown) set_text(db_, "mission", mission);
     load();
+  } catch (const std::logic_error& e) {  // std::stoll on a value that is no number
+    sqlite3_close(db_);
+    db_ = nullptr;
+    throw std::runtime_error("journal " + path + ": a damaged value (" + e.what() +
+                             "); the file is damaged or from another version");
   } catch (const std::runtime_error& e) {
     sqlite3_close(db_);
     db_ = nullptr;

@@ -492,7 +492,7 @@ void CourierExecutive::adopt(const Plan& plan, double now_s) {
         if (allocation.empty()) allocation = "assigned to " + id;
         allocation += " (" + job.reason + ")";
       }
-      if (job.reason.rfind("not in the schedule: ", 0) == 0) {
+      if (job.reason.rfind(kNotScheduledPrefix, 0) == 0) {
         job.reason.clear();
         changed(job);
       }
@@ -529,7 +529,7 @@ void CourierExecutive::adopt(const Plan& plan, double now_s) {
     }
     // No door to blame (it clashes with jobs accepted earlier, or its place cannot be reached):
     // it stays queued and is planned again at every reschedule, when the jobs before it are done.
-    const std::string waiting = "not in the schedule: " + why;
+    const std::string waiting = kNotScheduledPrefix + why;
     if (job.reason != waiting) {
       job.reason = waiting;
       job.estimated_completion_s.reset();

@@ -68,6 +68,9 @@ inline constexpr char kHomePlace[] = "@home";
 // The goal place of a robot waiting in sight of a door: "@lookout A-120" (Floor::door_lookouts).
 inline constexpr char kLookoutPrefix[] = "@lookout ";
 inline bool is_lookout(const std::string& place) { return place.rfind(kLookoutPrefix, 0) == 0; }
+// The reason of a queued job the last schedule left out with no door to blame ("not in the
+// schedule: cannot be done together with job 'job-3'"); cleared when a schedule has it.
+inline constexpr char kNotScheduledPrefix[] = "not in the schedule: ";
 
 struct NavGoalOrder {
   std::string robot;

@@ -62,7 +62,9 @@ void CourierExecutive::opportunity_check(double now_s) {
     const Plan with = scheduler_.plan(with_request);
     if (with.gone_for_good.count(id)) {
       // Its door is open but a person it needs is not there again today: it can no longer be done.
-      give_up_job(job, "cannot be done today: " + with.unschedulable.at(id), now_s);
+      const auto why = with.unschedulable.find(id);
+      give_up_job(job, "cannot be done today: " + (why != with.unschedulable.end() ? why->second : "nobody present"),
+                  now_s);
       continue;
     }
     if (without.failed || with.failed || with.unschedulable.count(id)) continue;

@@ -24,11 +24,14 @@ std::optional<double> CourierExecutive::idle_until_s(double now_s) const {
   // A closed door not seen again is assumed open when its sighting goes stale: a change of plan.
   for (const auto& [id, door] : doors_.doors())
     if (!door.open) until = std::min(until, door.seen_at_s + settings_.closed_door_stale_s);
-  // A job waiting for a door is given up when its deadline is long past.
+  // A job waiting for a door believed closed is given up when its deadline is long past (one
+  // whose door is believed open waits for the idle policy instead: no wake-up for it).
   if (settings_.give_up_after_deadline_s >= 0.0)
-    for (const auto& [id, job] : jobs_)
-      if (job.state == JobState::opportunistic && job.deadline_s)
-        until = std::min(until, *job.deadline_s + settings_.give_up_after_deadline_s);
+    for (const auto& [id, job] : jobs_) {
+      if (job.state != JobState::opportunistic || !job.deadline_s) continue;
+      const std::string& place = next_step(job) == NextStep::load ? job.object_place : job.target_place();
+      if (closed_door_for(place)) until = std::min(until, *job.deadline_s + settings_.give_up_after_deadline_s);
+    }
   return until;
 }
 
