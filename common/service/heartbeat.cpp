@@ -2,11 +2,16 @@
 
 #include <unistd.h>
 
+#include <cstdlib>
+
 #include <utility>
 
 namespace autonomy::service {
 
 std::string host_name() {
+  // A network namespace (deploy/hosts.sh) keeps the machine's hostname: the launcher names the
+  // host a process runs on through AUTONOMY_HOST instead.
+  if (const char* host = std::getenv("AUTONOMY_HOST"); host != nullptr && host[0] != '\0') return host;
   char name[256] = {0};
   if (gethostname(name, sizeof(name) - 1) != 0) return "unknown";
   return name;
@@ -49,6 +54,18 @@ void HeartbeatPublisher::set_state(msg::ServiceState state) {
 void HeartbeatPublisher::set_capabilities(std::vector<std::string> capabilities) {
   if (beat_.capabilities == capabilities) return;
   beat_.capabilities = std::move(capabilities);
+  publish();
+}
+
+void HeartbeatPublisher::set_world(uint64_t world_id) {
+  if (beat_.world_id == world_id) return;
+  beat_.world_id = world_id;
+  publish();
+}
+
+void HeartbeatPublisher::set_detail(std::string detail) {
+  if (beat_.detail == detail) return;
+  beat_.detail = std::move(detail);
   publish();
 }
 

@@ -24,6 +24,12 @@ class HeartbeatPublisher {
   void set_state(msg::ServiceState state);
   // What this process offers beyond its service ("courier"); published at once when it changes.
   void set_capabilities(std::vector<std::string> capabilities);
+  // The world this process joined; published at once when it changes.
+  void set_world(uint64_t world_id);
+  // Counted at once, published with the next periodic beat (ignored samples may come in floods).
+  void set_clock_samples_ignored(uint64_t n) { beat_.clock_samples_ignored = n; }
+  // What this process runs (the simulator's scenario); published at once when it changes.
+  void set_detail(std::string detail);
   void publish();
   std::chrono::milliseconds period() const { return period_; }
 
@@ -35,7 +41,8 @@ class HeartbeatPublisher {
   std::chrono::steady_clock::time_point started_;
 };
 
-// This machine's host name, or "unknown".
+// The host this process reports: $AUTONOMY_HOST when set (a host of deploy/hosts.sh), else the
+// machine's hostname, or "unknown".
 std::string host_name();
 
 }  // namespace autonomy::service
