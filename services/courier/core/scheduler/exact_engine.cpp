@@ -33,8 +33,9 @@ namespace autonomy::courier::scheduling::detail {
 namespace {
 
 constexpr int kMaxJobsPerCourier = 30;
-// Partial routes kept at most (12 bytes each for the route, about 80 while in a layer): beyond,
-// the search gives up, not proved.
+// Partial routes kept at most: the trail steps of the labels alive after the last layer plus the
+// labels of the layer being built (12 bytes each for the route, about 80 while in a layer):
+// beyond, the search gives up, not proved.
 constexpr std::size_t kMaxLabels = 1u << 20;
 constexpr std::uint64_t kMaxAssignments = 1u << 14;
 // Ruin-and-recreate rounds without improvement for the incumbent. The search is breadth first, so
@@ -451,6 +452,37 @@ class CourierSearch {
     slot.head = static_cast<int>(next_.size() - 1);
   }
 
+  // After each layer, drops the steps no label of the layer just built (nor the best complete
+  // route) leads back to: those of labels dominated or cut by the bound. Parents come before
+  // their children in trail_, so one pass renumbers them, in time linear in the trail (about as
+  // much as building the layer). Without it the trail of every label ever made filled the 2^20
+  // cap on 15 of 30 loose 14-job offices (bench 1b) while most of it was dead.
+  void compact_trail(int& best_trail) {
+    constexpr int kUnmarked = -1, kMarked = -2;
+    renumber_.assign(trail_.size(), kUnmarked);
+    auto mark = [&](int k) {
+      for (; k >= 0 && renumber_[static_cast<std::size_t>(k)] == kUnmarked;
+           k = trail_[static_cast<std::size_t>(k)].parent)
+        renumber_[static_cast<std::size_t>(k)] = kMarked;
+    };
+    for (const Label& label : next_)
+      if (label.alive) mark(label.trail);
+    mark(best_trail);
+    int kept = 0;
+    for (std::size_t k = 0; k < trail_.size(); ++k) {
+      if (renumber_[k] != kMarked) continue;
+      TrailStep step = trail_[k];
+      if (step.parent >= 0) step.parent = renumber_[static_cast<std::size_t>(step.parent)];
+      renumber_[k] = kept;
+      trail_[static_cast<std::size_t>(kept++)] = step;
+    }
+    trail_.resize(static_cast<std::size_t>(kept));
+    for (Label& label : next_)
+      if (label.alive && label.trail >= 0)
+        label.trail = renumber_[static_cast<std::size_t>(label.trail)];
+    if (best_trail >= 0) best_trail = renumber_[static_cast<std::size_t>(best_trail)];
+  }
+
   // Breadth first by the number of stops done, so that every label of a state is known before
   // any of them is expanded: only non-dominated labels are expanded (a depth-first search expands
   // many that a later label dominates), each bounded against the incumbent first.
@@ -515,6 +547,7 @@ class CourierSearch {
           add_label(child, stop, e.trail);
         }
       }
+      if (!stopped_) compact_trail(best_trail);
       current_.swap(next_);
     }
     if (best_trail == -2) return;  // nothing better than the incumbent
@@ -557,6 +590,7 @@ class CourierSearch {
   std::vector<Label> current_, next_;
   StateTable states_;
   std::vector<TrailStep> trail_;
+  std::vector<int> renumber_;  // scratch of compact_trail
   std::vector<StopRef> best_route_;
   Objective best_;
   bool found_ = false;
