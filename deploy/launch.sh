@@ -64,8 +64,11 @@ last heartbeat), also in a listing started after it went silent.
 
 Options:
   --domain N        DDS domain id (default: \$AUTONOMY_DOMAIN or 0)
-  --profile P       Cyclone DDS profile: loopback (default), lan, or a path to an XML file.
-                    With lan, AUTONOMY_PEERS="host1 host2" adds unicast peers.
+  --profile P       Cyclone DDS profile: loopback (default), lan, secure, or a path to an XML file.
+                    With lan, AUTONOMY_PEERS="host1 host2" adds unicast peers. secure is loopback
+                    with DDS Security: each process gets the identity of its NAME from
+                    \$AUTONOMY_SECURITY_DIR (default runs/security; missing ones are made there
+                    with deploy/security/security.sh, all are checked first; docs/security.md).
   --run-dir DIR     run folder (default: runs/SET-<date>-<time> in the repository)
   --bin DIR         folder of the programs (default: build/bin in the repository)
   --timeout S       seconds to wait for readiness (default 20), also after a respawn
@@ -222,8 +225,12 @@ set_name=$(basename "$set_file" .set)
 bin=$(cd "$bin" && pwd)
 [ -x "$bin/autonomy" ] || { echo "launch: $bin/autonomy not found: build first (bash deploy/build.sh --demo)" >&2; exit 2; }
 
+security_dir=""
 case $profile in
   loopback|lan) uri="file://$repo/deploy/dds/$profile.xml" ;;
+  # Loopback with DDS Security: every process gets its own identity (docs/security.md).
+  secure) uri="file://$repo/deploy/dds/loopback.xml"
+     security_dir=${AUTONOMY_SECURITY_DIR:-$repo/runs/security} ;;
   *) [ -f "$profile" ] || { echo "launch: profile file $profile not found" >&2; exit 2; }
      profile="$(cd "$(dirname "$profile")" && pwd)/$(basename "$profile")"
      uri="file://$profile" ;;
@@ -305,6 +312,17 @@ while IFS= read -r line || [ -n "$line" ]; do
   policies+=("$policy"); max_respawns+=("$max"); backoffs+=("$backoff"); hang_afters+=("$hang")
 done <"$set_file"
 [ ${#names[@]} -gt 0 ] || { echo "launch: $set_file has no process" >&2; exit 2; }
+# Secured: identities for the set's processes and the launcher's tools (operator: the watcher
+# republishes silent heartbeats) are made where missing and checked before anything starts.
+if [ -n "$security_dir" ]; then
+  bash "$repo/deploy/security/security.sh" set "$security_dir" "$set_file" || { echo "launch: the set's DDS Security identities in $security_dir are not usable (above)" >&2; exit 2; }
+  [ "$domain" -le 230 ] || { echo "launch: --profile secure needs --domain 0..230 (Cyclone's governance covers no more)" >&2; exit 2; }
+  security_dir=$(cd "$security_dir" && pwd)
+fi
+# with_identity NAME: CYCLONEDDS_URI for a process of identity NAME (unchanged when not secured).
+with_identity() {
+  if [ -n "$security_dir" ]; then echo "$uri,file://$security_dir/identities/${1//\//-}/cyclone.xml"; else echo "$uri"; fi
+}
 
 # ---- Detached: the same launcher in the background, in its own session; this one returns when
 # the set is ready (exit 0) or the launcher gave up (exit 1, its report printed).
@@ -365,7 +383,7 @@ start_process() {
   else
     : >"$run_dir/$file.out"
   fi
-  setpriv --pdeathsig TERM setsid "$bin/${programs[$i]}" "${args[@]}" --domain "$domain" --log-dir "$run_dir" \
+  CYCLONEDDS_URI=$(with_identity "${names[$i]}") setpriv --pdeathsig TERM setsid "$bin/${programs[$i]}" "${args[@]}" --domain "$domain" --log-dir "$run_dir" \
     >>"$run_dir/$file.out" 2>&1 </dev/null &
   pid=$!
   echo $pid >"$run_dir/$file.pid"
@@ -375,7 +393,7 @@ start_process() {
   started_at[$i]=$SECONDS
   ready[$i]=0 ready_seen[$i]=0 watched[$i]=0
   echo "launch: started ${names[$i]} (pid $pid): ${programs[$i]} ${args[*]}"
-  "$bin/autonomy" node wait --domain "$domain" --timeout "$timeout" "${names[$i]}" &
+  CYCLONEDDS_URI=$(with_identity operator) "$bin/autonomy" node wait --domain "$domain" --timeout "$timeout" "${names[$i]}" &
   ready_check[$!]=$i
 }
 
@@ -500,7 +518,7 @@ start_watch() {
   for i in "${!names[@]}"; do
     if [ "${hang_afters[$i]}" = "$hang_after" ]; then targets+=("${names[$i]}"); else targets+=("${names[$i]}=${hang_afters[$i]}"); fi
   done
-  setpriv --pdeathsig TERM "$bin/autonomy" node watch --domain "$domain" --hang-after "$hang_after" "${targets[@]}" \
+  CYCLONEDDS_URI=$(with_identity operator) setpriv --pdeathsig TERM "$bin/autonomy" node watch --domain "$domain" --hang-after "$hang_after" "${targets[@]}" \
     >>"$watch_file" 2>&1 </dev/null &
   watch_pid=$!
 }

@@ -18,5 +18,6 @@ class DdsError : public std::runtime_error {
 
 // Returns rc when it is not an error (entity handles and counts are positive), throws otherwise.
 dds_return_t check(dds_return_t rc, const char* what);
+dds_return_t check(dds_return_t rc, const std::string& what);
 
 }  // namespace autonomy::dds

@@ -28,7 +28,8 @@ class Reader {
       : Reader(participant, topic, make_qos(qos).get()) {}
   // An explicit QoS, for tools that mirror the QoS of writers they discovered.
   Reader(const Participant& participant, const Topic<T>& topic, const dds_qos_t* qos)
-      : entity_(check(dds_create_reader(participant.handle(), topic.handle(), qos, nullptr), "dds_create_reader")),
+      : entity_(check(dds_create_reader(participant.handle(), topic.handle(), qos, nullptr),
+                      std::string("dds_create_reader of ") + topic.spec().name)),
         any_data_(check(dds_create_readcondition(entity_.handle(), DDS_ANY_STATE), "dds_create_readcondition")) {}
 
   // Removes and returns every available sample. dds_take groups samples by instance (key);

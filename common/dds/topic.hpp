@@ -22,7 +22,7 @@ class Topic {
       : spec_(spec),
         entity_(check(dds_create_topic(participant.handle(), DdsType<T>::descriptor(), spec.name,
                                        nullptr, nullptr),
-                      "dds_create_topic")) {}
+                      std::string("dds_create_topic ") + spec.name)) {}
 
   dds_entity_t handle() const { return entity_.handle(); }
   const TopicSpec<T>& spec() const { return spec_; }

@@ -19,7 +19,8 @@ class Writer {
       : Writer(participant, topic, make_qos(qos).get()) {}
   // An explicit QoS, for tools (e.g. a class's QoS with autodispose turned off).
   Writer(const Participant& participant, const Topic<T>& topic, const dds_qos_t* qos)
-      : entity_(check(dds_create_writer(participant.handle(), topic.handle(), qos, nullptr), "dds_create_writer")) {}
+      : entity_(check(dds_create_writer(participant.handle(), topic.handle(), qos, nullptr),
+                      std::string("dds_create_writer of ") + topic.spec().name)) {}
 
   void write(const T& value) const {
     C sample{};
