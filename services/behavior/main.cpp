@@ -87,6 +87,9 @@ int main(int argc, char** argv) {
         app.add_option("--ompl-route-guide", options.path.ompl.route_guide,
                        "Try the grid route as a guide before sampling (true/false)")
             ->capture_default_str();
+        app.add_option("--journal", options.journal_path,
+                       "SQLite journal of the goals (or the mission's progress): started again with the same "
+                       "file, the behavior drives on the goal it was pursuing or continues its mission where it was");
         auto* mission = app.add_option("--mission", mission_file,
                                        "Run this mission (idl/mission.proto text) instead of taking goals");
         // A mission builds its own plans from its plan sets and takes no goals: these would be ignored.

@@ -144,6 +144,10 @@ GoalReport GoalTracker::block(std::string reason) {
   return report;
 }
 
+void GoalTracker::note_resumed(std::string note) {
+  if (pursued_ && status_ && status_->state == GoalState::Accepted) status_->reason = std::move(note);
+}
+
 GoalReport GoalTracker::cancel(const std::string& goal_id, std::string reason) {
   GoalReport report;
   if (pursued_ && (goal_id.empty() || goal_id == pursued_->id)) {

@@ -94,6 +94,11 @@ class GoalTracker {
   // path within its budget). Without a pursued goal nothing changes.
   [[nodiscard]] GoalReport block(std::string reason);
 
+  // The pursued goal was pursued before a restart of this process (behavior --journal): it was
+  // accepted then, so its next transition (Active, on the next update) carries `note` as its
+  // reason, saying so. Only while the pursued goal is still Accepted; otherwise nothing changes.
+  void note_resumed(std::string note);
+
   // Cancels the pursued goal when goal_id is empty or names it: [Cancelled]. Otherwise no change.
   [[nodiscard]] GoalReport cancel(const std::string& goal_id, std::string reason);
 

@@ -8,9 +8,11 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <stdexcept>
 #include <unistd.h>
 
 namespace autonomy::behavior {
@@ -59,13 +61,30 @@ BehaviorNode::BehaviorNode(service::Service& service, BehaviorNodeOptions option
       mission_status_writer_(service.participant(), mission_status_topic_),
       cmd_writer_(service.participant(), cmd_topic_),
       spawn_request_writer_(service.participant(), spawn_request_topic_),
-      lockstep_(service.participant(), service.loop(), participant_name_,
+      lockstep_(service, participant_name_,
                 [this](const msg::SimClock& c) { on_tick(c); }) {
   spawn_request_id_ = options_.robot_id + "@" + std::to_string(getpid());
   contact_ = ContactJudge(options_.contact);
   doors_ = DoorKnowledge(options_.doors);
   if (options_.mission) {
     for (const ConstraintLayerSpec& l : options_.mission->layers) options_.layers[l.name] = l.areas;
+  }
+  if (!options_.journal_path.empty()) {
+    journal_ = std::make_unique<BehaviorJournal>(options_.journal_path, options_.robot_id,
+                                                 options_.mission ? options_.mission->name : "");
+    journalled_goals_ = journal_->goals();
+    journalled_mission_ = journal_->mission();
+    if (journalled_mission_) {
+      const auto& states = options_.mission->states;
+      if (std::none_of(states.begin(), states.end(), [&](const StateSpec& st) { return st.name == journalled_mission_->state; }))
+        throw std::runtime_error("journal " + options_.journal_path + ": mission state '" + journalled_mission_->state +
+                                 "' is not a state of mission " + options_.mission->name +
+                                 " (the mission file changed?); name another journal file or remove this one");
+    }
+    spdlog::info("journal {} (run {}): {}", options_.journal_path, journal_->run(),
+                 journalled_mission_ ? "mission in state " + journalled_mission_->state
+                 : journalled_goals_.empty() ? std::string("nothing to resume")
+                                             : std::to_string(journalled_goals_.size()) + " goals journalled");
   }
   auto& loop = service.loop();
   loop.on_samples<msg::SpawnReply>(spawn_reply_reader_, [this](auto s) { on_spawn_replies(std::move(s)); });
@@ -224,7 +243,11 @@ void BehaviorNode::become_ready_when_possible() {
   }
   spdlog::info("robot {} ready at ({:.2f}, {:.2f}) on map '{}'", options_.robot_id, st.x, st.y, map_->name);
   service_.set_ready();
-  if (options_.initial_goal) queued_goal_ = options_.initial_goal;
+  // A journal with goals: the --goal was taken by an earlier run (respawned with the same flags).
+  if (!resume_journalled_goals() && options_.initial_goal && !queued_goal_) {
+    if (journal_) journal_->goal_arrived(*options_.initial_goal);
+    queued_goal_ = options_.initial_goal;
+  }
   if (queued_goal_) {
     accept_goal(*queued_goal_);
     queued_goal_.reset();
@@ -238,7 +261,17 @@ void BehaviorNode::on_goals(std::vector<dds::Sample<msg::NavGoal>> samples) {
     if (options_.mission) {
       spdlog::warn("goal {} ignored: robot {} runs mission '{}'", msg::clipped_for_log(s.value.goal_id), options_.robot_id,
                    options_.mission->name);
-    } else if (tracker_ && (lockstep_.quiet() || queued_goal_)) {
+      continue;
+    }
+    // Journalled before anything is done with it. A goal whose id is too long is rejected with
+    // nothing else done: not journalled (the journal could not match its clipped status).
+    if (journal_) {
+      if (queued_goal_)  // replaced below, never started
+        journal_->goal_state(queued_goal_->goal_id, GoalState::Preempted,
+                             "replaced by goal " + msg::clipped_id(s.value.goal_id) + " before it started");
+      if (!msg::length_problem("goal_id", s.value.goal_id, msg::kMaxIdLength)) journal_->goal_arrived(s.value);
+    }
+    if (tracker_ && (lockstep_.quiet() || queued_goal_)) {
       // The world runs on without us: the goal starts at the next tick we see, not at the old
       // tick our clock still shows (its progress would be judged over the ticks we skipped).
       // A later goal before that tick replaces it, as it would replace a goal being pursued.
@@ -269,7 +302,10 @@ void BehaviorNode::on_cancels(std::vector<dds::Sample<msg::NavCancel>> samples) 
       continue;
     }
     // Not ready yet, or the goal came while quiet: a queued goal it names never starts.
-    if (queued_goal_ && (s.value.goal_id.empty() || s.value.goal_id == queued_goal_->goal_id)) queued_goal_.reset();
+    if (queued_goal_ && (s.value.goal_id.empty() || s.value.goal_id == queued_goal_->goal_id)) {
+      if (journal_) journal_->goal_state(queued_goal_->goal_id, GoalState::Cancelled, s.value.reason);
+      queued_goal_.reset();
+    }
     if (!tracker_) continue;
     const GoalReport report = tracker_->cancel(s.value.goal_id, s.value.reason);
     if (report.changes.empty()) spdlog::info("cancel of {}: not being pursued, nothing to do", what);
@@ -309,6 +345,7 @@ void BehaviorNode::publish(const GoalReport& report) {
   for (const GoalStatus& change : report.changes) {
     msg::GoalStatus s{options_.robot_id, change.goal_id, to_msg(change.state), change.reason,
                       state_ ? state_->tick : 0, change.distance_to_goal};
+    if (journal_) journal_->goal_state(change.goal_id, change.state, change.reason);
     if (change.state == GoalState::Blocked || change.state == GoalState::Rejected)
       spdlog::warn("goal {} {}: {}", change.goal_id, to_string(change.state), change.reason);
     else

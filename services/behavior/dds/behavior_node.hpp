@@ -19,6 +19,14 @@
 //    autonomy/robot/range_scan (empty when none), teammates' contact from autonomy/radio/link
 //    (else from team inbox freshness, else all in contact) and the sim clock; mission events go to
 //    the log and autonomy/mission/status. Goals and cancels are ignored (with a warning).
+//
+// With a journal (BehaviorNodeOptions::journal_path, behavior --journal): goal mode journals each
+// goal as it arrives and each status before publishing it; mission mode journals its progress
+// and events after each step that changed something, before publishing them and commanding. A
+// behavior started again with the same journal drives on the goal it was pursuing (published
+// Active again, its reason saying it was resumed after a restart; older goals still open are
+// Preempted by it; a goal that had ended is published again as it ended and not driven), and
+// continues the mission in the state it had reached (event "resumed"), not from its start.
 #include "common/dds/reader.hpp"
 #include "common/dds/topics.hpp"
 #include "common/dds/writer.hpp"
@@ -33,6 +41,7 @@
 #include "services/behavior/core/path/ompl_path_planner.hpp"
 #include "services/behavior/core/path/path_follower.hpp"
 #include "services/behavior/core/plan_resource.hpp"
+#include "services/behavior/journal/behavior_journal.hpp"
 
 #include <chrono>
 #include <map>
@@ -74,6 +83,7 @@ struct BehaviorNodeOptions {
   ContactJudgeSettings contact;          // how long a link must stay down (up) to lose (regain) contact
   DoorKnowledgeSettings doors;           // goal mode: doors seen closed are planned around
   GoToPathOptions path;                  // goal mode: how go-to paths are planned and followed
+  std::string journal_path;              // "": no journal (nothing survives the process)
 };
 
 class BehaviorNode {
@@ -90,6 +100,11 @@ class BehaviorNode {
   void on_tick(const msg::SimClock& clock);
   void become_ready_when_possible();
   void accept_goal(const msg::NavGoal& goal);
+  // Goal mode, once ready: the goals journalled by an earlier run of this process (goal_mode.cpp).
+  // Returns whether the journal had any.
+  bool resume_journalled_goals();
+  // Publishes (and journals) a transition of a goal the tracker no longer holds.
+  void publish_outside_tracker(const std::string& goal_id, GoalState state, const std::string& reason);
   // Publishes a set_goal report; remembers the constraint set when the goal was taken on.
   void pursue(const msg::NavGoal& goal, const ConstraintSet& set, const GoalReport& report);
   // The field towards `target` honouring `constraint_set` on what the robot knows now (closed
@@ -142,6 +157,11 @@ class BehaviorNode {
   // The map's obstacles (doors believed closed included) grown by a few centimetres: range hits
   // there are the map's own, already planned around; the avoid schema sees only the others.
   std::optional<OccupancyGrid> map_obstacles_;
+
+  std::unique_ptr<BehaviorJournal> journal_;
+  std::vector<JournalledGoal> journalled_goals_;        // as found at start, resumed once ready
+  std::optional<JournalledMission> journalled_mission_;  // as found at start, resumed at the first step
+  std::string resuming_goal_;  // the id of the journalled goal accept_goal() is taking on again
 
   std::optional<MissionExecutor> executor_;
   ContactJudge contact_;  // the mission's view of contact: link flags with hysteresis

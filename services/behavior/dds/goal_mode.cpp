@@ -55,10 +55,63 @@ void BehaviorNode::accept_goal(const msg::NavGoal& goal) {
   pursue(goal, *set, tracker_->set_goal(goal.goal_id, goal.x, goal.y, goal.tolerance, now_s, std::move(*field)));
 }
 
-void BehaviorNode::pursue(const msg::NavGoal& goal, const ConstraintSet& set, const GoalReport& report) {
+bool BehaviorNode::resume_journalled_goals() {
+  if (journalled_goals_.empty()) return false;
+  const std::vector<JournalledGoal> goals = std::move(journalled_goals_);
+  journalled_goals_.clear();
+  // The newest goal still open is driven on; an older one still open lost the race to it (the
+  // process died between journalling the new goal and publishing the old one's preemption).
+  const auto newest_open = std::find_if(goals.rbegin(), goals.rend(), [](const JournalledGoal& g) { return g.open(); });
+  if (newest_open == goals.rend()) {
+    // Nothing to drive: the last goal to end is published again as it ended (goal_status is a
+    // state topic; a reader that missed the end before the kill learns it now).
+    const JournalledGoal& last = goals.back();
+    spdlog::info("journal: goal {} had ended ({}); nothing to resume", last.goal.goal_id, to_string(*last.state));
+    publish_outside_tracker(last.goal.goal_id, *last.state, last.reason);
+    return true;
+  }
+  for (const JournalledGoal& g : goals)
+    if (g.open() && g.seq < newest_open->seq)
+      publish_outside_tracker(g.goal.goal_id, GoalState::Preempted, "preempted by goal " + newest_open->goal.goal_id);
+  msg::NavGoal goal = newest_open->goal;
+  goal.robot_id = options_.robot_id;
+  if (!newest_open->state) {  // arrived, never answered: taken as it would have been
+    spdlog::info("journal: goal {} arrived before the restart; taking it now", goal.goal_id);
+    accept_goal(goal);
+    return true;
+  }
+  spdlog::info("journal: resuming goal {} ({} before the restart)", goal.goal_id, to_string(*newest_open->state));
+  resuming_goal_ = goal.goal_id;
+  accept_goal(goal);
+  resuming_goal_.clear();
+  return true;
+}
+
+void BehaviorNode::publish_outside_tracker(const std::string& goal_id, GoalState state, const std::string& reason) {
+  GoalReport report;
+  GoalStatus status;
+  status.goal_id = goal_id;
+  status.state = state;
+  status.reason = reason;
+  report.changes.push_back(std::move(status));
+  publish(report);
+}
+
+void BehaviorNode::pursue(const msg::NavGoal& goal, const ConstraintSet& set, const GoalReport& accepted) {
   // A rejected goal leaves the pursued one running, and with it that goal's constraint set.
   const auto target = tracker_->target();
   if (target && target->id == goal.goal_id) pursued_constraints_ = set;
+  GoalReport report = accepted;
+  if (target && target->id == goal.goal_id && goal.goal_id == resuming_goal_) {
+    // Accepted before the restart: not again. The next update publishes it Active, saying why.
+    tracker_->note_resumed("resumed after a restart of behavior " + options_.robot_id + " (journal run " +
+                           std::to_string(journal_->run()) + ")");
+    report.changes.erase(std::remove_if(report.changes.begin(), report.changes.end(),
+                                        [&](const GoalStatus& c) {
+                                          return c.goal_id == goal.goal_id && c.state == GoalState::Accepted;
+                                        }),
+                         report.changes.end());
+  }
   publish(report);
   if (follower_ && target && target->id == goal.goal_id) {
     follower_->clear();

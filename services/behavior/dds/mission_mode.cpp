@@ -5,6 +5,7 @@
 #include <spdlog/spdlog.h>
 
 #include <cmath>
+#include <iterator>
 
 namespace autonomy::behavior {
 
@@ -17,6 +18,7 @@ const char* event_name(MissionEvent::Kind k) {
     case MissionEvent::Kind::PlanChosen: return "plan_chosen";
     case MissionEvent::Kind::NoViablePlan: return "no_viable_plan";
     case MissionEvent::Kind::Finished: return "finished";
+    case MissionEvent::Kind::Resumed: return "resumed";
   }
   return "?";
 }
@@ -72,8 +74,26 @@ uint32_t BehaviorNode::control_mission(int64_t tick) {
     }
   }
   const bool was_finished = executor_->finished();
-  const MissionStep step = executor_->step(p);
-  for (const MissionEvent& e : step.events) {
+  std::vector<MissionEvent> events;
+  if (journalled_mission_) {  // the first step after a restart: on from where the journal says
+    const JournalledMission& j = *journalled_mission_;
+    events = executor_->resume({j.state, j.entered_at_s, j.plan}, p,
+                               "after a restart of behavior " + options_.robot_id + " (journal run " +
+                                   std::to_string(journal_->run()) + "): in " + j.state + " since t=" +
+                                   fmt::format("{:.1f}", j.entered_at_s) + " s, " + std::to_string(j.events) +
+                                   " mission events before");
+    journalled_mission_.reset();
+  }
+  MissionStep step = executor_->step(p);
+  events.insert(events.end(), std::make_move_iterator(step.events.begin()), std::make_move_iterator(step.events.end()));
+  if (journal_ && !events.empty()) {
+    // Before the events go out and the robot acts on the new state.
+    const MissionProgress progress = *executor_->progress();
+    std::vector<JournalledMissionEvent> logged;
+    for (const MissionEvent& e : events) logged.push_back({e.time_s, event_name(e.kind), e.state, e.reason});
+    journal_->mission_progress({progress.state, progress.entered_at_s, progress.plan, executor_->finished(), 0}, logged);
+  }
+  for (const MissionEvent& e : events) {
     spdlog::info("mission {}: {}", options_.mission->name, e.to_string());
     publish_mission(e, tick);
   }

@@ -23,6 +23,8 @@ struct MissionExecutor::Active {
   SchemaBlend blend;
   const PlanAdvice* plan = nullptr;  // owned by blend
   bool static_pending = false;
+  std::string chosen_plan;  // static selection's choice, by name
+
 };
 
 std::string MissionEvent::to_string() const {
@@ -34,6 +36,7 @@ std::string MissionEvent::to_string() const {
     case Kind::PlanChosen: s << state << ": static selection chose plan " << reason; break;
     case Kind::NoViablePlan: s << state << ": no plan has a route from here yet"; break;
     case Kind::Finished: s << "finished in " << state; break;
+    case Kind::Resumed: s << "resumed in " << state << ": " << reason; break;
   }
   return s.str();
 }
@@ -94,8 +97,8 @@ std::optional<geometry::Vec2> MissionExecutor::goal() const {
   return b.goal;
 }
 
-void MissionExecutor::enter(std::size_t index, const Perception& p,
-                            std::vector<MissionEvent>& events) {
+void MissionExecutor::enter(std::size_t index, const Perception& p, std::vector<MissionEvent>& events,
+                            const std::string& preferred_plan) {
   const StateSpec& s = spec_.states[index];
   const SchemaParameters& k = spec_.schemas;
   const SchemaGains& g = s.behavior.gains;
@@ -130,7 +133,7 @@ void MissionExecutor::enter(std::size_t index, const Perception& p,
     const PlanSelectionMode mode = ps != nullptr ? ps->selection : PlanSelectionMode::Static;
     if (mode == PlanSelectionMode::Static) {
       active_->static_pending = true;
-      try_static_choice(p, events);
+      try_static_choice(p, events, preferred_plan);
       if (active_->static_pending) {
         events.push_back({MissionEvent::Kind::NoViablePlan, p.time_s, s.name, "", ""});
       }
@@ -151,18 +154,45 @@ void MissionExecutor::enter(std::size_t index, const Perception& p,
   }
 }
 
-void MissionExecutor::try_static_choice(const Perception& p, std::vector<MissionEvent>& events) {
+void MissionExecutor::try_static_choice(const Perception& p, std::vector<MissionEvent>& events,
+                                        const std::string& preferred_plan) {
   Active& a = *active_;
   const CompiledState& c = states_[a.index];
-  auto chosen = choose_static_plan(*c.plans, p.pose.position());
+  std::unique_ptr<FixedPlanSelector> chosen;
+  for (std::size_t i = 0; i < c.plans->plans().size() && !preferred_plan.empty(); ++i)
+    if (c.plans->plans()[i].name() == preferred_plan) chosen = std::make_unique<FixedPlanSelector>(i);
+  if (!chosen) chosen = choose_static_plan(*c.plans, p.pose.position());
   if (!chosen) return;
   const std::string& plan_name = c.plans->plans()[chosen->index()].name();
+  a.chosen_plan = plan_name;
   auto schema = std::make_unique<PlanAdvice>(c.plans, std::shared_ptr<const PlanSelector>(std::move(chosen)));
   a.plan = schema.get();
   a.blend.add(std::move(schema), spec_.states[a.index].behavior.gains.plan);
   a.static_pending = false;
   events.push_back({MissionEvent::Kind::PlanChosen, p.time_s, spec_.states[a.index].name, "",
                     plan_name});
+}
+
+std::vector<MissionEvent> MissionExecutor::resume(const MissionProgress& progress, const Perception& p,
+                                                  const std::string& reason) {
+  if (active_) throw std::logic_error("resume: the mission has started already");
+  const std::size_t index = index_of(spec_, progress.state, "resumed mission");
+  std::vector<MissionEvent> entered;
+  enter(index, p, entered, progress.plan);
+  active_->entered_at_s = progress.entered_at_s;
+  std::vector<MissionEvent> events{{MissionEvent::Kind::Resumed, p.time_s, progress.state, "", reason}};
+  for (MissionEvent& e : entered) {
+    // What the earlier executor announced already is not announced twice.
+    const bool known = e.kind == MissionEvent::Kind::Finished ||
+                       (e.kind == MissionEvent::Kind::PlanChosen && e.reason == progress.plan);
+    if (!known) events.push_back(std::move(e));
+  }
+  return events;
+}
+
+std::optional<MissionProgress> MissionExecutor::progress() const {
+  if (!active_) return std::nullopt;
+  return MissionProgress{spec_.states[active_->index].name, active_->entered_at_s, active_->chosen_plan};
 }
 
 MissionStep MissionExecutor::step(const Perception& p) {

@@ -47,6 +47,7 @@ struct MissionEvent {
     PlanChosen,    // static selection in `state` chose plan `plan`
     NoViablePlan,  // static selection in `state` found no plan with a route; retried each step
     Finished,      // entered a Stop state
+    Resumed,       // resume(): continues in `state`, entered earlier by another executor; `reason` says why
   };
   Kind kind = Kind::Started;
   double time_s = 0.0;
@@ -67,6 +68,15 @@ struct MissionStep {
   std::vector<MissionEvent> events;      // in the order they happened during this step
 };
 
+// Where a mission is, enough for another executor to continue it (behavior --journal): the
+// state, when it was entered (Timeout triggers count from then), and the plan static selection
+// chose there.
+struct MissionProgress {
+  std::string state;
+  double entered_at_s = 0.0;
+  std::string plan;  // "" when the state follows no statically chosen plan (or none had a route yet)
+};
+
 struct MissionExecutorOptions {
   std::uint64_t noise_seed = 0;  // per robot: e.g. the scenario seed mixed with the robot id
   UnicycleSteering steering;
@@ -85,6 +95,17 @@ class MissionExecutor {
 
   [[nodiscard]] MissionStep step(const Perception& p);
 
+  // Instead of starting in the initial state: continues where `progress` says, as if this executor
+  // had entered progress.state at progress.entered_at_s and chosen progress.plan there (chosen
+  // again from p's position when the state's plan set has no such plan). Returns [Resumed, with
+  // `reason`], then any plan choice made anew (PlanChosen or NoViablePlan); a Stop state stays
+  // finished without a second Finished. The next step() goes on from there. Throws
+  // std::invalid_argument for a state the mission does not have, std::logic_error after a step.
+  [[nodiscard]] std::vector<MissionEvent> resume(const MissionProgress& progress, const Perception& p,
+                                                 const std::string& reason);
+  // nullopt before the first step (or resume).
+  std::optional<MissionProgress> progress() const;
+
   // Before the first step: the initial state's name.
   const std::string& state() const;
   bool finished() const;
@@ -96,8 +117,10 @@ class MissionExecutor {
   struct CompiledState;
   struct Active;
 
-  void enter(std::size_t index, const Perception& p, std::vector<MissionEvent>& events);
-  void try_static_choice(const Perception& p, std::vector<MissionEvent>& events);
+  // preferred_plan: a static choice made before (resume), kept when the plan set still has it.
+  void enter(std::size_t index, const Perception& p, std::vector<MissionEvent>& events,
+             const std::string& preferred_plan = "");
+  void try_static_choice(const Perception& p, std::vector<MissionEvent>& events, const std::string& preferred_plan = "");
 
   MissionSpec spec_;
   PlanLibrary plans_;

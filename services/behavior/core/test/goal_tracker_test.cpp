@@ -65,6 +65,25 @@ TEST(GoalTracker, AcceptedThenActiveThenReachedInOrder) {
   EXPECT_EQ(r.current->state, GoalState::Reached);
 }
 
+// A goal pursued again after a restart (behavior --journal): its Active says why, later
+// transitions have their own reasons; a note after activation changes nothing.
+TEST(GoalTracker, ResumedGoalsActiveTransitionCarriesTheNote) {
+  GoalTracker tracker(test_grid());
+  (void)tracker.set_goal("g1", 2.0, 1.0, 0.2, 0.0);
+  tracker.note_resumed("resumed after a restart");
+  auto r = tracker.update(Pose2{1.0, 1.0, 0.0}, 0.1);
+  ASSERT_EQ(r.changes.size(), 1u);
+  EXPECT_EQ(r.changes[0].state, GoalState::Active);
+  EXPECT_EQ(r.changes[0].reason, "resumed after a restart");
+  tracker.note_resumed("too late");
+  r = tracker.update(Pose2{1.85, 1.0, 0.0}, 1.0);
+  ASSERT_EQ(r.changes.size(), 1u);
+  EXPECT_EQ(r.changes[0].state, GoalState::Reached);
+  EXPECT_EQ(r.changes[0].reason, "");
+  tracker.note_resumed("nothing pursued");
+  EXPECT_EQ(tracker.status()->reason, "");
+}
+
 TEST(GoalTracker, GoalAlreadyWithinToleranceIsActiveThenReachedInOneUpdate) {
   GoalTracker tracker(test_grid());
   (void)tracker.set_goal("here", 1.0, 1.0, 0.3, 0.0);

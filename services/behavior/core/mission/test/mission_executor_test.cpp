@@ -238,6 +238,62 @@ TEST(MissionExecutor, StaticChoiceRetriedUntilAPlanHasARoute) {
   EXPECT_EQ(on.plan->plan, 0u);
 }
 
+// A resumed executor (behavior --journal after a restart) continues in the journalled state:
+// its Timeout counts from the first entry, not from the resume; nothing before is done again.
+TEST(MissionExecutor, ResumedWhereItWasWithTheTimeFromTheFirstEntry) {
+  const std::string text = with_wait_extra(R"(transitions { to: "go_alone" when { timeout { seconds: 30 } } })");
+  SteppedRun first{MissionExecutor(parse(text), {}), Vec2::Zero(), {}};
+  for (int t = 0; t <= 10; ++t) (void)first.step(t);
+  const auto progress = first.executor.progress();
+  ASSERT_TRUE(progress);
+  EXPECT_EQ(progress->state, "wait");
+  EXPECT_EQ(progress->entered_at_s, 5.0);
+  EXPECT_EQ(progress->plan, "");
+
+  SteppedRun second{MissionExecutor(parse(text), {}), first.position, {}};
+  EXPECT_FALSE(second.executor.progress());
+  EXPECT_EQ(describe(second.executor.resume(*progress, robot(20.0, second.position, false), "after a restart")),
+            (std::vector<std::string>{"t=20 resumed in wait: after a restart"}));
+  EXPECT_EQ(second.executor.state(), "wait");
+  MissionStep s;
+  for (int t = 20; t <= 100 && !s.finished; ++t) s = second.step(t);
+  EXPECT_TRUE(s.finished);
+  // The timeout fires 30 s after the first entry (t = 5), not after the resume (t = 20).
+  EXPECT_EQ(second.events, (std::vector<std::string>{
+                               "t=35 wait -> go_alone: timeout: 30 s in state",
+                               "t=69 go_alone -> done: at goal (40, 0) within 1 m",
+                               "t=69 finished in done",
+                           }));
+  EXPECT_THROW((void)second.executor.resume(*progress, robot(70.0, second.position, false), ""), std::logic_error);
+
+  MissionExecutor unknown(parse(text), {});
+  EXPECT_THROW((void)unknown.resume({"fly", 0.0, ""}, robot(0.0, Vec2::Zero(), true), ""), std::invalid_argument);
+  // A finished mission resumes finished, without a second Finished event.
+  MissionExecutor done(parse(text), {});
+  EXPECT_EQ(describe(done.resume({"done", 69.0, ""}, robot(80.0, Vec2(39.0, 0.0), true), "again")),
+            (std::vector<std::string>{"t=80 resumed in done: again"}));
+  EXPECT_TRUE(done.finished());
+}
+
+TEST(MissionExecutor, ResumedStaticChoiceKeepsThePlanChosenBefore) {
+  MissionExecutor executor(parse(plan_mission("STATIC")), tiny_library());
+  (void)executor.step(robot(0.0, Vec2(0.5, 1.5), true));
+  ASSERT_TRUE(executor.progress());
+  EXPECT_EQ(executor.progress()->plan, "obstacles+comm");
+  // From (2.5, 1.5), inside the attenuating area, a fresh static choice would take plan 0
+  // ("obstacles"): the resumed one keeps the plan chosen before and announces no choice.
+  MissionExecutor fresh(parse(plan_mission("STATIC")), tiny_library());
+  EXPECT_EQ(fresh.step(robot(0.0, Vec2(2.5, 1.5), true)).plan->plan, 0u);
+  MissionExecutor resumed(parse(plan_mission("STATIC")), tiny_library());
+  EXPECT_EQ(describe(resumed.resume(*executor.progress(), robot(3.0, Vec2(2.5, 1.5), true), "restart")),
+            (std::vector<std::string>{"t=3 resumed in go: restart"}));
+  EXPECT_EQ(resumed.step(robot(3.0, Vec2(2.5, 1.5), true)).plan->plan, 1u);
+  // A plan the set no longer has is chosen anew, and said so.
+  MissionExecutor renamed(parse(plan_mission("STATIC")), tiny_library());
+  EXPECT_EQ(describe(renamed.resume({"go", 0.0, "gone"}, robot(3.0, Vec2(2.5, 1.5), true), "restart")),
+            (std::vector<std::string>{"t=3 resumed in go: restart", "t=3 go: static selection chose plan obstacles"}));
+}
+
 TEST(MissionExecutor, UnicycleCommandFromTheBlend) {
   MissionExecutor executor(parse(with_wait_extra("")), {});
   Perception p = robot(0.0, Vec2(0, 0), true);
