@@ -7,7 +7,8 @@
 #
 # Options: --domain N (default $AUTONOMY_DOMAIN or 0), --no-setup (skip install and build),
 #          --exit-when-done (stop everything once both jobs ended; exit 0 when both completed),
-#          --fleet (two couriers: deploy/sets/courier-fleet.set adds rhino2 at the hallway's east end).
+#          --fleet (two couriers: deploy/sets/courier-fleet.set adds rhino2 at the hallway's east end),
+#          --secure (DDS Security, every process on its identity: docs/security.md).
 #          --path-planner grid|ompl (rhino's go-to paths: the grid field's controller, default, or
 #          OMPL Reeds-Shepp paths followed by pure pursuit: deploy/sets/courier-ompl.set).
 set -euo pipefail
@@ -18,12 +19,14 @@ setup=1
 exit_when_done=0
 fleet=0
 path_planner=grid
+secure=()  # --secure: launch.sh --profile secure
 while [ $# -gt 0 ]; do
   case $1 in
     --domain) domain=$2; shift 2 ;;
     --no-setup) setup=0; shift ;;
     --exit-when-done) exit_when_done=1; shift ;;
     --fleet) fleet=1; shift ;;
+    --secure) secure=(--profile secure); shift ;;
     --path-planner)
       case ${2:-} in
         grid) path_planner=grid ;;
@@ -31,7 +34,7 @@ while [ $# -gt 0 ]; do
         *) echo "courier-demo: --path-planner takes grid or ompl, not '${2:-}'" >&2; exit 2 ;;
       esac
       shift 2 ;;
-    -h|--help) sed -n '2,14p' "${BASH_SOURCE[0]}"; exit 0 ;;
+    -h|--help) sed -n '2,13p' "${BASH_SOURCE[0]}"; exit 0 ;;
     *) echo "courier-demo: unknown option $1 (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -53,7 +56,9 @@ export CYCLONEDDS_URI="file://$repo/deploy/dds/loopback.xml"
 export AUTONOMY_DOMAIN=$domain
 run_dir="$repo/runs/courier-$(date +%Y%m%d-%H%M%S)"
 
-bash "$repo/deploy/launch.sh" --detach --domain "$domain" --run-dir "$run_dir" "$set_name"
+bash "$repo/deploy/launch.sh" --detach "${secure[@]}" --domain "$domain" --run-dir "$run_dir" "$set_name"
+# Secured, this script's own tools (and the commands it prints) act as the operator.
+[ ${#secure[@]} -eq 0 ] || CYCLONEDDS_URI+=",$(bash "$repo/deploy/security/security.sh" uri "${AUTONOMY_SECURITY_DIR:-$repo/runs/security}" operator)"
 finish() {
   bash "$repo/deploy/launch.sh" stop "$run_dir" || true
   echo "courier-demo: picture: $run_dir/run.svg; events: $run_dir/events.jsonl; journal: $run_dir/courier.db; logs: $run_dir"

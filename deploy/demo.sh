@@ -8,7 +8,7 @@
 # Options: --domain N (default $AUTONOMY_DOMAIN or 0), --no-setup (skip install and build),
 #          --goal X Y (default 18 2),
 #          --exit-when-reached (for scripts: stop everything and end once the goal is reached;
-#          exit code 0 when reached, 1 otherwise).
+#          exit code 0 when reached, 1 otherwise), --secure (DDS Security: docs/security.md).
 set -euo pipefail
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
@@ -17,12 +17,14 @@ setup=1
 goal_x=18
 goal_y=2
 exit_when_reached=0
+secure=()  # --secure: launch.sh --profile secure
 while [ $# -gt 0 ]; do
   case $1 in
     --domain) domain=$2; shift 2 ;;
     --no-setup) setup=0; shift ;;
     --goal) goal_x=$2; goal_y=$3; shift 3 ;;
     --exit-when-reached) exit_when_reached=1; shift ;;
+    --secure) secure=(--profile secure); shift ;;
     -h|--help) sed -n '2,11p' "${BASH_SOURCE[0]}"; exit 0 ;;
     *) echo "demo: unknown option $1 (see --help)" >&2; exit 2 ;;
   esac
@@ -39,7 +41,9 @@ export CYCLONEDDS_URI="file://$repo/deploy/dds/loopback.xml"
 export AUTONOMY_DOMAIN=$domain
 run_dir="$repo/runs/demo-$(date +%Y%m%d-%H%M%S)"
 
-bash "$repo/deploy/launch.sh" --detach --domain "$domain" --run-dir "$run_dir" demo
+bash "$repo/deploy/launch.sh" --detach "${secure[@]}" --domain "$domain" --run-dir "$run_dir" demo
+# Secured, this script's own tools (and the commands it prints) act as the operator.
+[ ${#secure[@]} -eq 0 ] || CYCLONEDDS_URI+=",$(bash "$repo/deploy/security/security.sh" uri "${AUTONOMY_SECURITY_DIR:-$repo/runs/security}" operator)"
 finish() {
   bash "$repo/deploy/launch.sh" stop "$run_dir" || true
   echo "demo: picture of the run: $run_dir/run.svg; trajectory: $run_dir/trajectory.csv; logs: $run_dir"

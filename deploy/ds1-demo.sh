@@ -10,7 +10,8 @@
 #          lpe-failed, power-sensor-false, thruster-x-stuck, ips-unconfirmed; "all" for the five;
 #          default none),
 #          --rover (the robot domain instead: a rover's survey on the field, deploy/sets/rover.set;
-#          its drives become go-to goals of the behavior controller).
+#          its drives become go-to goals of the behavior controller), --secure (DDS Security:
+#          docs/security.md).
 set -euo pipefail
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
@@ -18,12 +19,14 @@ domain=${AUTONOMY_DOMAIN:-0}
 setup=1
 faults=""
 set_name=ds1
+secure=()  # --secure: launch.sh --profile secure
 while [ $# -gt 0 ]; do
   case $1 in
     --domain) domain=$2; shift 2 ;;
     --no-setup) setup=0; shift ;;
     --faults) faults=$2; shift 2 ;;
     --rover) set_name=rover; shift ;;
+    --secure) secure=(--profile secure); shift ;;
     -h|--help) sed -n '2,14p' "${BASH_SOURCE[0]}"; exit 0 ;;
     *) echo "ds1-demo: unknown option $1 (see --help)" >&2; exit 2 ;;
   esac
@@ -57,7 +60,9 @@ for id in "${chosen[@]}"; do
 done
 echo "ds1-demo: $set_name, faults: ${faults:-none}; run folder $run_dir"
 
-bash "$repo/deploy/launch.sh" --detach --domain "$domain" --run-dir "$run_dir" $set_name
+bash "$repo/deploy/launch.sh" --detach "${secure[@]}" --domain "$domain" --run-dir "$run_dir" $set_name
+# Secured, this script's own tools (and the commands it prints) act as the operator.
+[ ${#secure[@]} -eq 0 ] || CYCLONEDDS_URI+=",$(bash "$repo/deploy/security/security.sh" uri "${AUTONOMY_SECURITY_DIR:-$repo/runs/security}" operator)"
 finish() { bash "$repo/deploy/launch.sh" stop "$run_dir" || true; }
 trap finish EXIT
 trap 'exit 130' INT TERM
