@@ -22,6 +22,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   # wire inspection (packet capture of the demo) and the demo script's JSON reading
   tshark procps iproute2 jq
+  # DDS Security: certificate authorities, identities, signed permissions (deploy/security/security.sh)
+  openssl
   # several hosts on one machine (deploy/hosts.sh): network namespaces, loss and partitions
   nftables
 )
