@@ -19,8 +19,9 @@ Usage: deploy/launch.sh [options] SET        start service set SET (deploy/sets/
 
 Every process of the set runs in its own session with its output in RUN_DIR/NAME.out and its pid
 in RUN_DIR/NAME.pid (NAME with / as -). The launcher waits until each one's heartbeat says ready
-(autonomy node wait) and its liveliness watcher (below) has heard it, prints "launch: set 'SET'
-ready", then supervises the set:
+(autonomy node wait --pid: the heartbeat of the pid it started, so a process of the same name from
+another set on the domain is never taken for its own) and its liveliness watcher (below) has heard
+it, prints "launch: set 'SET' ready", then supervises the set:
   - by default in the foreground; Ctrl-C, SIGTERM, SIGHUP (the terminal closed) or
     'launch.sh stop RUN_DIR' from another terminal stop the whole set, and the launcher ends
     (exit code 0);
@@ -393,7 +394,8 @@ start_process() {
   started_at[$i]=$SECONDS
   ready[$i]=0 ready_seen[$i]=0 watched[$i]=0
   echo "launch: started ${names[$i]} (pid $pid): ${programs[$i]} ${args[*]}"
-  CYCLONEDDS_URI=$(with_identity operator) "$bin/autonomy" node wait --domain "$domain" --timeout "$timeout" "${names[$i]}" &
+  # --pid: only this child's heartbeat counts, not a process of the same name from another set.
+  CYCLONEDDS_URI=$(with_identity operator) "$bin/autonomy" node wait --domain "$domain" --timeout "$timeout" --pid "$pid" "${names[$i]}" &
   ready_check[$!]=$i
 }
 

@@ -1,8 +1,10 @@
 // The simulator process: owns the world's ground truth and its clock.
 #include "simulator/dds/simulator_node.hpp"
+#include "simulator/dds/world_claim.hpp"
 #include "simulator/scenario/builtin_scenario.hpp"
 #include "simulator/scenario/scenario_loader.hpp"
 
+#include <chrono>
 #include <iostream>
 #include <memory>
 
@@ -19,6 +21,7 @@ int main(int argc, char** argv) {
   bool stop_when_finished = false;
   bool without_robots = false;
   bool every_tick = false;
+  double world_check_s = 1.0;
   return service::run_service(
       argc, argv, "simulator", "World and clock simulator: robots, obstacles, lockstep or paced time",
       service::InstanceFlag::Instance,
@@ -42,6 +45,10 @@ int main(int argc, char** argv) {
                      "Stop once every robot reports its mission finished (or its goal reached)");
         app.add_flag("--every-tick", every_tick,
                      "Lockstep: publish every tick, also those all participants declared quiet");
+        app.add_option("--world-check", world_check_s,
+                       "Seconds to listen for another world on the domain before starting this one (0: do not)")
+            ->check(CLI::NonNegativeNumber)
+            ->option_text("S (1)");
         app.add_option("--mode", mode_override, "Override the scenario's clock mode")
             ->check(CLI::IsMember({"lockstep", "paced"}));
         app.footer("Without --config the built-in demo scenario (deploy/scenarios/demo.pbtxt) runs.");
@@ -69,6 +76,14 @@ int main(int argc, char** argv) {
         run.radio_period_ticks = radio_period;
         run.stop_when_finished = stop_when_finished;
         run.quiet_ticks = !every_tick;
+        // One world per domain: refuse before anything of this world is published.
+        if (auto other = sim::find_other_world(
+                service.participant(), std::chrono::milliseconds(static_cast<int64_t>(world_check_s * 1000.0))))
+          throw std::runtime_error(sim::describe(*other, static_cast<uint32_t>(service.options().domain)));
+        run.world_id = sim::new_world_id();
+        service.heartbeat().set_detail(config.empty() ? std::string(sim::kBuiltinScenarioSource) : config);
+        service.heartbeat().set_world(run.world_id);
+        spdlog::info("world {} on DDS domain {}", run.world_id, service.options().domain);
         return std::make_unique<sim::SimulatorNode>(service, std::move(*loaded.scenario), run);
       });
 }

@@ -13,6 +13,7 @@ struct SimClock {
   int64_t step_ns = 0;
   ClockMode mode = ClockMode::Lockstep;
   double warp = 1.0;
+  uint64_t world_id = 0;  // the simulator's random id of its world (idl/clock.idl)
 };
 
 struct LockstepRegistration {

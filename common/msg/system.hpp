@@ -17,6 +17,9 @@ struct Heartbeat {
   double uptime_s = 0.0;
   uint32_t period_ms = 0;
   std::vector<std::string> capabilities;  // "courier", ...
+  uint64_t world_id = 0;  // the world whose clock it follows; 0: none yet
+  uint64_t clock_samples_ignored = 0;
+  std::string detail;     // e.g. the simulator's scenario file
 };
 
 const char* to_string(ServiceState s);

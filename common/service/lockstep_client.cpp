@@ -2,24 +2,58 @@
 
 #include <spdlog/spdlog.h>
 
+#include <chrono>
+
 namespace autonomy::service {
 
-LockstepClient::LockstepClient(const dds::Participant& participant, EventLoop& loop, std::string participant_name,
+namespace {
+// A second world publishes every tick: the first few warnings say what happens, then one in a
+// thousand keeps the log readable while the count in the heartbeat stays exact.
+bool worth_a_warning(uint64_t count) { return count <= 5 || count % 1000 == 0; }
+// The clock's class keeps one sample: another writer's sample (a second world, a forgery) could
+// then replace a real tick before this reader took it, and the tick would never be acknowledged.
+// A few samples of history keep every writer's latest.
+dds::Qos clock_reader_qos() {
+  dds::Qos q = dds::make_qos(dds::topics::clock.qos);
+  dds_qset_history(q.get(), DDS_HISTORY_KEEP_LAST, 8);
+  return q;
+}
+int64_t steady_ns() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+}  // namespace
+
+LockstepClient::LockstepClient(Service& service, std::string participant_name,
                                std::function<void(const msg::SimClock&)> on_tick)
     : name_(std::move(participant_name)),
+      heartbeat_(service.heartbeat()),
       on_tick_(std::move(on_tick)),
-      clock_topic_(participant, dds::topics::clock),
-      registration_topic_(participant, dds::topics::lockstep_registration),
-      ack_topic_(participant, dds::topics::tick_ack),
-      clock_reader_(participant, clock_topic_),
-      registration_writer_(participant, registration_topic_),
-      ack_writer_(participant, ack_topic_) {
-  loop.on_samples<msg::SimClock>(clock_reader_, [this](std::vector<dds::Sample<msg::SimClock>> samples) {
+      clock_topic_(service.participant(), dds::topics::clock),
+      registration_topic_(service.participant(), dds::topics::lockstep_registration),
+      ack_topic_(service.participant(), dds::topics::tick_ack),
+      clock_reader_(service.participant(), clock_topic_, clock_reader_qos().get()),
+      registration_writer_(service.participant(), registration_topic_),
+      ack_writer_(service.participant(), ack_topic_) {
+  service.loop().on_samples<msg::SimClock>(clock_reader_, [this](std::vector<dds::Sample<msg::SimClock>> samples) {
     // Only the newest tick matters: a participant that fell behind catches up in one step.
     const msg::SimClock* newest = nullptr;
-    for (const auto& s : samples)
-      if (s.valid && (!newest || s.value.tick > newest->tick)) newest = &s.value;
-    if (!newest || newest->tick <= clock_.tick()) return;
+    for (const auto& s : samples) {
+      if (!s.valid) continue;
+      const clock::ClockReading r{s.value.world_id, s.value.tick, s.value.sim_time_ns, s.value.step_ns};
+      const clock::ClockVerdict v = check_.check(r, steady_ns());
+      if (v == clock::ClockVerdict::Follow) {
+        if (!newest) spdlog::debug("following {}", check_.explain(r, v));
+        newest = &s.value;
+      } else if (v != clock::ClockVerdict::Repeated) {
+        const uint64_t n = check_.counts().ignored();
+        if (worth_a_warning(n)) spdlog::warn("clock sample ignored ({} so far): {}", n, check_.explain(r, v));
+        heartbeat_.set_clock_samples_ignored(n);
+      }
+    }
+    if (!newest) return;
+    if (clock_.tick() < 0) spdlog::info("joined world {} at tick {}", newest->world_id, newest->tick);
+    heartbeat_.set_world(newest->world_id);
     clock_.advance(newest->tick, newest->sim_time_ns);
     on_tick_(*newest);
   });
@@ -27,6 +61,9 @@ LockstepClient::LockstepClient(const dds::Participant& participant, EventLoop& l
 
 LockstepClient::~LockstepClient() {
   try {
+    // Said first, then disposed: the simulator tells a participant that leaves from one whose
+    // registration ended with its process (killed, stopped, cut off), which it keeps waiting for.
+    registration_writer_.write({name_, false});
     registration_writer_.dispose({name_, false});
   } catch (const std::exception& e) {
     spdlog::warn("could not leave lockstep cleanly: {}", e.what());

@@ -8,11 +8,17 @@
 //      k, then writes TickAck{k, commands_sent};
 //   3. the simulator applies the commands once every participant's ack and announced commands
 //      for k arrived (or drops a participant that stays silent past the ack timeout), steps to k+1.
+//
+// Every service reads the clock here, so the clock check lives here once: the process joins the
+// world of the first clock it hears and ignores another world's clock, a tick that goes back and
+// an absurd leap forward, each with a warning, counted in its heartbeat (common/clock/clock_check.hpp).
 #include "common/clock/clock.hpp"
+#include "common/clock/clock_check.hpp"
 #include "common/dds/reader.hpp"
 #include "common/dds/topics.hpp"
 #include "common/dds/writer.hpp"
 #include "common/service/event_loop.hpp"
+#include "common/service/service.hpp"
 
 #include <functional>
 #include <string>
@@ -21,9 +27,9 @@ namespace autonomy::service {
 
 class LockstepClient {
  public:
-  // on_tick runs on the loop's thread for every new tick (older or repeated ticks are skipped).
-  LockstepClient(const dds::Participant& participant, EventLoop& loop, std::string participant_name,
-                 std::function<void(const msg::SimClock&)> on_tick);
+  // on_tick runs on the loop's thread for every new tick of the joined world; repeated ticks are
+  // skipped, ignored ones (clock_check()) are warned about and counted in the service's heartbeat.
+  LockstepClient(Service& service, std::string participant_name, std::function<void(const msg::SimClock&)> on_tick);
   // Leaves the lockstep set at once (disposes the registration) instead of waiting for a timeout.
   ~LockstepClient();
 
@@ -39,11 +45,14 @@ class LockstepClient {
   int64_t quiet_until_tick() const { return last_ack_.quiet_until_tick; }
 
   const clock::SimulatedClock& clock() const { return clock_; }
+  const clock::ClockCheck& clock_check() const { return check_; }
   const std::string& name() const { return name_; }
 
  private:
   std::string name_;
   clock::SimulatedClock clock_;
+  clock::ClockCheck check_;
+  HeartbeatPublisher& heartbeat_;
   std::function<void(const msg::SimClock&)> on_tick_;
   dds::Topic<msg::SimClock> clock_topic_;
   dds::Topic<msg::LockstepRegistration> registration_topic_;

@@ -26,6 +26,7 @@ class Service {
   void set_ready() { heartbeat_.set_state(msg::ServiceState::Ready); }
   // Capabilities announced in the heartbeat (e.g. "courier" on a robot's behavior process).
   void set_capabilities(std::vector<std::string> capabilities) { heartbeat_.set_capabilities(std::move(capabilities)); }
+  HeartbeatPublisher& heartbeat() { return heartbeat_; }
   // Runs the loop until a signal or stop(); publishes the stopping heartbeat.
   void run();
   void stop() { loop_.stop(); }

@@ -44,6 +44,9 @@ inline msg::Heartbeat make_heartbeat(Variant v) {
   m.uptime_s = 12.75;
   m.period_ms = 333;
   if (v == Variant::Full) m.capabilities = {"courier", kUtf8C};
+  m.world_id = 0x8000000000000001ULL;
+  m.clock_samples_ignored = 17;
+  m.detail = s(v, kUtf8A);
   return m;
 }
 
@@ -54,6 +57,7 @@ inline msg::SimClock make_sim_clock(Variant) {
   m.step_ns = 20'000'001;
   m.mode = msg::ClockMode::Paced;
   m.warp = 2.5;
+  m.world_id = 0xfedcba9876543210ULL;
   return m;
 }
 
@@ -422,10 +426,10 @@ inline msg::CourierReport make_courier_report(Variant v) {
 
 inline auto fields(const msg::Heartbeat& m) {
   return std::make_tuple(m.service, m.instance, m.host, m.pid, static_cast<int>(m.state), m.uptime_s, m.period_ms,
-                         m.capabilities);
+                         m.capabilities, m.world_id, m.clock_samples_ignored, m.detail);
 }
 inline auto fields(const msg::SimClock& m) {
-  return std::make_tuple(m.tick, m.sim_time_ns, m.step_ns, static_cast<int>(m.mode), m.warp);
+  return std::make_tuple(m.tick, m.sim_time_ns, m.step_ns, static_cast<int>(m.mode), m.warp, m.world_id);
 }
 inline auto fields(const msg::LockstepRegistration& m) { return std::make_tuple(m.participant, m.active); }
 inline auto fields(const msg::TickAck& m) { return std::make_tuple(m.participant, m.tick, m.commands_sent, m.quiet_until_tick); }

@@ -17,7 +17,7 @@ int main(int argc, char** argv) {
       "Executive: dispatches the planner's flexible plans to the spacecraft, responds to faults, replans",
       service::InstanceFlag::Instance,
       [&](CLI::App& app) {
-        app.add_option("--spacecraft", options.spacecraft, "Telemetry instance to follow (default: any)");
+        app.add_option("--spacecraft", options.spacecraft, "The spacecraft this executive commands: only its telemetry is read (default: the first one heard; none: robots only)");
         app.add_option("--plan-timeout-s", options.plan_timeout_s,
                        "Ask the planner again when a request stays unanswered this long (wall s)")
             ->check(CLI::Range(0.1, 3600.0))

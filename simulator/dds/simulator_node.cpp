@@ -465,7 +465,8 @@ void SimulatorNode::open_tick() {
   if (spacecraft_) spacecraft_->publish(tick_, now_ns);
   barrier_.begin_tick(tick_, now_s);
   clock_writer_.write({tick_, now_ns, to_ns(options_.settings.step_s),
-                       lockstep() ? msg::ClockMode::Lockstep : msg::ClockMode::Paced, options_.settings.warp});
+                       lockstep() ? msg::ClockMode::Lockstep : msg::ClockMode::Paced, options_.settings.warp,
+                       options_.world_id});
 }
 
 void SimulatorNode::publish_robot_state(const RobotStatus& r) {

@@ -65,6 +65,8 @@ struct SimulatorRunOptions {
   // Lockstep: ticks every participant declared it does not need, while nothing in the world
   // changes, are stepped without being published (idl/clock.idl, quiet_until_tick).
   bool quiet_ticks = true;
+  // Carried by every clock sample: services follow this world only (dds/world_claim.hpp).
+  uint64_t world_id = 0;
 };
 
 class SimulatorNode {

@@ -83,9 +83,16 @@ int run(const Options& o, Context& ctx) {
   }
 
   std::map<std::string, int> per_name;
+  std::map<uint64_t, int> per_world;  // worlds the listed processes follow (0: none yet)
   for (const auto& [key, l] : listed) {
     if (l.state != "stopped") ++per_name[key.name()];
+    if (l.state != "stopped" && l.row->last.world_id != 0) ++per_world[l.row->last.world_id];
   }
+  // A second process of one name is the usual sign of a second set on the domain: every row of
+  // such a name is flagged, not only the newer one.
+  auto duplicate = [&](const ProcessKey& key, const Listed& l) {
+    return l.state != "stopped" && per_name[key.name()] > 1;
+  };
 
   if (o.json) {
     json::Json out = json::Json::array();
@@ -100,7 +107,11 @@ int run(const Options& o, Context& ctx) {
                      {"age_s", l.age_s},
                      {"uptime_s", b.uptime_s},
                      {"period_ms", b.period_ms},
-                     {"from_watcher", l.from_watcher}});
+                     {"from_watcher", l.from_watcher},
+                     {"duplicate", duplicate(key, l)},
+                     {"world_id", b.world_id},
+                     {"clock_samples_ignored", b.clock_samples_ignored},
+                     {"detail", b.detail}});
     }
     print_line(out.dump(-1, ' ', false, json::Json::error_handler_t::replace));
     return kExitOk;
@@ -120,6 +131,10 @@ int run(const Options& o, Context& ctx) {
     std::string note;
     if (l.state == "stale") note = std::string("  last heard ") + (l.from_watcher ? "by a watcher, " : "") + "as " +
                                    msg::to_string(l.row->last.state);
+    if (duplicate(key, l)) note += "  DUPLICATE";
+    if (per_world.size() > 1 && l.row->last.world_id != 0) note += "  world " + std::to_string(l.row->last.world_id);
+    if (l.row->last.clock_samples_ignored > 0)
+      note += "  ignored " + std::to_string(l.row->last.clock_samples_ignored) + " clock samples";
     std::snprintf(line, sizeof(line), "%-*s  %-*s  %-*s  %8d  %-8s  %6.1fs%s", int(sw), key.service.c_str(), int(iw),
                   key.instance.c_str(), int(hw), key.host.c_str(), key.pid, l.state.c_str(), l.age_s, note.c_str());
     print_line(line);
@@ -127,6 +142,9 @@ int run(const Options& o, Context& ctx) {
   for (const auto& [name, n] : per_name) {
     if (n > 1) std::cerr << "autonomy node list: " << n << " processes are named " << name << "\n";
   }
+  if (per_world.size() > 1)
+    std::cerr << "autonomy node list: processes follow " << per_world.size() << " worlds on domain " << o.domain
+              << " (one world per domain: a second simulator or a forged clock)\n";
   if (listed.empty()) std::cerr << "no autonomy processes seen on domain " << o.domain << "\n";
   return kExitOk;
 }

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "common/dds/topics.hpp"
+#include "common/service/heartbeat.hpp"
 #include "tools/autonomy/commands.hpp"
 #include "tools/autonomy/processes.hpp"
 
@@ -15,11 +16,15 @@ struct Options {
   int domain = 0;
   std::vector<std::string> targets;
   double timeout_s = 20.0;
+  // The launcher's own child: only the heartbeat of this pid on this host counts, so that a
+  // process of the same name from another set on the domain is not taken for it.
+  int32_t pid = 0;
 };
 
 struct Target {
   std::string service, instance;
   bool reported_ready = false;
+  bool reported_other = false;  // said once that a same-named process of another pid is not it
   std::string name() const { return service + "/" + instance; }
 };
 
@@ -34,6 +39,12 @@ int run(const Options& o, Context& ctx) {
     }
     targets.push_back(target);
   }
+  if (o.pid != 0 && targets.size() != 1) {
+    std::cerr << "autonomy node wait: --pid names the process of one SERVICE/INSTANCE, not of " << targets.size()
+              << "\n";
+    return kExitUsage;
+  }
+  const std::string this_host = service::host_name();
   const auto start = std::chrono::steady_clock::now();
   const auto deadline = start + seconds(o.timeout_s);
 
@@ -51,6 +62,20 @@ int run(const Options& o, Context& ctx) {
     size_t ready = 0;
     for (auto& t : targets) {
       const ProcessView* p = table.find(t.service, t.instance);
+      if (o.pid != 0) {
+        p = nullptr;
+        for (const auto& [key, row] : table.rows()) {
+          if (key.service != t.service || key.instance != t.instance) continue;
+          if (key.pid == o.pid && key.host == this_host) {
+            p = &row;
+          } else if (row.ready() && !t.reported_other) {
+            std::cerr << "autonomy node wait: " << t.name() << " (pid " << key.pid << " on " << key.host
+                      << ") is ready but is not the process awaited (pid " << o.pid << " on " << this_host
+                      << "): another set on this domain?\n";
+            t.reported_other = true;
+          }
+        }
+      }
       const bool now_ready = p && p->ready();
       if (now_ready && !t.reported_ready) {
         char line[512];
@@ -95,6 +120,10 @@ Command add_node_wait(CLI::App& node) {
   add_domain_option(cmd, o->domain);
   cmd->add_option("process", o->targets, "SERVICE/INSTANCE, e.g. behavior/r1 (SERVICE alone means SERVICE/main)")
       ->required();
+  cmd->add_option("--pid", o->pid,
+                  "Only the process of this pid on this host counts (a launcher awaiting its own child): a process "
+                  "of the same name elsewhere on the domain is reported, not taken for it")
+      ->check(CLI::PositiveNumber);
   cmd->add_option("-t,--timeout", o->timeout_s, "Seconds to wait")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();

@@ -4,7 +4,10 @@
 
 #include "common/dds/error.hpp"
 #include "tools/autonomy/commands.hpp"
+#include "tools/autonomy/processes.hpp"
 #include "tools/autonomy/topic_registry.hpp"
+
+#include <set>
 
 namespace autonomy::tools {
 
@@ -19,7 +22,45 @@ struct Options {
   double wait_s = 3.0;
   double ack_timeout_s = 5.0;
   bool quiet = false;
+  bool anyway = false;
 };
+
+// Topics that one robot's controller reads, by the robot id in the message: every behavior
+// process reads the whole topic and keeps its own robot's samples, so a matched reader does not
+// mean that anyone serves the robot named. The controller of robot R has heartbeat behavior/R.
+struct RobotAddressed {
+  const char* topic;
+  const char* service;
+};
+constexpr RobotAddressed kRobotAddressed[] = {{"autonomy/nav/goal", "behavior"}, {"autonomy/nav/cancel", "behavior"}};
+
+const char* robot_service_of(const std::string& topic) {
+  for (const auto& r : kRobotAddressed)
+    if (topic == r.topic) return r.service;
+  return nullptr;
+}
+
+// Waits (until `deadline`) for the heartbeat of SERVICE/robot; false with the robots that are
+// served in `served` when none came. Heartbeats are state samples: a live controller's arrives
+// as soon as its participant is discovered, so the usual answer costs no extra wait.
+bool robot_served(Interrupt& interrupt, const dds::Participant& participant, const char* service,
+                  const std::string& robot, std::chrono::steady_clock::time_point deadline, std::set<std::string>& served) {
+  const dds::Topic<msg::Heartbeat> topic(participant, dds::topics::heartbeat);
+  const dds::Reader<msg::Heartbeat> reader(participant, topic, every_process_qos().get());
+  ProcessTable table;
+  for (;;) {
+    table.update(reader.read());
+    served.clear();
+    for (const auto& [key, row] : table.rows()) {
+      if (key.service != service || row.instance_state != dds::InstanceState::Alive) continue;
+      if (row.last.state == msg::ServiceState::Stopping) continue;
+      if (key.instance == robot) return true;
+      served.insert(key.instance);
+    }
+    if (std::chrono::steady_clock::now() >= deadline) return false;
+    if (!sleep_for(interrupt, participant, std::chrono::milliseconds(20))) return false;
+  }
+}
 
 int run(const Options& o, Context& ctx) {
   const auto registry = TopicRegistry::catalogue();
@@ -57,6 +98,21 @@ int run(const Options& o, Context& ctx) {
   if (writer->matched_readers() == 0)
     std::cerr << "autonomy topic pub: warning: no reader of " << topic->name << " matched within " << o.wait_s
               << " s; publishing anyway\n";
+
+  // A goal for a robot that nobody drives would vanish in silence (no status ever comes): say so.
+  if (const char* service = robot_service_of(topic->name); service && !o.anyway) {
+    const std::string robot = message.value("robot_id", "");
+    std::set<std::string> served;
+    if (!robot_served(interrupt, participant, service, robot, wait_deadline, served)) {
+      if (interrupt.requested()) return kExitInterrupted;
+      std::string list;
+      for (const auto& r : served) list += (list.empty() ? "" : ", ") + r;
+      std::cerr << "autonomy topic pub: no " << service << " process serves robot \"" << robot << "\" on domain "
+                << o.domain << " (" << (list.empty() ? "none runs" : service + std::string(" runs for: ") + list)
+                << "); nothing published (--anyway publishes regardless)\n";
+      return kExitFailed;
+    }
+  }
 
   // With --count 0, Ctrl-C is the normal end: what was written is still acknowledged below.
   const bool until_interrupted = o.count == 0;
@@ -117,6 +173,9 @@ Command add_topic_pub(CLI::App& topic) {
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   cmd->add_flag("-q,--quiet", o->quiet, "Do not print each published message");
+  cmd->add_flag("--anyway", o->anyway,
+                "Publish a goal or cancel even when no behavior process serves its robot (by default that is "
+                "refused with exit 1 and the robots that are served)");
   const std::string topics = "\nTopics of the catalogue: " + TopicRegistry::catalogue().names() + ".";
   cmd->footer(
       "Exit codes: 0 published and acknowledged (with --count 0: stopped by Ctrl-C); 1 not acknowledged in time, or "

@@ -95,6 +95,9 @@ struct Fields<msg::Heartbeat> {
     v.field("uptime_s", m.uptime_s);
     v.field("period_ms", m.period_ms);
     v.field("capabilities", m.capabilities);
+    v.field("world_id", m.world_id);
+    v.field("clock_samples_ignored", m.clock_samples_ignored);
+    v.field("detail", m.detail);
   }
 };
 
@@ -108,6 +111,7 @@ struct Fields<msg::SimClock> {
     v.field("step_ns", m.step_ns);
     v.field("mode", m.mode);
     v.field("warp", m.warp);
+    v.field("world_id", m.world_id);
   }
 };
 

@@ -8,10 +8,11 @@ void DdsType<msg::SimClock>::to_c(const msg::SimClock& v, C& out, Arena&) {
   out.step_ns = v.step_ns;
   out.mode = static_cast<autonomy_ClockMode>(v.mode);
   out.warp = v.warp;
+  out.world_id = v.world_id;
 }
 
 msg::SimClock DdsType<msg::SimClock>::from_c(const C& in) {
-  return {in.tick, in.sim_time_ns, in.step_ns, static_cast<msg::ClockMode>(in.mode), in.warp};
+  return {in.tick, in.sim_time_ns, in.step_ns, static_cast<msg::ClockMode>(in.mode), in.warp, in.world_id};
 }
 
 void DdsType<msg::LockstepRegistration>::to_c(const msg::LockstepRegistration& v, C& out, Arena&) {

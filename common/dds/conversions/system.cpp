@@ -11,6 +11,9 @@ void DdsType<msg::Heartbeat>::to_c(const msg::Heartbeat& v, C& out, Arena& arena
   out.uptime_s = v.uptime_s;
   out.period_ms = v.period_ms;
   out.capabilities = to_c_strings(v.capabilities, arena);
+  out.world_id = v.world_id;
+  out.clock_samples_ignored = v.clock_samples_ignored;
+  out.detail = c_str(v.detail);
 }
 
 msg::Heartbeat DdsType<msg::Heartbeat>::from_c(const C& in) {
@@ -23,6 +26,9 @@ msg::Heartbeat DdsType<msg::Heartbeat>::from_c(const C& in) {
   v.uptime_s = in.uptime_s;
   v.period_ms = in.period_ms;
   v.capabilities = from_c_strings(in.capabilities);
+  v.world_id = in.world_id;
+  v.clock_samples_ignored = in.clock_samples_ignored;
+  v.detail = from_c_str(in.detail);
   return v;
 }
 

@@ -83,7 +83,7 @@ CourierNode::CourierNode(service::Service& service, CourierNodeOptions options)
       goal_writer_(service.participant(), goal_topic_),
       cancel_writer_(service.participant(), cancel_topic_),
       handover_writer_(service.participant(), handover_request_topic_),
-      lockstep_(service.participant(), service.loop(), "courier/" + service.options().instance,
+      lockstep_(service, "courier/" + service.options().instance,
                 [this](const msg::SimClock& c) { on_tick(c); }) {
   // Travel times for the slowest and widest robot that may join.
   double speed = options_.attach_defaults.max_speed_mps;

@@ -64,7 +64,7 @@ ExecutiveNode::ExecutiveNode(service::Service& service, ExecutiveNodeOptions opt
       status_topic_(service.participant(), dds::topics::executive_status),
       event_writer_(service.participant(), event_topic_),
       status_writer_(service.participant(), status_topic_),
-      lockstep_(service.participant(), service.loop(), name_,
+      lockstep_(service, name_,
                 [this](const msg::SimClock& clock) { on_tick(clock); }),
       watchdog_(seconds(options_.watchdog_s),
                 [this](WallClock::duration busy) { safe_from_watchdog(busy); },

@@ -53,7 +53,7 @@ namespace autonomy::executive {
 
 struct ExecutiveNodeOptions {
   std::string config_path;
-  std::string spacecraft;      // telemetry instance; "" = any
+  std::string spacecraft;      // the only telemetry instance read; "" = the first one heard
   double plan_timeout_s = 5;   // ask again when a request stays unanswered this long (wall)
   double plan_hold_s = 10;     // hold a lockstep tick at most this long for a plan (wall)
   double watchdog_s = 2;       // a tick handler running longer raises the alarm and safes

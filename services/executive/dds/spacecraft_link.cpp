@@ -1,5 +1,7 @@
 #include "spacecraft_link.hpp"
 
+#include <spdlog/spdlog.h>
+
 namespace autonomy::executive {
 
 SpacecraftLink::SpacecraftLink(const dds::Participant& participant, std::string source,
@@ -16,7 +18,19 @@ SpacecraftLink::SpacecraftLink(const dds::Participant& participant, std::string 
 std::optional<msg::SpacecraftTelemetry> SpacecraftLink::take_telemetry() {
   std::optional<msg::SpacecraftTelemetry> newest;
   for (auto& s : telemetry_reader_.take()) {
-    if (!s.valid || (!spacecraft_.empty() && s.value.spacecraft != spacecraft_)) continue;
+    if (!s.valid) continue;
+    if (spacecraft_.empty()) {
+      spacecraft_ = s.value.spacecraft;
+      spdlog::warn("no --spacecraft given: following spacecraft '{}', the first one heard; any other is ignored",
+                   spacecraft_);
+    }
+    if (s.value.spacecraft != spacecraft_ || spacecraft_ == kNoSpacecraft) {
+      // Telemetry arrives every tick: a few warnings say what happens, the count says how much.
+      if (++ignored_telemetry_ <= 5 || ignored_telemetry_ % 1000 == 0)
+        spdlog::warn("telemetry of spacecraft '{}' ignored ({} so far): this executive commands '{}'",
+                     s.value.spacecraft, ignored_telemetry_, spacecraft_);
+      continue;
+    }
     if (!newest || s.value.tick >= newest->tick) newest = std::move(s.value);
   }
   return newest;

@@ -22,8 +22,15 @@ class SpacecraftLink {
  public:
   SpacecraftLink(const dds::Participant& participant, std::string source, std::string spacecraft);
 
-  // The newest telemetry (of `spacecraft`, or any when that is empty) since the last call.
+  // The newest telemetry of `spacecraft` since the last call. Without a name (no --spacecraft)
+  // the link follows the first spacecraft it hears, so that a second spacecraft on the domain
+  // is never mixed into this one's observations. Another spacecraft's telemetry is ignored with
+  // a warning and counted (ignored_telemetry()). The name kNoSpacecraft ("none": an executive of
+  // robots only) reads no spacecraft at all.
+  static constexpr const char* kNoSpacecraft = "none";
   std::optional<msg::SpacecraftTelemetry> take_telemetry();
+  const std::string& spacecraft() const { return spacecraft_; }
+  std::uint64_t ignored_telemetry() const { return ignored_telemetry_; }
   // The commands this link sent whose confirmation `t` shows for the first time.
   std::vector<Confirmation> confirmations(const msg::SpacecraftTelemetry& t);
   // Rejections of this link's commands since the last call: the command and the reason.
@@ -37,6 +44,7 @@ class SpacecraftLink {
 
  private:
   std::string source_, spacecraft_;
+  std::uint64_t ignored_telemetry_ = 0;
   dds::Topic<msg::SpacecraftTelemetry> telemetry_topic_;
   dds::Topic<msg::SpacecraftCommand> command_topic_;
   dds::Topic<msg::SpacecraftCommandStatus> status_topic_;
