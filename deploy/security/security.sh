@@ -69,7 +69,7 @@ check_days() { [[ "$1" =~ ^[0-9]+$ ]] && [ "$1" -ge 1 ] || die "--days must be a
 declare -A writers=() readers=()
 topics=()
 read_table() {
-  local n=0 line topic w r extra k who
+  local n=0 line topic w r extra k who kind
   [ -f "$table" ] || die "$table not found"
   while IFS= read -r line || [ -n "$line" ]; do
     n=$((n + 1))
