@@ -418,46 +418,49 @@ cmd_uri() {
 # (**simulator**, **tools**, ...); they must be the table's, topic by topic, and both must list
 # the same topics (the table may add topics that docs/topics.md names outside the catalogue).
 cmd_check_table() {
-  local md=$1 t
+  local md=$1
   [ -f "$md" ] || die "$md not found"
-  read_table
-  local out
-  out=$(awk -F'|' -v kinds="$kinds" '
-    function bold_set(cell,   s, out, n, i, parts) {
+  read_table  # the table's own mistakes, with file:line
+  # One awk pass (a fork per topic made this take seconds on a loaded machine).
+  awk -v kinds=" $kinds " -v table="$table" '
+    function norm(list,   n, a, i, j, t, out) {
+      n = split(list, a, ",")
+      for (i = 2; i <= n; i++) { t = a[i]; for (j = i - 1; j >= 1 && a[j] > t; j--) a[j + 1] = a[j]; a[j + 1] = t }
+      out = ""
+      for (i = 1; i <= n; i++) if (a[i] != "") out = out (out == "" ? "" : ",") a[i]
+      return out
+    }
+    function bold(cell,   out, w) {
       out = ""
       while (match(cell, /\*\*[a-z]+\*\*/)) {
         w = substr(cell, RSTART + 2, RLENGTH - 4)
-        if (index(" " kinds " ", " " w " ")) out = out (out == "" ? "" : ",") w
+        if (index(kinds, " " w " ")) out = out (out == "" ? "" : ",") w
         cell = substr(cell, RSTART + RLENGTH)
       }
-      return out
+      return norm(out)
     }
+    FNR == NR {
+      sub(/#.*/, "")
+      if (NF == 3) { W[$1] = norm($2); R[$1] = norm($3); order[++n] = $1 }
+      next
+    }
+    { text = text "\n" $0 }
     /^\| `autonomy\// {
-      topic = $2; gsub(/[ `]/, "", topic)
-      print FILENAME ":" NR "\t" topic "\t" bold_set($6) "\t" bold_set($7)
-    }' "$md")
-  local errors=0 loc topic w r seen=" "
-  sortset() { tr ',' '\n' <<<"$1" | sed '/^$/d' | sort | paste -sd, -; }
-  while IFS=$'\t' read -r loc topic w r; do
-    seen+="$topic "
-    if [ -z "${writers[$topic]:-}" ]; then
-      echo "security: $loc: $topic is in the catalogue but not in $table" >&2; errors=$((errors + 1)); continue
-    fi
-    if [ "$(sortset "$w")" != "$(sortset "${writers[$topic]}")" ]; then
-      echo "security: $loc: $topic writers: the catalogue says '${w:-none in bold}', $table says '${writers[$topic]}'" >&2
-      errors=$((errors + 1))
-    fi
-    if [ "$(sortset "$r")" != "$(sortset "${readers[$topic]}")" ]; then
-      echo "security: $loc: $topic readers: the catalogue says '${r:-none in bold}', $table says '${readers[$topic]}'" >&2
-      errors=$((errors + 1))
-    fi
-  done <<<"$out"
-  for t in "${topics[@]}"; do
-    [[ "$seen" == *" $t "* ]] && continue
-    grep -q "\`$t\`" "$md" || { echo "security: $table: $t is not in $md" >&2; errors=$((errors + 1)); }
-  done
-  [ $errors -eq 0 ] || die "$table and $md disagree ($errors differences)"
-  echo "security: $table agrees with $md (${#topics[@]} topics)"
+      split($0, c, "|")
+      topic = c[2]; gsub(/[ `]/, "", topic)
+      seen[topic] = 1
+      if (!(topic in W)) { print FILENAME ":" FNR ": " topic " is in the catalogue but not in " table; errors++; next }
+      w = bold(c[6]); r = bold(c[7])
+      if (w != W[topic]) { print FILENAME ":" FNR ": " topic " writers: the catalogue says '\''" (w == "" ? "none in bold" : w) "'\'', " table " says '\''" W[topic] "'\''"; errors++ }
+      if (r != R[topic]) { print FILENAME ":" FNR ": " topic " readers: the catalogue says '\''" (r == "" ? "none in bold" : r) "'\'', " table " says '\''" R[topic] "'\''"; errors++ }
+    }
+    END {
+      for (i = 1; i <= n; i++)
+        if (!(order[i] in seen) && index(text, "`" order[i] "`") == 0) { print table ": " order[i] " is not in " FILENAME; errors++ }
+      if (errors) { print table " and " FILENAME " disagree (" errors " differences)"; exit 1 }
+      print table " agrees with " FILENAME " (" n " topics)"
+    }' "$table" "$md" | sed 's/^/security: /' >&2
+  [ "${PIPESTATUS[0]}" -eq 0 ] || exit 1
 }
 
 [ $# -ge 1 ] || { usage >&2; exit 2; }
