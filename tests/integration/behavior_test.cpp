@@ -1,5 +1,6 @@
 // Integration tests of the behavior process: cancelling goals, constraint sets, stored plans
-// (plan_tool + behavior --plans) and mission mode (behavior --mission), with the real simulator.
+// (plan_tool + behavior --plans), mission mode (behavior --mission) and the journal that lets a
+// behavior killed with SIGKILL carry on (behavior --journal), with the real simulator.
 //
 // One DDS domain per test (ctest runs them in parallel); this file uses 81-89 only:
 //
@@ -13,10 +14,13 @@
 //     86    TeamTest.KeepsContactWithParallelCommunicationPlans
 //     87    TeamTest.OnObstaclePlansLosesContactInTheAlley
 //     88    BehaviorTest.OverlongIdAndNegativeToleranceAreRejectedAndTheServiceGoesOn
+//    140    BehaviorTest.KilledMidGoalDrivesOnFromItsJournal
+//    141    BehaviorTest.KilledMidMissionContinuesFromItsJournal
 #include "tests/support/goal_statuses.hpp"
 #include "tests/support/process_test.hpp"
 
 #include <gtest/gtest.h>
+#include <signal.h>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -316,6 +320,171 @@ TEST_F(BehaviorTest, MissionFileErrorsExitWithOne) {
   EXPECT_EQ(status->code, 1);
   EXPECT_NE(read_file(behavior.log_file()).find(dir().file("bad.pbtxt") + ":3:"), std::string::npos)
       << behavior.log_tail();
+}
+
+// 5b. A behavior killed with SIGKILL mid-goal and started again with the same journal drives on
+// to the goal, which is not sent again: Active again with the reason, then Reached, from where
+// the first process left the robot. Lockstep: the world waits for the behavior, so the kill
+// lands mid-way however slow the machine (the goal is about 22 m of driving away).
+TEST_F(BehaviorTest, KilledMidGoalDrivesOnFromItsJournal) {
+  join(140);
+  Recorder<msg::Heartbeat> beats(participant(), dds::topics::heartbeat);
+  Recorder<msg::RobotState> states(participant(), dds::topics::robot_state);
+  Recorder<msg::GoalStatus> goals(participant(), dds::topics::goal_status);
+  dds::Topic<msg::NavGoal> goal_topic(participant(), dds::topics::nav_goal);
+  dds::Writer<msg::NavGoal> goal_writer(participant(), goal_topic);
+  const std::string journal = dir().file("behavior-r1.db");
+
+  start_simulator({"--wait-for", "behavior/r1", "--ack-timeout", "2"});
+  auto& first = start_behavior("r1", {"--journal", journal}, true, "behavior-r1-first");
+  ASSERT_TRUE(await_ready(beats, first));
+  ASSERT_TRUE(goal_writer.wait_for_readers(1, kDeadline));
+  goal_writer.write({"r1", "far", kGoalX, kGoalY, 0.0, ""});  // once, and never again
+  ASSERT_TRUE(await("r1 2 m from its start (2, 2)", [&] {
+    states.poll();
+    const auto s = last_state_of(states, "r1");
+    return s && std::hypot(s->x - 2.0, s->y - 2.0) > 2.0;
+  }));
+  stop_watching(first);
+  first.signal(SIGKILL);
+  const auto killed = first.wait_for_exit(10s);
+  ASSERT_TRUE(killed && !killed->exited && killed->signal == SIGKILL);
+  goals.poll();
+  states.poll();
+  const auto at_kill = *last_state_of(states, "r1");
+  ASSERT_TRUE(goals.matching([](const msg::GoalStatus& g) { return g.state == GoalState::Reached; }).empty())
+      << "reached before the kill: " << states_text(goals.all());
+  ASSERT_GT(std::hypot(at_kill.x - kGoalX, at_kill.y - kGoalY), 3.0);
+
+  auto& second = start_behavior("r1", {"--journal", journal}, true, "behavior-r1-second");
+  ASSERT_TRUE(await("goal far reached after the restart", [&] {
+    goals.poll();
+    states.poll();
+    return !goals.matching([](const msg::GoalStatus& g) { return g.goal_id == "far" && g.state == GoalState::Reached; })
+                .empty();
+  }, 90s)) << states_text(goals.all()) << "\n" << second.log_tail();
+  const auto far = goals.matching([](const msg::GoalStatus& g) { return g.goal_id == "far"; });
+  std::vector<GoalState> order;
+  for (const auto& g : far) order.push_back(g.state);
+  EXPECT_EQ(order, (std::vector<GoalState>{GoalState::Accepted, GoalState::Active, GoalState::Active, GoalState::Reached}))
+      << states_text(far);
+  ASSERT_EQ(far.size(), 4u);
+  EXPECT_EQ(far[1].reason, "");
+  EXPECT_EQ(far[2].reason, "resumed after a restart of behavior r1 (journal run 2)");
+  // Resumed from where the robot stood, not from its start: the simulator kept it.
+  EXPECT_NEAR(far[2].distance_to_goal, std::hypot(at_kill.x - kGoalX, at_kill.y - kGoalY), 1.0);
+  const auto last = *last_state_of(states, "r1");
+  EXPECT_LE(std::hypot(last.x - kGoalX, last.y - kGoalY), 0.2 + 0.05);
+  EXPECT_NE(read_file(second.log_file()).find("journal: resuming goal far (active before the restart)"),
+            std::string::npos)
+      << second.log_tail();
+
+  // A third start finds the goal ended: published again as it ended, and not driven.
+  second.signal(SIGKILL);
+  stop_watching(second);
+  ASSERT_TRUE(second.wait_for_exit(10s));
+  const std::size_t before = goals.all().size();
+  auto& third = start_behavior("r1", {"--journal", journal}, true, "behavior-r1-third");
+  ASSERT_TRUE(await("goal far published again by the third behavior", [&] {
+    goals.poll();
+    return goals.all().size() > before;
+  })) << third.log_tail();
+  const auto again = goals.all().back();
+  EXPECT_EQ(again.goal_id, "far");
+  EXPECT_EQ(again.state, GoalState::Reached);
+
+  // Another robot's journal is refused: exit 1, naming the path.
+  auto& wrong = start_behavior("r2", {"--journal", journal}, false, "behavior-r2-wrong");
+  const auto refused = wrong.wait_for_exit(20s);
+  ASSERT_TRUE(refused);
+  EXPECT_TRUE(refused->exited);
+  EXPECT_EQ(refused->code, 1);
+  EXPECT_NE(read_file(wrong.log_file()).find("journal " + journal + ": it is the journal of robot r1, not of r2"),
+            std::string::npos)
+      << wrong.log_tail();
+}
+
+// The mission of test 4 with a pause between its legs (20 s, counted from entering it).
+constexpr const char* kPausedMission = R"pb(
+name: "it_paused_r1"
+robot: "r1"
+initial_state: "to_gap"
+plan_sets {
+  name: "goal"
+  goal { x: 13 y: 2 }
+  layers: "obstacles"
+  selection: STATIC
+}
+states {
+  name: "to_gap"
+  go_to { goal { x: 9 y: 8 } tolerance: 0.6 gains { move_to_goal: 1 } }
+  transitions { to: "pause" when { at_goal {} } }
+}
+states {
+  name: "pause"
+  wait {}
+  transitions { to: "to_goal" when { timeout { seconds: 20 } } }
+}
+states {
+  name: "to_goal"
+  go_to { plan_set: "goal" tolerance: 0.4 gains { move_to_goal: 0.34 plan: 0.66 } }
+  transitions { to: "done" when { at_goal {} } }
+}
+states { name: "done" stop {} }
+)pb";
+
+// 5c. A mission behavior killed with SIGKILL in the middle of its mission and started again with
+// the same journal continues in the state it had reached (event "resumed"), not from its start,
+// and finishes.
+TEST_F(BehaviorTest, KilledMidMissionContinuesFromItsJournal) {
+  join(141);
+  write_file(dir().file("scenario.pbtxt"), kScenario);
+  write_file(dir().file("mission.pbtxt"), kPausedMission);
+  const std::string journal = dir().file("behavior-r1.db");
+  Recorder<msg::Heartbeat> beats(participant(), dds::topics::heartbeat);
+  Recorder<msg::RobotState> states(participant(), dds::topics::robot_state);
+  Recorder<msg::MissionStatus> mission(participant(), dds::topics::mission_status);
+  auto text = [&] {
+    std::string out;
+    for (const auto& m : mission.all()) out += m.event + "(" + m.state + (m.reason.empty() ? "" : ": " + m.reason) + ") ";
+    return out;
+  };
+  auto seen = [&](const std::string& event, const std::string& state) {
+    mission.poll();
+    for (const auto& m : mission.all())
+      if (m.event == event && m.state == state) return true;
+    return false;
+  };
+
+  start_simulator({"--config", dir().file("scenario.pbtxt"), "--wait-for", "behavior/r1", "--ack-timeout", "2"});
+  const std::vector<std::string> args = {"--mission", dir().file("mission.pbtxt"), "--journal", journal};
+  auto& first = start_behavior("r1", args, true, "behavior-r1-first");
+  ASSERT_TRUE(await_ready(beats, first));
+  ASSERT_TRUE(await("r1 pausing between its legs", [&] { return seen("transition", "pause"); }, 90s)) << text();
+  stop_watching(first);
+  first.signal(SIGKILL);
+  ASSERT_TRUE(first.wait_for_exit(10s));
+  ASSERT_FALSE(seen("transition", "to_goal")) << "the pause ended before the kill: " << text();
+
+  start_behavior("r1", args, true, "behavior-r1-second");
+  ASSERT_TRUE(await("mission finished after the restart", [&] {
+    mission.poll();
+    states.poll();
+    return !mission.all().empty() && mission.all().back().finished;
+  }, 90s)) << text();
+  std::vector<std::string> events;
+  for (const auto& m : mission.all()) events.push_back(m.event + ":" + m.state);
+  EXPECT_EQ(events, (std::vector<std::string>{"started:to_gap", "transition:pause", "resumed:pause",
+                                              "transition:to_goal", "plan_chosen:to_goal", "transition:done",
+                                              "finished:done"}))
+      << text();
+  const auto resumed = mission.matching([](const msg::MissionStatus& m) { return m.event == "resumed"; });
+  ASSERT_EQ(resumed.size(), 1u);
+  EXPECT_EQ(resumed[0].reason.rfind("after a restart of behavior r1 (journal run 2): in pause since t=", 0), 0u)
+      << resumed[0].reason;
+  EXPECT_NE(resumed[0].reason.find(", 2 mission events before"), std::string::npos) << resumed[0].reason;
+  const auto last = *last_state_of(states, "r1");
+  EXPECT_LE(std::hypot(last.x - 13.0, last.y - 2.0), 0.4 + 0.1) << "r1 at (" << last.x << ", " << last.y << ")";
 }
 
 // 6-7. Plans in parallel (the paper's experiment 5) over DDS, three robots. A wall of buildings

@@ -244,11 +244,13 @@ void BehaviorNode::become_ready_when_possible() {
   spdlog::info("robot {} ready at ({:.2f}, {:.2f}) on map '{}'", options_.robot_id, st.x, st.y, map_->name);
   service_.set_ready();
   // A journal with goals: the --goal was taken by an earlier run (respawned with the same flags).
-  if (!resume_journalled_goals() && options_.initial_goal && !queued_goal_) {
+  // A goal from the journal starts at the next tick (control_pending_tick).
+  const bool journalled = resume_journalled_goals();
+  if (!journalled && options_.initial_goal && !queued_goal_) {
     if (journal_) journal_->goal_arrived(*options_.initial_goal);
     queued_goal_ = options_.initial_goal;
   }
-  if (queued_goal_) {
+  if (queued_goal_ && !journalled) {
     accept_goal(*queued_goal_);
     queued_goal_.reset();
   }
@@ -265,10 +267,16 @@ void BehaviorNode::on_goals(std::vector<dds::Sample<msg::NavGoal>> samples) {
     }
     // Journalled before anything is done with it. A goal whose id is too long is rejected with
     // nothing else done: not journalled (the journal could not match its clipped status).
+    if (queued_goal_ && !resuming_goal_.empty() && queued_goal_->goal_id == resuming_goal_) {
+      // Replaced below before it was taken on again: it was active before the restart, so its
+      // end is published like any preemption.
+      publish_outside_tracker(resuming_goal_, GoalState::Preempted, "preempted by goal " + msg::clipped_id(s.value.goal_id));
+      resuming_goal_.clear();
+    } else if (journal_ && queued_goal_) {  // replaced below, never started
+      journal_->goal_state(queued_goal_->goal_id, GoalState::Preempted,
+                           "replaced by goal " + msg::clipped_id(s.value.goal_id) + " before it started");
+    }
     if (journal_) {
-      if (queued_goal_)  // replaced below, never started
-        journal_->goal_state(queued_goal_->goal_id, GoalState::Preempted,
-                             "replaced by goal " + msg::clipped_id(s.value.goal_id) + " before it started");
       if (!msg::length_problem("goal_id", s.value.goal_id, msg::kMaxIdLength)) journal_->goal_arrived(s.value);
     }
     if (tracker_ && (lockstep_.quiet() || queued_goal_)) {
@@ -303,7 +311,12 @@ void BehaviorNode::on_cancels(std::vector<dds::Sample<msg::NavCancel>> samples) 
     }
     // Not ready yet, or the goal came while quiet: a queued goal it names never starts.
     if (queued_goal_ && (s.value.goal_id.empty() || s.value.goal_id == queued_goal_->goal_id)) {
-      if (journal_) journal_->goal_state(queued_goal_->goal_id, GoalState::Cancelled, s.value.reason);
+      if (!resuming_goal_.empty() && queued_goal_->goal_id == resuming_goal_) {  // active before the restart: its end is published
+        publish_outside_tracker(resuming_goal_, GoalState::Cancelled, s.value.reason.empty() ? "cancelled" : s.value.reason);
+        resuming_goal_.clear();
+      } else if (journal_) {
+        journal_->goal_state(queued_goal_->goal_id, GoalState::Cancelled, s.value.reason);
+      }
       queued_goal_.reset();
     }
     if (!tracker_) continue;
@@ -324,9 +337,10 @@ void BehaviorNode::control_pending_tick() {
   if (!pending_tick_ || !ready() || !state_ || state_->tick < *pending_tick_) return;
   const int64_t tick = *pending_tick_;
   pending_tick_.reset();
-  if (queued_goal_ && tracker_) {  // came while this process was quiet (on_goals)
+  if (queued_goal_ && tracker_) {  // came while this process was quiet (on_goals), or from the journal
     accept_goal(*queued_goal_);
     queued_goal_.reset();
+    resuming_goal_.clear();
   }
   const uint32_t sent = executor_ ? control_mission(tick) : control_goal(tick);
   lockstep_.acknowledge(tick, sent, sent == 0 && waiting_for_a_goal() ? std::numeric_limits<int64_t>::max() : 0);

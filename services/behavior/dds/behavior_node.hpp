@@ -161,7 +161,7 @@ class BehaviorNode {
   std::unique_ptr<BehaviorJournal> journal_;
   std::vector<JournalledGoal> journalled_goals_;        // as found at start, resumed once ready
   std::optional<JournalledMission> journalled_mission_;  // as found at start, resumed at the first step
-  std::string resuming_goal_;  // the id of the journalled goal accept_goal() is taking on again
+  std::string resuming_goal_;  // the journalled goal queued to be taken on again at the next tick ("": none)
 
   std::optional<MissionExecutor> executor_;
   ContactJudge contact_;  // the mission's view of contact: link flags with hysteresis

@@ -75,15 +75,15 @@ bool BehaviorNode::resume_journalled_goals() {
       publish_outside_tracker(g.goal.goal_id, GoalState::Preempted, "preempted by goal " + newest_open->goal.goal_id);
   msg::NavGoal goal = newest_open->goal;
   goal.robot_id = options_.robot_id;
+  // Taken at the first tick this process sees, not now: the world went on while no behavior ran,
+  // and the clock here still shows where it was (the stall clock would count the outage).
   if (!newest_open->state) {  // arrived, never answered: taken as it would have been
-    spdlog::info("journal: goal {} arrived before the restart; taking it now", goal.goal_id);
-    accept_goal(goal);
-    return true;
+    spdlog::info("journal: goal {} arrived before the restart; taking it at the next tick", goal.goal_id);
+  } else {
+    spdlog::info("journal: resuming goal {} ({} before the restart)", goal.goal_id, to_string(*newest_open->state));
+    resuming_goal_ = goal.goal_id;
   }
-  spdlog::info("journal: resuming goal {} ({} before the restart)", goal.goal_id, to_string(*newest_open->state));
-  resuming_goal_ = goal.goal_id;
-  accept_goal(goal);
-  resuming_goal_.clear();
+  queued_goal_ = goal;
   return true;
 }
 

@@ -5,6 +5,7 @@
 
 #include <sqlite3.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -59,14 +60,22 @@ BehaviorJournal::BehaviorJournal(const std::string& path, const std::string& rob
   db_ = sql::open_journal(path);
   try {
     const std::vector<std::string> existing = tables(db_);
-    bool ours = existing.empty();
-    for (const std::string& t : existing) ours = ours || t == "behavior";
-    if (!ours) {
+    const bool known = std::find(existing.begin(), existing.end(), "behavior") != existing.end();
+    if (!known && !existing.empty()) {
       std::string list;
       for (const std::string& t : existing) list += (list.empty() ? "" : ", ") + t;
       throw std::runtime_error("not a behavior journal (its tables: " + list +
                                "); name another file, e.g. {run}/behavior-<robot>.db");
     }
+    // Checked before anything is written: a refused journal stays as it was.
+    const auto robot = known ? setting(db_, "robot") : std::nullopt;
+    const auto mode = known ? setting(db_, "mission") : std::nullopt;
+    if (robot && *robot != robot_id)
+      throw std::runtime_error("it is the journal of robot " + *robot + ", not of " + robot_id +
+                               "; name another journal file or remove this one");
+    if (mode && *mode != mission)
+      throw std::runtime_error("it is the journal of " + mode_of(*mode) + ", not of " + mode_of(mission) +
+                               "; name another journal file or remove this one");
     run_ = sql::count_opening(db_, kSchemaVersion);
     sql::exec(db_, "CREATE TABLE IF NOT EXISTS behavior (key TEXT PRIMARY KEY, value TEXT NOT NULL)");
     sql::exec(db_,
@@ -78,14 +87,6 @@ BehaviorJournal::BehaviorJournal(const std::string& path, const std::string& rob
     sql::exec(db_,
               "CREATE TABLE IF NOT EXISTS mission_events (seq INTEGER PRIMARY KEY AUTOINCREMENT, time_s REAL, "
               "event TEXT NOT NULL, state TEXT NOT NULL, reason TEXT NOT NULL)");
-    const auto robot = setting(db_, "robot");
-    const auto mode = setting(db_, "mission");
-    if (robot && *robot != robot_id)
-      throw std::runtime_error("it is the journal of robot " + *robot + ", not of " + robot_id +
-                               "; name another journal file or remove this one");
-    if (mode && *mode != mission)
-      throw std::runtime_error("it is the journal of " + mode_of(*mode) + ", not of " + mode_of(mission) +
-                               "; name another journal file or remove this one");
     if (!robot || !mode) {
       sql::in_transaction(db_, [&] {
         Statement(db_, "INSERT OR REPLACE INTO behavior VALUES ('robot', ?)").text(1, robot_id).step();
