@@ -21,7 +21,8 @@ inline bool is_terminal(GoalState s) { return s != GoalState::Accepted && s != G
 struct GoalStatus {
   std::string goal_id;
   GoalState state = GoalState::Accepted;
-  std::string reason;             // why it was blocked, rejected, preempted or cancelled; else empty
+  std::string reason;             // why it was blocked, rejected, preempted or cancelled, or resumed (active
+                                  // again after a restart, behavior --journal); else empty
   double distance_to_goal = 0.0;  // m, straight line from the last known pose; 0 when unknown
 
   bool operator==(const GoalStatus& o) const {
