@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   bool without_robots = false;
   bool every_tick = false;
   double world_check_s = 1.0;
+  double ack_timeout_s = 0;
   return service::run_service(
       argc, argv, "simulator", "World and clock simulator: robots, obstacles, lockstep or paced time",
       service::InstanceFlag::Instance,
@@ -51,6 +52,13 @@ int main(int argc, char** argv) {
             ->option_text("S (1)");
         app.add_option("--mode", mode_override, "Override the scenario's clock mode")
             ->check(CLI::IsMember({"lockstep", "paced"}));
+        // A set whose processes respawn holds the world through a restart with a timeout above
+        // its respawn time (back-off + start + readiness): the outage then costs no simulated time.
+        app.add_option("--ack-timeout", ack_timeout_s,
+                       "Lockstep: wall seconds before a silent participant is dropped (overrides the scenario's "
+                       "ack_timeout_s)")
+            ->check(CLI::PositiveNumber)
+            ->option_text("S");
         app.footer("Without --config the built-in demo scenario (deploy/scenarios/demo.pbtxt) runs.");
       },
       [&](service::Service& service) {
@@ -68,6 +76,7 @@ int main(int argc, char** argv) {
         run.settings = loaded.scenario->simulation;
         if (mode_override == "lockstep") run.settings.mode = sim::ClockMode::Lockstep;
         if (mode_override == "paced") run.settings.mode = sim::ClockMode::Paced;
+        if (ack_timeout_s > 0) run.settings.ack_timeout_s = ack_timeout_s;
         run.wait_for_participants = wait_for;
         if (max_ticks > 0) run.max_ticks = max_ticks;
         run.trajectory_csv = trajectory;

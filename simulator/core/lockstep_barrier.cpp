@@ -17,6 +17,8 @@ void LockstepBarrier::remove(const std::string& participant) {
   quiet_until_.erase(participant);
 }
 
+void LockstepBarrier::silent(const std::string& participant) { quiet_until_.erase(participant); }
+
 void LockstepBarrier::begin_tick(Tick tick, double now_s) {
   current_ = tick;
   tick_started_s_ = now_s;

@@ -50,6 +50,9 @@ class LockstepBarrier {
   bool add(const std::string& participant, bool from_current = false);
   // A participant leaves on purpose: not waited for, and an ack does not bring it back.
   void remove(const std::string& participant);
+  // A participant fell silent (its process died, stopped or is cut off): its quiet declaration
+  // no longer holds, since it could not wake the world when sent something. It stays waited for.
+  void silent(const std::string& participant);
 
   void begin_tick(Tick tick, double now_s);
   AckOutcome on_ack(const std::string& participant, Tick tick, std::uint32_t commands_sent, Tick quiet_until = 0);

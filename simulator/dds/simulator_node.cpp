@@ -282,9 +282,17 @@ void SimulatorNode::on_registrations(std::vector<dds::Sample<msg::LockstepRegist
       registered_once_.insert(name);
       if (barrier_.add(name, before_start))
         spdlog::info("participant {} joined lockstep at tick {}{}", name, tick_, before_start ? " (from this tick)" : "");
-    } else {
-      barrier_.remove(name);
+    } else if (s.valid && !s.value.active) {
+      barrier_.remove(name);  // it said so (a leaving LockstepClient writes active=false first)
       spdlog::info("participant {} left lockstep at tick {}", name, tick_);
+    } else {
+      // The instance ended without a word: its writer's lease ran out (the process was killed,
+      // is stopped or is cut off; Cyclone reports that as a disposal). It stays waited for, so
+      // the world holds for a respawned or continued process, until the ack timeout drops it (a
+      // later ack rejoins it).
+      barrier_.silent(name);
+      spdlog::warn("participant {} is silent at tick {} (its registration ended without leaving): waited for up to {} s",
+                   name, tick_, options_.settings.ack_timeout_s);
     }
   }
   advance_while_complete();

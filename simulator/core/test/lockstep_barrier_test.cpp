@@ -214,5 +214,23 @@ TEST_F(Barrier, ALeaverOrADroppedParticipantTakesItsQuietDeclarationWithIt) {
   EXPECT_FALSE(barrier.quiet(2));
 }
 
+// A process stopped or killed cannot wake the world when sent something: its quiet declaration
+// ends when it falls silent, and the world waits for it (until the timeout) instead of jumping.
+TEST_F(Barrier, ASilentParticipantIsNoLongerQuietButStillWaitedFor) {
+  barrier.on_ack("a", 1, 0, 100);
+  barrier.on_ack("b", 1, 0, 100);
+  barrier.end_tick(1);
+  barrier.begin_tick(2, 100.0);
+  ASSERT_TRUE(barrier.quiet(2));
+  barrier.silent("b");
+  EXPECT_FALSE(barrier.quiet(2));
+  EXPECT_EQ(barrier.participants(), (Names{"a", "b"}));
+  barrier.on_ack("a", 2, 0, 100);
+  EXPECT_FALSE(barrier.complete(2));  // b owes tick 2
+  EXPECT_TRUE(barrier.expire(2, 101.0, 5.0).empty());
+  EXPECT_EQ(barrier.on_ack("b", 2, 0, 0), Ack::Counted);  // continued: it answers and counts
+  EXPECT_TRUE(barrier.complete(2));
+}
+
 }  // namespace
 }  // namespace autonomy::sim
