@@ -143,8 +143,10 @@ TEST_F(WorldIdentityTest, ForgedClockSamplesAreIgnoredCountedAndTheRunFinishes) 
 
 // Telemetry of another spacecraft on the domain used to be mixed into DS1's (the real unit was
 // reset twice and given up). Here every DS1 telemetry sample is echoed as spacecraft "intruder"
-// with its electronics unit lpe failed: the executive of ds1 (--spacecraft ds1, as ds1.set passes
-// it) flies the four hours with no fault response and every goal achieved, and says what it ignored.
+// with its electronics unit lpe failed, from the moment the first plan executes: the executive,
+// started without --spacecraft, follows the spacecraft it heard first (ds1), flies the four hours
+// with no fault response and every goal achieved, and says what it ignored. (ds1.set passes
+// --spacecraft ds1, which leaves nothing to chance.)
 TEST_F(WorldIdentityTest, TelemetryOfAnotherSpacecraftDoesNotReachTheExecutive) {
   join(112);
   ExecutiveWatch watch(participant());
@@ -154,7 +156,7 @@ TEST_F(WorldIdentityTest, TelemetryOfAnotherSpacecraftDoesNotReachTheExecutive) 
   const std::string source = AUTONOMY_SOURCE_DIR;
   start("planner", AUTONOMY_PLANNER_BIN, {"--domain", std::to_string(domain_), "--log-dir", dir().path()});
   start("executive", AUTONOMY_EXECUTIVE_BIN,
-        {"--config", source + "/services/executive/examples/ds1-4h.pbtxt", "--spacecraft", "ds1", "--domain",
+        {"--config", source + "/services/executive/examples/ds1-4h.pbtxt", "--domain",
          std::to_string(domain_), "--log-dir", dir().path(), "--report-dir", dir().file("report")});
   start_simulator({"--config", source + "/deploy/scenarios/ds1.pbtxt", "--wait-for", "executive/main"});
 
@@ -162,7 +164,7 @@ TEST_F(WorldIdentityTest, TelemetryOfAnotherSpacecraftDoesNotReachTheExecutive) 
   ASSERT_TRUE(await("the executive finished the four hours", [&] {
     watch.poll();
     for (msg::SpacecraftTelemetry t : telemetry.poll()) {
-      if (t.spacecraft != "ds1") continue;
+      if (t.spacecraft != "ds1" || watch.events("plan_executing").empty()) continue;
       t.spacecraft = "intruder";
       for (auto& d : t.devices)
         if (d.device == "lpe") d.mode = "failed";
