@@ -10,8 +10,13 @@
 // Prints figures and the ratio layer/raw; the goal is a ratio of at most 1.20.
 //
 // Usage: dds_layer_bench [--domain 160] [--rounds 3] [--count 5000] [--warmup 500]
-//                        [--tp-seconds 2] [--quick]
+//                        [--tp-seconds 2] [--quick] [--secure-domain N]
 // Needs CYCLONEDDS_URI (bench/run.sh uses deploy/dds/loopback.xml).
+//
+// --secure-domain N: DDS Security's cost instead. The typed layer on --domain (plain) against the
+// typed layer on domain N, which CYCLONEDDS_URI must secure (deploy/security/security.sh uri DIR
+// NAME --domain N, an identity granted 'bench/*'; bench/run.sh --secure makes one): the same
+// round trips and throughput, plain and secured alternating, ratios secured/plain.
 #include "bench/bench_support.hpp"
 #include "bench/pingpong.hpp"
 
@@ -52,6 +57,7 @@ struct Options {
   int count = 5000;
   int warmup = 500;
   double tp_seconds = 2.0;
+  int secure_domain = -1;
 };
 
 // Exits (help text or argument error, CLI11's exit code) when the arguments do not make a run.
@@ -64,6 +70,9 @@ Options parse(int argc, char** argv) {
   app.add_option("--count", o.count, "Round trips per run")->check(CLI::PositiveNumber)->capture_default_str();
   app.add_option("--warmup", o.warmup, "Warm-up round trips")->check(CLI::NonNegativeNumber)->capture_default_str();
   app.add_option("--tp-seconds", o.tp_seconds, "Seconds per throughput run")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("--secure-domain", o.secure_domain,
+                 "Compare plain --domain against this domain, secured by CYCLONEDDS_URI (DDS Security)")
+      ->check(CLI::Range(0, 230));
   app.add_flag("--quick", quick, "Short runs, for a smoke test (1 round, 1000 round trips, 0.5 s)");
   try {
     app.parse(argc, argv);
@@ -83,6 +92,72 @@ void print_rtt_row(const char* payload, const char* api, const std::vector<doubl
               percentile(v, 90), percentile(v, 99), mean(v));
 }
 
+// The typed layer plain (o.domain) against secured (o.secure_domain): round trips and throughput,
+// the two alternating within every round so that drift of the machine hits both.
+int secure_main(const Options& o, const std::string& exe) {
+  const Payload payloads[] = {Payload::RobotState, Payload::Blob1K};
+  const int domains[2] = {o.domain, o.secure_domain};
+  const char* names[2] = {"plain", "secure"};
+  std::map<std::pair<Payload, int>, std::vector<double>> rtt;
+  std::map<int, std::vector<double>> recv_rate;
+  std::map<int, uint64_t> lost;
+  int run = 0;
+  for (int round = 0; round < o.rounds; ++round) {
+    for (Payload payload : payloads) {
+      for (int k = 0; k < 2; ++k) {
+        const int which = round % 2 == 0 ? k : 1 - k;
+        const std::string tag = std::string(to_string(payload)) + "_" + names[which] + "_" + std::to_string(run++);
+        ChildProcess echo_side({exe, "--child", "echo", "layer", to_string(payload), std::to_string(domains[which]), tag},
+                               false);
+        std::vector<double> v = ping(Api::Layer, payload, domains[which], tag, o.warmup, o.count);
+        if (echo_side.wait(std::chrono::seconds(10)) != 0) throw std::runtime_error("echo process failed");
+        progress("[rtt round %d/%d] %-10s %-6s p50 %.1f us  p99 %.1f us", round + 1, o.rounds, to_string(payload),
+                 names[which], percentile(v, 50), percentile(v, 99));
+        auto& all = rtt[{payload, which}];
+        all.insert(all.end(), v.begin(), v.end());
+      }
+    }
+    for (int k = 0; k < 2; ++k) {
+      const int which = round % 2 == 0 ? k : 1 - k;
+      const std::string tag = std::string("tp_") + names[which] + "_" + std::to_string(run++);
+      ChildProcess reader_side({exe, "--child", "tp-read", "layer", std::to_string(domains[which]), tag}, true);
+      const WriterStats w = throughput_write(Api::Layer, domains[which], tag, o.tp_seconds);
+      std::istringstream out(reader_side.read_all_stdout());
+      if (reader_side.wait(std::chrono::seconds(10)) != 0) throw std::runtime_error("throughput reader failed");
+      unsigned long long received = 0, lost_n = 0;
+      double secs = 0;
+      if (!(out >> received >> secs >> lost_n) || secs <= 0) throw std::runtime_error("throughput reader: no result");
+      recv_rate[which].push_back(static_cast<double>(received) / secs);
+      lost[which] += lost_n;
+      progress("[throughput round %d/%d] %-6s received %.0f samples/s (written %.0f/s, lost %llu)", round + 1,
+               o.rounds, names[which], recv_rate[which].back(), static_cast<double>(w.written) / w.seconds, lost_n);
+    }
+  }
+  std::printf("\n== dds_layer_bench --secure-domain: typed layer plain (domain %d) vs DDS Security (domain %d),"
+              " %d rounds, 2 processes, loopback ==\n",
+              o.domain, o.secure_domain, o.rounds);
+  std::printf("round trip, reliable, waitset-driven, %d round trips per run (after %d warm-up)\n", o.count, o.warmup);
+  std::printf("  %-11s %-6s %8s %9s %9s %9s %9s\n", "payload", "config", "samples", "p50 us", "p90 us", "p99 us",
+              "mean us");
+  for (Payload payload : payloads)
+    for (int which = 0; which < 2; ++which) print_rtt_row(to_string(payload), names[which], rtt[{payload, which}]);
+  std::printf("  ratio secure/plain:\n");
+  for (Payload payload : payloads) {
+    const auto& plain = rtt[{payload, 0}];
+    const auto& secure = rtt[{payload, 1}];
+    std::printf("  %-11s p50 %.3f  p90 %.3f  p99 %.3f  mean %.3f\n", to_string(payload),
+                percentile(secure, 50) / percentile(plain, 50), percentile(secure, 90) / percentile(plain, 90),
+                percentile(secure, 99) / percentile(plain, 99), mean(secure) / mean(plain));
+  }
+  const double plain_tp = median(recv_rate[0]), secure_tp = median(recv_rate[1]);
+  std::printf("throughput, 1 KiB, reliable keep-last 256, %.1f s per run (median of %d runs)\n", o.tp_seconds,
+              o.rounds);
+  std::printf("  plain   received %10.0f samples/s  lost %llu\n", plain_tp, static_cast<unsigned long long>(lost[0]));
+  std::printf("  secure  received %10.0f samples/s  lost %llu\n", secure_tp, static_cast<unsigned long long>(lost[1]));
+  std::printf("  ratio secure/plain: %.3f\n", secure_tp / plain_tp);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -99,6 +174,7 @@ int main(int argc, char** argv) {
     if (!std::getenv("CYCLONEDDS_URI"))
       progress("note: CYCLONEDDS_URI is not set; Cyclone picks its default network interface");
     const std::string exe = self_exe();
+    if (o.secure_domain >= 0) return secure_main(o, exe);
     const Payload payloads[] = {Payload::RobotState, Payload::Blob1K};
 
     // ---- round trips

@@ -14,6 +14,9 @@
 //   --dds-extra appends a Cyclone config snippet (e.g. bench/cyclone-lockstep.xml) to
 //   CYCLONEDDS_URI for the lockstep processes, and runs the same cases without it first, for
 //   comparison.
+//   --secure DIR runs the same cases once more with DDS Security: every process on its own
+//   identity from DIR (deploy/security/security.sh set DIR deploy/sets/demo-lockstep.set; the bench
+//   itself as operator), each on the loopback profile plus its identity.
 // Needs the simulator and behavior executables next to this one (build/bin).
 #include "bench/bench_support.hpp"
 #include "bench/pingpong.hpp"
@@ -45,6 +48,7 @@ struct Options {
   int64_t warmup_ticks = 300;
   std::vector<int> robot_counts = {1, 3};
   std::string dds_extra;
+  std::string secure_dir;
   int rtt_count = 3000;
 };
 
@@ -117,13 +121,30 @@ struct RunResult {
   uint64_t participants_dropped = 0;
 };
 
-RunResult run_lockstep(const Options& o, int robots, int domain, const std::string& label) {
+// CYCLONEDDS_URI for the next participant or child: with DDS Security (secure_dir set), `base`
+// plus the identity NAME's section; otherwise left as the run's configuration set it.
+void use_identity(const std::string& secure_dir, const std::string& base, const std::string& name) {
+  if (secure_dir.empty()) return;
+  const std::string uri = base + ",file://" + secure_dir + "/identities/" + name + "/cyclone.xml";
+  setenv("CYCLONEDDS_URI", uri.c_str(), 1);
+}
+
+RunResult run_lockstep(const Options& o, int robots, int domain, const std::string& label,
+                       const std::string& secure_dir = "") {
+  const char* env_uri = std::getenv("CYCLONEDDS_URI");
+  const std::string base = env_uri ? env_uri : "";
+  // The identities are set per process below; the next run starts from the run's own setting.
+  struct RestoreUri {
+    std::string uri;
+    ~RestoreUri() { setenv("CYCLONEDDS_URI", uri.c_str(), 1); }
+  } restore{base};
   const std::string bin = self_dir();
   const std::string log_dir = "/tmp/autonomy-bench/lockstep-" + std::to_string(getpid()) + "-" + label;
   std::system(("mkdir -p " + log_dir).c_str());
   const std::string dom = std::to_string(domain);
 
   // The bench's own participant: status in, goals out.
+  use_identity(secure_dir, base, "operator");
   dds::Participant participant(domain);
   dds::Topic<msg::SimulatorStatus> status_topic(participant, dds::topics::sim_status);
   dds::Topic<msg::GoalStatus> goal_status_topic(participant, dds::topics::goal_status);
@@ -138,10 +159,13 @@ RunResult run_lockstep(const Options& o, int robots, int domain, const std::stri
   std::vector<std::string> sim_args = {bin + "/simulator", "--domain", dom, "--max-ticks", std::to_string(o.ticks),
                                        "--log-level", "warn", "--log-dir", log_dir, "--wait-for"};
   for (int i = 0; i < robots; ++i) sim_args.push_back(std::string("behavior/") + kRobots[i].id);
+  use_identity(secure_dir, base, "simulator-main");
   ChildProcess sim(sim_args, false, log_dir + "/simulator.out");
   std::vector<ChildProcess> behaviors;
+  behaviors.reserve(robots);
   for (int i = 0; i < robots; ++i) {
     const RobotSpec& r = kRobots[i];
+    use_identity(secure_dir, base, std::string("behavior-") + r.id);
     behaviors.emplace_back(std::vector<std::string>{bin + "/behavior", "--robot", r.id, "--domain", dom, "--goal",
                                                     std::to_string(r.gx), std::to_string(r.gy), "--log-level",
                                                     "warn", "--log-dir", log_dir},
@@ -268,6 +292,8 @@ Options parse(int argc, char** argv) {
       ->delimiter(',')
       ->check(CLI::Range(1, 3));
   app.add_option("--dds-extra", o.dds_extra, "A Cyclone config snippet to compare against the default");
+  app.add_option("--secure", o.secure_dir,
+                 "Also run with DDS Security: identities in this folder (security.sh set DIR demo-lockstep.set)");
   app.add_flag("--quick", quick, "Short runs, for a smoke test");
   try {
     app.parse(argc, argv);
@@ -324,14 +350,20 @@ int main(int argc, char** argv) {
     progress("[baseline] raw RTT p50 %.1f us -> at most %.0f ticks/s", rtt_p50, 1e6 / rtt_p50);
 
     struct Config {
-      std::string name, uri;
+      std::string name, uri, secure_dir;
     };
-    std::vector<Config> configs = {{"default", base_uri}};
+    std::vector<Config> configs = {{"default", base_uri, ""}};
     if (!o.dds_extra.empty()) {
       const std::string extra = o.dds_extra.rfind("file://", 0) == 0 || o.dds_extra.rfind('<', 0) == 0
                                     ? o.dds_extra
                                     : "file://" + o.dds_extra;
-      configs.push_back({"extra", base_uri.empty() ? extra : base_uri + "," + extra});
+      configs.push_back({"extra", base_uri.empty() ? extra : base_uri + "," + extra, ""});
+    }
+    if (!o.secure_dir.empty()) {
+      const std::string dir = std::filesystem::absolute(o.secure_dir).string();
+      if (!std::filesystem::exists(dir + "/identities/simulator-main/cyclone.xml"))
+        throw std::runtime_error("--secure " + dir + ": no identities (security.sh set DIR deploy/sets/demo-lockstep.set)");
+      configs.push_back({"secure", base_uri, dir});
     }
 
     std::vector<std::pair<std::string, RunResult>> results;
@@ -342,7 +374,7 @@ int main(int argc, char** argv) {
         const std::string label = c.name + "-" + std::to_string(robots) + "robot";
         progress("[lockstep] %s: simulator + %d behavior, %lld ticks (domain %d)", label.c_str(), robots,
                  static_cast<long long>(o.ticks), domain);
-        const RunResult r = run_lockstep(o, robots, domain, label);
+        const RunResult r = run_lockstep(o, robots, domain, label, c.secure_dir);
         progress("[lockstep] %s: %.0f ticks/s, mean step %.1f us", label.c_str(), r.ticks_per_s, r.mean_step_us);
         results.emplace_back(c.name, r);
         domain = domain + 1 > 169 ? o.domain + 1 : domain + 1;
@@ -370,6 +402,16 @@ int main(int argc, char** argv) {
       if (one > 0 && r.robots != 1) std::printf(", %.2f x the 1-robot rate", r.ticks_per_s / one);
       if (r.robots == 3) std::printf("  (goal: at least 2000 ticks/s with 3 robots)");
       std::printf("\n");
+    }
+    for (const auto& [name, r] : results) {
+      if (name != "secure") continue;
+      for (const auto& [n2, r2] : results)
+        if (n2 == "default" && r2.robots == r.robots)
+          std::printf("  DDS Security, %d robots: %.0f against %.0f ticks/s plain = %.2f x (CPU per tick: simulator"
+                      " %.2f x, behaviors %.2f x)\n",
+                      r.robots, r.ticks_per_s, r2.ticks_per_s, r.ticks_per_s / r2.ticks_per_s,
+                      r.sim_cpu_us_per_tick / r2.sim_cpu_us_per_tick,
+                      r.behavior_cpu_us_per_tick / r2.behavior_cpu_us_per_tick);
     }
     return 0;
   } catch (const std::exception& e) {

@@ -18,6 +18,22 @@ export CYCLONEDDS_URI="${CYCLONEDDS_URI:-file://$repo/deploy/dds/loopback.xml}"
 
 quick=()
 if [[ "${1:-}" == "--quick" ]]; then quick=(--quick); fi
+# bench/run.sh --secure [--quick]: DDS Security against plain, both measured in the same run: the
+# typed layer's round trips and throughput, lockstep ticks/s (docs/security.md).
+if [[ "${1:-}" == "--secure" ]]; then
+  if [[ "${2:-}" == "--quick" ]]; then quick=(--quick); fi
+  cmake -S "$repo" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+  ninja -C "$build" dds_layer_bench lockstep_bench simulator behavior
+  keys=$(mktemp -d)
+  trap 'rm -rf "$keys"' EXIT
+  bash "$repo/deploy/security/security.sh" set "$keys" "$repo/deploy/sets/demo-lockstep.set" >/dev/null
+  bash "$repo/deploy/security/security.sh" add "$keys" bench operator --also 'bench/*' >/dev/null
+  echo "load average: $(cut -d' ' -f1-3 /proc/loadavg), $(nproc) cores, CYCLONEDDS_URI=$CYCLONEDDS_URI"
+  CYCLONEDDS_URI="$CYCLONEDDS_URI,$(bash "$repo/deploy/security/security.sh" uri "$keys" bench --domain "$((domain + 2))")" \
+    "$build/bin/dds_layer_bench" --domain "$domain" --secure-domain "$((domain + 2))" "${quick[@]}"
+  "$build/bin/lockstep_bench" --domain "$((domain + 3))" --secure "$keys" "${quick[@]}"
+  exit 0
+fi
 
 cmake -S "$repo" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 ninja -C "$build" dds_layer_bench lockstep_bench field_bench radio_bench world_bench paced_sim_bench simulator behavior experiment_runner \
