@@ -13,8 +13,10 @@
 //    128    SecurityTest.ATamperedPermissionsFileStopsTheServiceAtStartAndTheCheckerFindsAForeignKey
 //    129    SecureCourierTest.ThePaperExampleCompletesSecured
 //    130    SecurityTest.TheDs1DayCompletesSecured
+//    131    SecurityTest.TheLauncherRunsASetSecuredAndRefusesTamperedPermissionsBeforeStarting
 #include "tests/integration/courier_fixture.hpp"
 #include "tests/support/executive_watch.hpp"
+#include "tests/support/launched_set.hpp"
 #include "tests/support/process_test.hpp"
 
 #include <gtest/gtest.h>
@@ -302,6 +304,42 @@ TEST_F(SecurityTest, TheDs1DayCompletesSecured) {
   EXPECT_EQ(watch.achieved().size(), 16u) << watch.story(false);
   EXPECT_TRUE(watch.lost().empty()) << watch.story(false);
   EXPECT_TRUE(watch.events("aborted").empty()) << watch.story(false);
+}
+
+// deploy/launch.sh --profile secure as a user runs it: the identities are made in
+// AUTONOMY_SECURITY_DIR on the first run; a tools identity then sees the set. A permissions file
+// changed by hand stops the next launch before any process starts, naming the file.
+TEST_F(SecurityTest, TheLauncherRunsASetSecuredAndRefusesTamperedPermissionsBeforeStarting) {
+  join_secured(131, {{"operator", "operator"}, {"tools", "tools"}});
+  ASSERT_EQ(setenv("AUTONOMY_SECURITY_DIR", keys_->dir().c_str(), 1), 0);  // inherited by the launchers
+  const LaunchedSet set(dir(), "demo", [](const std::string&, const std::string& line) { return line; });
+  auto& launcher = start("launcher", "/bin/bash", set.launcher_args(domain_, {"--profile", "secure"}), false);
+  ASSERT_TRUE(await("the set ready", [&] { return out("launcher").find("set 'demo' ready") != std::string::npos; },
+                    std::chrono::seconds(60)))
+      << out("launcher");
+  EXPECT_TRUE(std::filesystem::exists(keys_->folder("simulator/main") + "/cert.pem"));
+  EXPECT_TRUE(std::filesystem::exists(keys_->folder("behavior/r1") + "/cert.pem"));
+  auto& list = cli("tools", "list-tools", {"node", "list"});
+  ASSERT_TRUE(ended(list));
+  EXPECT_NE(out("list-tools").find("simulator"), std::string::npos) << out("list-tools");
+  EXPECT_NE(out("list-tools").find("behavior"), std::string::npos) << out("list-tools");
+  launcher.signal(SIGINT);
+  ASSERT_TRUE(ended(launcher));
+
+  const std::string permissions = keys_->folder("behavior/r1") + "/permissions.p7s";
+  std::string text = read_file(permissions);
+  const auto at = text.find("<topic>autonomy/robot/cmd_vel</topic>");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, std::string("<topic>autonomy/robot/cmd_vel</topic>").size(), "<topic>autonomy/clock</topic>");
+  write_file(permissions, text);
+  const LaunchedSet again(dir(), "demo", [](const std::string&, const std::string& line) { return line; });
+  auto& refused = start("launcher-again", "/bin/bash", again.launcher_args(domain_, {"--profile", "secure"}), false);
+  ASSERT_TRUE(ended(refused));
+  EXPECT_TRUE(refused.status()->exited && refused.status()->code == 2) << out("launcher-again");
+  EXPECT_NE(out("launcher-again").find("behavior-r1/permissions.p7s is not signed by this permissions CA"),
+            std::string::npos)
+      << out("launcher-again");
+  EXPECT_EQ(out("launcher-again").find("launch: started"), std::string::npos) << out("launcher-again");
 }
 
 }  // namespace
