@@ -313,11 +313,14 @@ cmd_set() {
 }
 
 # expiry FILE WHAT: clear errors for dates.
-check_dates() {
+check_dates() {  # check_dates CERT WHAT RENEW_COMMAND
   local cert=$1 what=$2 end start
   end=$(openssl x509 -in "$cert" -noout -enddate | cut -d= -f2)
   start=$(openssl x509 -in "$cert" -noout -startdate | cut -d= -f2)
-  openssl x509 -in "$cert" -noout -checkend 0 >/dev/null || fail "$what $cert expired on $end: renew it (deploy/security/security.sh renew ...)"
+  if ! openssl x509 -in "$cert" -noout -checkend 0 >/dev/null; then
+    fail "$what $cert expired on $end: renew it ($3)"
+    return
+  fi
   [ "$(date -u -d "$start" +%s)" -le "$(date -u +%s)" ] || fail "$what $cert is not valid before $start (check this host's clock)"
   if ! openssl x509 -in "$cert" -noout -checkend $((30 * 86400)) >/dev/null; then
     echo "security: warning: $what $cert expires on $end (within 30 days): renew it soon" >&2
@@ -336,10 +339,11 @@ check_identity() {  # check_identity DIR FILE
   for f in key.pem cert.pem permissions.p7s cyclone.xml; do
     [ -f "$id/$f" ] || { fail "identity $file: $id/$f is missing"; return; }
   done
-  check_dates "$id/cert.pem" "the certificate of $file"
+  check_dates "$id/cert.pem" "the certificate of $file" "deploy/security/security.sh renew $dir $file"
   [ "$(pubkey_of_cert "$id/cert.pem")" = "$(pubkey_of_key "$id/key.pem")" ] \
     || fail "identity $file: $id/cert.pem does not match its key $id/key.pem (a certificate issued for another key)"
-  openssl verify -CAfile "$dir/identity_ca.pem" "$id/cert.pem" >/dev/null 2>&1 \
+  # -no_check_time: an expired certificate is reported above as expired, not as foreign.
+  openssl verify -no_check_time -CAfile "$dir/identity_ca.pem" "$id/cert.pem" >/dev/null 2>&1 \
     || fail "identity $file: $id/cert.pem is not signed by this identity CA ($dir/identity_ca.pem)"
   if ! openssl smime -verify -in "$id/permissions.p7s" -CAfile "$dir/permissions_ca.pem" -out "$id/.permissions.check" >/dev/null 2>&1; then
     fail "identity $file: $id/permissions.p7s is not signed by this permissions CA ($dir/permissions_ca.pem), or was changed after signing"
@@ -360,8 +364,8 @@ cmd_check() {
   local dir=$1; shift
   need_init "$dir"
   failures=0
-  check_dates "$dir/identity_ca.pem" "the identity CA"
-  check_dates "$dir/permissions_ca.pem" "the permissions CA"
+  check_dates "$dir/identity_ca.pem" "the identity CA" "deploy/security/security.sh renew $dir --ca"
+  check_dates "$dir/permissions_ca.pem" "the permissions CA" "deploy/security/security.sh renew $dir --ca"
   openssl smime -verify -in "$dir/governance.p7s" -CAfile "$dir/permissions_ca.pem" -out /dev/null >/dev/null 2>&1 \
     || fail "$dir/governance.p7s is not signed by this permissions CA ($dir/permissions_ca.pem), or was changed after signing"
   local names=("$@")
