@@ -363,6 +363,57 @@ TEST_F(ExecutiveTest, APlannerThatStaysAwayHoldsTheWorldTenSecondsInAllAndTheDay
   EXPECT_EQ(last_telemetry_->propulsion.thrust_level, 0u);
 }
 
+// The planner replaced, once the first plan executes, by one that refuses every request as busy
+// (the test answers them): refusals do not renew the lockstep hold. Asked again after 1, 2, 4 s
+// of back-off, four refusals fall within the outage's 10 s (at about 0, 1, 3 and 7 s), then the
+// world goes on with the spacecraft safe; had each refusal renewed the hold, the world would
+// wait for a fifth (at about 15 s) and ten seconds more.
+TEST_F(ExecutiveTest, APlannerThatRefusesEveryRequestHoldsTheWorldTenSecondsInAll) {
+  fly(48, {});
+  ASSERT_NO_FATAL_FAILURE(kill_the_planner_then_stick_the_camera());
+  dds::Topic<msg::PlanningRequest> request_topic(participant(), dds::topics::planner_request);
+  dds::Topic<msg::PlanningReply> reply_topic(participant(), dds::topics::planner_reply);
+  dds::Reader<msg::PlanningRequest> requests(participant(), request_topic);
+  dds::Writer<msg::PlanningReply> replies(participant(), reply_topic);
+  auto refuse_what_came = [&] {
+    for (const auto& r : requests.take()) {
+      if (!r.valid) continue;
+      msg::PlanningReply no;
+      no.request_id = r.value.request_id;
+      no.requester = r.value.requester;
+      no.status = msg::PlanningStatus::Rejected;
+      no.reason = "busy";
+      no.detail = "the test's planner refuses everything";
+      replies.write(no);
+    }
+  };
+  auto released = [&] {
+    return !watch_->events_where([](const auto& e) {
+      return e.kind == "plan_late" && e.text.find("the world goes on with the spacecraft safe") != std::string::npos;
+    }).empty();
+  };
+  ASSERT_TRUE(await("the world released with the spacecraft safe", [&] {
+    refuse_what_came();
+    poll();
+    return released();
+  }, std::chrono::seconds(90))) << story();
+  const auto release = events("plan_late").back();
+  const auto refused_before = watch_->events_where([&](const auto& e) {
+    return e.kind == "plan_refused" && e.number < release.number;
+  });
+  EXPECT_GE(refused_before.size(), 2u) << story();
+  EXPECT_LE(refused_before.size(), 4u) << story();
+  for (const auto& e : refused_before) EXPECT_NE(e.text.find("busy"), std::string::npos) << e.text;
+  // Refused all day long, the day still ends at its horizon with its report.
+  ASSERT_TRUE(await("the day finished", [&] {
+    refuse_what_came();
+    poll();
+    return watch_->finished();
+  }, std::chrono::seconds(120))) << story();
+  EXPECT_EQ(events("finished").at(0).tick, 14400) << story();
+  EXPECT_TRUE(std::ifstream(dir().file("report/report.md")).good());
+}
+
 // Killed -9 while the engine thrusts in the first horizon and started again at once on its
 // journal: the spacecraft is safed first, nothing achieved is forgotten, the rest is planned from
 // the journalled state on the horizons' grid, and the second horizon's goals are all achieved.

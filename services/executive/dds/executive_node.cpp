@@ -194,7 +194,7 @@ void ExecutiveNode::finish_tick(const msg::SimClock& clock, std::uint32_t sent) 
                        (state_ == State::kExecuting && now_ >= horizon_end_ && !next_plan_ &&
                         horizon_end_ < mission_.horizon());
   // The hold is bounded per outage, not per request: requests asked again while the planner
-  // stays silent do not renew it (any reply does).
+  // stays silent or refuses do not renew it (a plan or a proof of infeasibility does).
   const bool may_hold = !hold_since_ || WallClock::now() - *hold_since_ < hold_limit();
   if (waiting && (state_ == State::kWaitingForPlan || planner_.waiting()) &&
       clock.mode == msg::ClockMode::Lockstep && may_hold) {
@@ -466,6 +466,9 @@ Time ExecutiveNode::horizon_end_for(Time now) const {
 void ExecutiveNode::on_timer() {
   ask_first();
   if (planner_.waiting() && planner_.waited() > seconds(options_.plan_timeout_s)) ask_again();
+  // A refused request waits out its back-off here too while a tick is held: the world brings no
+  // new tick to ask it at (it waited for the hold's end, and the hold was lost).
+  if (held_) reask();
   if (held_ && hold_since_ && WallClock::now() - *hold_since_ > hold_limit()) {
     event("plan_late", now_, "no plan within " + std::to_string(wall_s(hold_limit())) +
                                  " s: the world goes on with the spacecraft safe");
@@ -477,7 +480,6 @@ void ExecutiveNode::on_timer() {
 void ExecutiveNode::on_reply() {
   auto reply = planner_.take_reply();
   if (!reply) return;
-  hold_since_.reset();  // the planner answers: a new wait may hold the world afresh
   if (state_ == State::kFinished) return;
   const bool for_next = state_ == State::kExecuting;
   if (!usable(*reply)) {
@@ -485,6 +487,9 @@ void ExecutiveNode::on_reply() {
     if (!reply->detail.empty()) why += ": " + reply->detail;
     for (const std::string& v : reply->violations) why += "; " + v;
     event("plan_refused", now_, reply->request_id + ": " + why);
+    // A proof of infeasibility is an answer (the next request may hold the world afresh); a
+    // rejection or an invalid plan is not: asked again, it does not renew the outage's hold.
+    if (reply->status == msg::PlanningStatus::Infeasible) hold_since_.reset();
     if (reply->status == msg::PlanningStatus::Infeasible && !asked_optional_) {
       // Not every goal can be had (a fault took what some need): the planner may leave goals
       // out and keeps the rest.
@@ -501,6 +506,7 @@ void ExecutiveNode::on_reply() {
     return;
   }
   refusals_ = 0;
+  hold_since_.reset();  // a plan: a later wait may hold the world afresh
   if (for_next) {
     next_plan_ = std::move(*reply);
     next_goals_ = asked_goals_;
