@@ -113,9 +113,10 @@ class KillMatrixTest : public ProcessTest, public ::testing::WithParamInterface<
 
   // The set's copy: worlds in lockstep, held for the test's hand, waiting 30 s for a silent
   // participant; every other line as shipped.
-  void prepare(const std::string& set) {
-    set_.emplace(dir(), set, [](const std::string& name, const std::string& line) {
-      if (name != "simulator/main") return line;
+  // `also` edits the other lines (where a cell must depart from the shipped set, it says why).
+  void prepare(const std::string& set, const LaunchedSet::LineEdit& also = nullptr) {
+    set_.emplace(dir(), set, [&](const std::string& name, const std::string& line) {
+      if (name != "simulator/main") return also ? also(name, line) : line;
       return replaced(line, " --mode paced", "") + " --mode lockstep --ack-timeout 30 --wait-for " + kHand;
     });
   }
