@@ -471,7 +471,10 @@ TEST_F(BehaviorTest, KilledMidMissionContinuesFromItsJournal) {
   };
 
   start_simulator({"--config", dir().file("scenario.pbtxt"), "--wait-for", "behavior/r1", "--ack-timeout", "2"});
-  const std::vector<std::string> args = {"--mission", dir().file("mission.pbtxt"), "--journal", journal};
+  // --start as in deploy/sets/recon-parallel.set: the restarted behavior takes the robot back where
+  // it stands (a second spawn at --start is refused: the world kept the robot).
+  const std::vector<std::string> args = {"--mission", dir().file("mission.pbtxt"), "--journal", journal,
+                                         "--start", "2", "2"};
   auto& first = start_behavior("r1", args, true, "behavior-r1-first");
   ASSERT_TRUE(await_ready(beats, first));
   ASSERT_TRUE(await("r1 pausing between its legs", [&] { return seen("transition", "pause"); }, 90s)) << text();

@@ -72,6 +72,9 @@ BehaviorNode::BehaviorNode(service::Service& service, BehaviorNodeOptions option
   if (!options_.journal_path.empty()) {
     journal_ = std::make_unique<BehaviorJournal>(options_.journal_path, options_.robot_id,
                                                  options_.mission ? options_.mission->name : "");
+    // An earlier run attached the robot, and the world keeps it after its behavior died: it is
+    // taken back where it stands (a spawn at --start would be refused: already present).
+    reattach_first_ = journal_->run() > 1 && options_.start.has_value();
     journalled_goals_ = journal_->goals();
     journalled_mission_ = journal_->mission();
     if (journalled_mission_) {
@@ -157,7 +160,7 @@ void BehaviorNode::request_spawn() {
   r.request_id = spawn_request_id_;
   r.requester = participant_name_;
   r.robot_id = options_.robot_id;
-  if (options_.start) {
+  if (options_.start && !reattach_first_) {
     r.has_pose = true;
     r.x = options_.start->x;
     r.y = options_.start->y;
@@ -173,6 +176,12 @@ void BehaviorNode::on_spawn_replies(std::vector<dds::Sample<msg::SpawnReply>> sa
       spawned_ = true;
       spdlog::info("robot {} attached to the simulator", options_.robot_id);
       become_ready_when_possible();
+    } else if (reattach_first_) {
+      // No robot to take back (the world was restarted too): placed at --start as on a first run.
+      spdlog::info("robot {}: nothing to re-attach ({}); spawning it at --start", options_.robot_id, s.value.reason);
+      reattach_first_ = false;
+      spawn_request_id_ += "-start";
+      request_spawn();
     } else {
       service_.fail("simulator refused robot " + options_.robot_id + ": " + s.value.reason);
     }

@@ -161,6 +161,7 @@ class BehaviorNode {
   std::unique_ptr<BehaviorJournal> journal_;
   std::vector<JournalledGoal> journalled_goals_;        // as found at start, resumed once ready
   std::optional<JournalledMission> journalled_mission_;  // as found at start, resumed at the first step
+  bool reattach_first_ = false;  // restarted with a journal: ask for the robot back before spawning it at --start
   std::string resuming_goal_;  // the journalled goal queued to be taken on again at the next tick ("": none)
 
   std::optional<MissionExecutor> executor_;
