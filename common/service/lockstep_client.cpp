@@ -74,6 +74,12 @@ void LockstepClient::register_participant() { registration_writer_.write({name_,
 
 void LockstepClient::acknowledge(int64_t tick, uint32_t commands_sent, int64_t quiet_until_tick) {
   last_ack_ = {name_, tick, commands_sent, quiet_until_tick};
+  // The clock (state, transient-local) can reach a new participant before its ack writer is
+  // matched with the simulator's reader; an ack written then is lost (volatile) and the simulator
+  // drops the participant after its ack timeout. Under DDS Security each endpoint pair matches
+  // only after its crypto tokens are exchanged, so this window is wide: wait for the match.
+  if (ack_writer_.matched_readers() == 0 && !ack_writer_.wait_for_readers(1, std::chrono::seconds(2)))
+    spdlog::warn("lockstep: no simulator reads the acks of {} yet; tick {} acknowledged anyway", name_, tick);
   ack_writer_.write(last_ack_);
 }
 
