@@ -25,6 +25,14 @@ constexpr auto kStatusPeriod = std::chrono::milliseconds(200);
 // samples: the history kept on this side never drops one (docs/topics.md, "What can drop").
 constexpr auto kInputQos = dds::QosClass::Queue;
 
+// Every clock but this process's own: the simulator hears its own ticks not at all, so the reader
+// costs nothing while its world is alone on the domain.
+dds::Qos foreign_clock_qos() {
+  dds::Qos q = dds::make_qos(dds::topics::clock.qos);
+  dds_qset_ignorelocal(q.get(), DDS_IGNORELOCAL_PARTICIPANT);
+  return q;
+}
+
 msg::RobotState to_msg(const RobotStatus& r, int64_t tick, int64_t sim_time_ns) {
   msg::RobotState s;
   s.robot_id = r.id;
@@ -161,7 +169,8 @@ SimulatorNode::SimulatorNode(service::Service& service, Scenario scenario, Simul
       object_truth_topic_(service.participant(), dds::topics::truth_object),
       handover_status_writer_(service.participant(), handover_status_topic_),
       object_truth_writer_(service.participant(), object_truth_topic_),
-      handover_request_reader_(service.participant(), handover_request_topic_, kInputQos) {
+      handover_request_reader_(service.participant(), handover_request_topic_, kInputQos),
+      foreign_clock_reader_(service.participant(), clock_topic_, foreign_clock_qos().get()) {
   if (options_.radio_period_ticks < 1) throw std::invalid_argument("radio period must be at least 1 tick");
   delivery_rng_.seed(options_.settings.seed ^ kDeliveryStreamSalt);
   if (!options_.metrics_prefix.empty()) {
@@ -194,6 +203,7 @@ SimulatorNode::SimulatorNode(service::Service& service, Scenario scenario, Simul
   loop.on_samples<msg::TeamMessage>(outbox_reader_, [this](auto s) { on_outbox(std::move(s)); });
   loop.on_samples<msg::GoalStatus>(goal_status_reader_, [this](auto s) { on_goal_status(std::move(s)); });
   loop.on_samples<msg::MissionStatus>(mission_status_reader_, [this](auto s) { on_mission_status(std::move(s)); });
+  loop.on_samples<msg::SimClock>(foreign_clock_reader_, [this](auto s) { on_foreign_clocks(std::move(s)); });
   loop.on_samples<msg::HandoverRequest>(handover_request_reader_,
                                         [this](auto s) { on_handover_requests(std::move(s)); });
   loop.on_condition(quiet_continue_.handle(), [this] { continue_quietly(); });
@@ -556,6 +566,19 @@ void SimulatorNode::on_door_commands(std::vector<dds::Sample<msg::DoorCommand>> 
 }
 
 // --- Goal status (for the metrics' "finished") ------------------------------------------------
+
+void SimulatorNode::on_foreign_clocks(std::vector<dds::Sample<msg::SimClock>> samples) {
+  for (const auto& s : samples) {
+    if (!s.valid || s.value.world_id == options_.world_id) continue;
+    ++foreign_clock_samples_;
+    // A second world ticks as fast as this one: a few errors say it, the count says how much.
+    if (foreign_clock_samples_ <= 5 || foreign_clock_samples_ % 1000 == 0)
+      spdlog::error("a clock of world {} (tick {}) is on this domain beside this world {} ({} such samples): one "
+                    "world per domain; a simulator started at the same moment as this one, or a forged clock",
+                    s.value.world_id, s.value.tick, options_.world_id, foreign_clock_samples_);
+    service_.heartbeat().set_clock_samples_ignored(foreign_clock_samples_);
+  }
+}
 
 void SimulatorNode::on_goal_status(std::vector<dds::Sample<msg::GoalStatus>> samples) {
   for (const auto& s : samples)

@@ -83,6 +83,7 @@ class SimulatorNode {
   void on_door_commands(std::vector<dds::Sample<msg::DoorCommand>> samples);
   void on_outbox(std::vector<dds::Sample<msg::TeamMessage>> samples);
   void on_goal_status(std::vector<dds::Sample<msg::GoalStatus>> samples);
+  void on_foreign_clocks(std::vector<dds::Sample<msg::SimClock>> samples);
   void on_mission_status(std::vector<dds::Sample<msg::MissionStatus>> samples);
   void on_handover_requests(std::vector<dds::Sample<msg::HandoverRequest>> samples);
   void on_timer();
@@ -225,6 +226,11 @@ class SimulatorNode {
 
   // The spacecraft, when the scenario has one (its topics, commands and telemetry).
   std::unique_ptr<SpacecraftArea> spacecraft_;
+
+  // Clocks of another world on this domain (a simulator started within this one's listen window,
+  // or a forger): reported as errors and counted in the heartbeat, never followed.
+  dds::Reader<msg::SimClock> foreign_clock_reader_;
+  uint64_t foreign_clock_samples_ = 0;
 };
 
 }  // namespace autonomy::sim

@@ -11,6 +11,7 @@
 //    113    WorldIdentityTest.LauncherDoesNotTakeAnotherSetsProcessForItsOwn
 //    114    WorldIdentityTest.GoalForARobotNobodyDrivesGetsAnAnswer
 //    115    WorldIdentityTest.NodeListFlagsEveryProcessOfADuplicatedName
+//    116    WorldIdentityTest.TwoWorldsThatStartedTogetherReportEachOther
 #include "common/service/heartbeat.hpp"
 #include "tests/support/executive_watch.hpp"
 #include "tests/support/process_test.hpp"
@@ -181,6 +182,31 @@ TEST_F(WorldIdentityTest, TelemetryOfAnotherSpacecraftDoesNotReachTheExecutive) 
   const std::string log = read_file(dir().file("executive-main.log"));
   EXPECT_TRUE(contains(log, "telemetry of spacecraft 'intruder' ignored (1 so far): this executive commands 'ds1'"))
       << log.substr(0, 4000);
+}
+
+// Two simulators that start within one listen window both start (neither runs a world yet); the
+// race is made certain here with --world-check 0 for the second. Each then hears the other's
+// clock: an error in its log, a count in its heartbeat, and `autonomy node list` says that the
+// processes follow two worlds.
+TEST_F(WorldIdentityTest, TwoWorldsThatStartedTogetherReportEachOther) {
+  join(116);
+  Recorder<msg::Heartbeat> beats(participant(), dds::topics::heartbeat);
+  auto& first = start_simulator({"--mode", "paced"});
+  msg::Heartbeat first_beat, second_beat;
+  ASSERT_TRUE(await_beat(beats, first.pid(), "the first simulator runs a world",
+                         [](const msg::Heartbeat& b) { return b.world_id != 0; }, &first_beat));
+  auto& second = start_simulator({"--mode", "paced", "--world-check", "0"}, true, "simulator-2");
+  ASSERT_TRUE(await_beat(beats, second.pid(), "the second simulator runs a world",
+                         [](const msg::Heartbeat& b) { return b.world_id != 0; }, &second_beat));
+  ASSERT_NE(first_beat.world_id, second_beat.world_id);
+  for (auto* sim : {&first, &second})
+    EXPECT_TRUE(await_beat(beats, sim->pid(), sim->name() + " counts the other world's clock",
+                           [](const msg::Heartbeat& b) { return b.clock_samples_ignored > 0; }));
+  const std::string first_log = read_file(first.log_file());
+  EXPECT_TRUE(contains(first_log, "a clock of world " + std::to_string(second_beat.world_id))) << first_log;
+  std::string err;
+  EXPECT_EQ(cli("list", {"node", "list"}, err), 0) << err;
+  EXPECT_TRUE(contains(err, "processes follow 2 worlds on domain 116")) << err;
 }
 
 // A launcher waits for its own child, by pid: a ready process of the same name from another set
