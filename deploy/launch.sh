@@ -76,10 +76,16 @@ Options:
   --hang-after S    seconds without a heartbeat after which a process is hung (default 10;
                     0: never); a set line's hang-after=S wins
   --detach          start, wait until ready, return; the launcher supervises in the background
+  --hosts NET       the set runs on the hosts of network NET (deploy/hosts.sh up NET ...): a
+                    line NAME@HOST starts its process in HOST's namespace (AUTONOMY_HOST=HOST,
+                    which its heartbeat reports), a line without @HOST on this machine (on the
+                    bridge). The profile defaults to hosts (deploy/dds/hosts.xml, every host's
+                    address a unicast peer); RUN_DIR/dds.env has the settings for tools such as
+                    autonomy node list (docs/hosts.md)
   -h, --help        this text
 
 A set file has one process per line:
-  NAME [on-exit=POLICY] [hang-after=S] PROGRAM [ARGS...]
+  NAME[@HOST] [on-exit=POLICY] [hang-after=S] PROGRAM [ARGS...]
 NAME is service/instance as its heartbeat reports it (service alone means service/main), PROGRAM
 a program in the --bin folder. Lines starting with # are comments. {run} in an argument stands
 for the run folder, {repo} for the repository. launch.sh adds --domain and --log-dir RUN_DIR to
@@ -183,6 +189,7 @@ bin="$repo/build/bin"
 timeout=20
 hang_after=10
 detach=0
+hosts_net=""
 set_arg=""
 # Set by a launcher for the copy of itself it leaves in the background (--detach).
 detached_launcher=${AUTONOMY_LAUNCH_DETACHED:-}
@@ -200,6 +207,7 @@ while [ $# -gt 0 ]; do
     --timeout) need_value "$@"; timeout=$2; shift 2 ;;
     --hang-after) need_value "$@"; hang_after=$2; shift 2 ;;
     --detach) detach=1; shift ;;
+    --hosts) need_value "$@"; hosts_net=$2; shift 2 ;;
     stop)
       [ $# -eq 2 ] || { echo "launch: usage: launch.sh stop RUN_DIR" >&2; exit 2; }
       rc=0; stop_run "$2" || rc=$?; exit $rc ;;
@@ -228,7 +236,7 @@ bin=$(cd "$bin" && pwd)
 
 security_dir=""
 case $profile in
-  loopback|lan) uri="file://$repo/deploy/dds/$profile.xml" ;;
+  loopback|lan|hosts|hosts-multicast) uri="file://$repo/deploy/dds/$profile.xml" ;;
   # Loopback with DDS Security: every process gets its own identity (docs/security.md).
   secure) uri="file://$repo/deploy/dds/loopback.xml"
      security_dir=${AUTONOMY_SECURITY_DIR:-$repo/runs/security} ;;
@@ -240,6 +248,23 @@ if [ "$profile" = lan ] && [ -n "${AUTONOMY_PEERS:-}" ]; then
   peers=""
   for p in $AUTONOMY_PEERS; do peers+="<Peer address=\"$p\"/>"; done
   uri+=",<Discovery><Peers>$peers</Peers></Discovery>"
+fi
+# Several hosts (deploy/hosts.sh): processes of this machine talk on the network's bridge, those
+# of a host on its link (hnet0, set per process); every host is a peer.
+hosts_state=/run/autonomy-hosts/$hosts_net
+declare -A host_known=()
+if [ -n "$hosts_net" ]; then
+  [ -f "$hosts_state/hosts" ] || { echo "launch: --hosts $hosts_net: no such network is up (deploy/hosts.sh up $hosts_net HOST...)" >&2; exit 2; }
+  [[ "$profile" != loopback && "$profile" != secure ]] || { profile=hosts; uri="file://$repo/deploy/dds/hosts.xml"; }
+  subnet=$(cat "$hosts_state/subnet")
+  peers="<Peer address=\"10.231.$subnet.254\"/>"
+  host_index=0
+  while read -r h; do
+    host_index=$((host_index + 1)); host_known[$h]=1
+    peers+="<Peer address=\"10.231.$subnet.$host_index\"/>"
+  done <"$hosts_state/hosts"
+  [[ "$profile" == hosts-multicast ]] || uri+=",<Discovery><Peers>$peers</Peers></Discovery>"
+  export AUTONOMY_DDS_INTERFACE=hb-$hosts_net
 fi
 export CYCLONEDDS_URI=$uri
 export AUTONOMY_DOMAIN=$domain
@@ -253,7 +278,7 @@ if pid=$(launcher_of "$run_dir") && [ "$pid" != $$ ]; then
 fi
 
 # ---- The set file, checked whole before anything starts.
-names=() files=() programs=() commands=() policies=() max_respawns=() backoffs=() hang_afters=()
+names=() hosts=() files=() programs=() commands=() policies=() max_respawns=() backoffs=() hang_afters=()
 declare -A line_of_name=()
 line_no=0
 set_error() { echo "launch: $set_file:$line_no: $*" >&2; exit 2; }
@@ -262,7 +287,12 @@ while IFS= read -r line || [ -n "$line" ]; do
   line=${line%%#*}
   read -r -a words <<<"$line" || true
   [ ${#words[@]} -gt 0 ] || continue
-  name=${words[0]}
+  name=${words[0]} host=""
+  if [[ "$name" == *@* ]]; then
+    host=${name#*@}; name=${name%%@*}
+    [ -n "$hosts_net" ] || set_error "$name@$host names a host: start the set with --hosts NET (deploy/hosts.sh)"
+    [ -n "${host_known[$host]:-}" ] || set_error "network $hosts_net has no host '$host' (its hosts: $(tr '\n' ' ' <"$hosts_state/hosts"))"
+  fi
   [[ "$name" =~ ^[A-Za-z0-9_.-]+(/[A-Za-z0-9_.-]+)?$ ]] || set_error "'$name' is not a NAME (service/instance, letters, digits, _ . -)"
   [[ "$name" == */* ]] || name="$name/main"
   [ -z "${line_of_name[$name]:-}" ] || set_error "$name is already line ${line_of_name[$name]}'s process"
@@ -309,7 +339,7 @@ while IFS= read -r line || [ -n "$line" ]; do
     w="${w//\{run\}/$run_dir}"
     command+="$(printf '%q' "${w//\{repo\}/$repo}") "
   done
-  names+=("$name"); files+=("${name//\//-}"); programs+=("$program"); commands+=("$command")
+  names+=("$name"); hosts+=("$host"); files+=("${name//\//-}"); programs+=("$program"); commands+=("$command")
   policies+=("$policy"); max_respawns+=("$max"); backoffs+=("$backoff"); hang_afters+=("$hang")
 done <"$set_file"
 [ ${#names[@]} -gt 0 ] || { echo "launch: $set_file has no process" >&2; exit 2; }
@@ -329,7 +359,7 @@ with_identity() {
 # the set is ready (exit 0) or the launcher gave up (exit 1, its report printed).
 if [ $detach -eq 1 ]; then
   rm -f "$run_dir/launch.state"
-  AUTONOMY_LAUNCH_DETACHED=1 setsid bash "$self" --domain "$domain" --profile "$profile" --run-dir "$run_dir" --bin "$bin" \
+  AUTONOMY_LAUNCH_DETACHED=1 setsid bash "$self" --domain "$domain" --profile "$profile" --run-dir "$run_dir" --bin "$bin" ${hosts_net:+--hosts "$hosts_net"} \
     --timeout "$timeout" --hang-after "$hang_after" "$set_file" >"$run_dir/launch.log" 2>&1 </dev/null &
   launcher=$!
   trap 'kill -TERM $launcher 2>/dev/null; wait $launcher 2>/dev/null; cat "$run_dir/launch.log"; exit 130' INT TERM
@@ -351,6 +381,9 @@ fi
 
 # ---- The launcher: starts the set and supervises it until it is stopped.
 echo $$ >"$run_dir/launch.pid"
+# What a tool of this machine needs to join the set's DDS traffic (autonomy node list, topic echo).
+printf 'export CYCLONEDDS_URI=%q AUTONOMY_DOMAIN=%q%s\n' "$CYCLONEDDS_URI" "$domain" \
+  "${AUTONOMY_DDS_INTERFACE:+ AUTONOMY_DDS_INTERFACE=$AUTONOMY_DDS_INTERFACE}" >"$run_dir/dds.env"
 set_state() { echo "$1" >"$run_dir/launch.state"; }
 set_state starting
 
@@ -384,7 +417,10 @@ start_process() {
   else
     : >"$run_dir/$file.out"
   fi
-  CYCLONEDDS_URI=$(with_identity "${names[$i]}") setpriv --pdeathsig TERM setsid "$bin/${programs[$i]}" "${args[@]}" --domain "$domain" --log-dir "$run_dir" \
+  # On a host: inside its namespace, naming the host (the namespace has this machine's hostname).
+  local -a on_host=()
+  [ -z "${hosts[$i]}" ] || on_host=(ip netns exec "$hosts_net-${hosts[$i]}" env AUTONOMY_HOST="${hosts[$i]}" AUTONOMY_DDS_INTERFACE=hnet0)
+  CYCLONEDDS_URI=$(with_identity "${names[$i]}") setpriv --pdeathsig TERM setsid "${on_host[@]}" "$bin/${programs[$i]}" "${args[@]}" --domain "$domain" --log-dir "$run_dir" \
     >>"$run_dir/$file.out" 2>&1 </dev/null &
   pid=$!
   echo $pid >"$run_dir/$file.pid"
@@ -393,9 +429,10 @@ start_process() {
   killed_hung[$i]=0
   started_at[$i]=$SECONDS
   ready[$i]=0 ready_seen[$i]=0 watched[$i]=0
-  echo "launch: started ${names[$i]} (pid $pid): ${programs[$i]} ${args[*]}"
+  echo "launch: started ${names[$i]}${hosts[$i]:+ on ${hosts[$i]}} (pid $pid): ${programs[$i]} ${args[*]}"
   # --pid: only this child's heartbeat counts, not a process of the same name from another set.
-  CYCLONEDDS_URI=$(with_identity operator) "$bin/autonomy" node wait --domain "$domain" --timeout "$timeout" --pid "$pid" "${names[$i]}" &
+  # The heartbeat awaited names the process's host; node wait compares it with its own.
+  AUTONOMY_HOST=${hosts[$i]:-${AUTONOMY_HOST:-}} CYCLONEDDS_URI=$(with_identity operator) "$bin/autonomy" node wait --domain "$domain" --timeout "$timeout" --pid "$pid" "${names[$i]}" &
   ready_check[$!]=$i
 }
 
@@ -545,7 +582,7 @@ handle_watch_event() {
   host=${host%:}
   [ -n "$name" ] && [ -n "$pid" ] || return 0
   i=${index_of_name[$name]:-}
-  [ -n "$i" ] && [ "$host" = "$this_host" ] && [ "$pid" = "${pid_of[$i]:-}" ] || return 0
+  [ -n "$i" ] && [ "$host" = "${hosts[$i]:-$this_host}" ] && [ "$pid" = "${pid_of[$i]:-}" ] || return 0
   [ -n "${index_of_pid[$pid]:-}" ] || return 0
   case $event in
     heard) watched[$i]=1; became_ready "$i" ;;

@@ -187,6 +187,49 @@ class CourierTest : public ProcessTest {
     }
     return out;
   }
+  // The paper's Fig. 5 (A-120 closes after the red letter is loaded, opens while the green book
+  // is fetched), as objects moved in the world and as the courier's own events, in order.
+  void expect_fig5_sequence() {
+    const auto red_loaded = object_tick("letter-red", "rhino", "");
+    const auto opportunistic = job_in("job-1", msg::JobState::Opportunistic);
+    const auto green_loaded = object_tick("book-green", "rhino", "");
+    const auto red_delivered = object_tick("letter-red", "", "michael-desk");
+    const auto green_delivered = object_tick("book-green", "", "a114-desk");
+    ASSERT_TRUE(opportunistic) << job_story("job-1");
+    ASSERT_TRUE(red_loaded && green_loaded && red_delivered && green_delivered) << job_story("job-1");
+    EXPECT_NE(opportunistic->reason.find("A-120 closed at"), std::string::npos) << opportunistic->reason;
+    // The paper's steps 2 to 7, in order.
+    EXPECT_LT(*red_loaded, opportunistic->tick);
+    EXPECT_LT(opportunistic->tick, *green_loaded);
+    EXPECT_LT(*green_loaded, *red_delivered);
+    EXPECT_LT(*red_delivered, *green_delivered);  // the green book's delivery was interrupted for it
+    EXPECT_TRUE(job_in("job-1", msg::JobState::Completed)) << job_story("job-1");
+    EXPECT_TRUE(job_in("job-2", msg::JobState::Completed)) << job_story("job-2");
+
+    // The courier's own account, step by step as in the paper: A-120 is seen open on the way from
+    // the librarian (x = 3.5) to A-114 (x = 19), and the green book's delivery gives way.
+    const std::vector<std::pair<std::string, std::string>> expected = {
+        {"loaded", "letter-red"},         {"door_closed", "A-120"}, {"failed_over", "job-1"},
+        {"loaded", "book-green"},         {"door_opened", "A-120"}, {"opportunity_taken", "job-1"},
+        {"unloaded", "letter-red"},       {"unloaded", "book-green"}};
+    const auto story = events();
+    size_t next = 0;
+    std::string told;
+    for (const auto& [kind, line] : story) {
+      const std::string text = line.at("text");
+      told += kind + ": " + text + "\n";
+      if (next < expected.size() && kind == expected[next].first && text.find(expected[next].second) != std::string::npos) {
+        if (kind == "door_opened") {
+          const double x = line.at("robots").at("rhino").at(0);
+          EXPECT_GT(x, 3.5);
+          EXPECT_LT(x, 19.0);
+        }
+        ++next;
+      }
+    }
+    EXPECT_EQ(next, expected.size()) << "the paper's steps, in order, not all found in:\n" << told;
+
+  }
   void setup_observers(int domain) {
     join(domain);
     beats_.emplace(participant(), dds::topics::heartbeat);

@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -45,7 +47,7 @@ class ProcessTest : public ::testing::Test {
   void join(int domain) {
     domain_ = domain;
     // The observer must use the same Cyclone configuration as the children.
-    ASSERT_EQ(setenv("CYCLONEDDS_URI", dds_uri().c_str(), 1), 0);
+    ASSERT_EQ(setenv("CYCLONEDDS_URI", uri().c_str(), 1), 0);
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
     dir_ = std::make_unique<TestDir>(std::string(info->test_suite_name()) + "." + info->name());
     participant_.emplace(domain);
@@ -73,8 +75,32 @@ class ProcessTest : public ::testing::Test {
   // args must name the domain themselves (`--domain`, where the program expects it).
   ChildProcess& start(const std::string& name, const std::string& program, std::vector<std::string> args,
                       bool must_keep_running = true, bool separate_stderr = false) {
-    const std::map<std::string, std::string> env = {{"CYCLONEDDS_URI", dds_uri()},
+    const std::map<std::string, std::string> env = {{"CYCLONEDDS_URI", uri()},
                                                     {"AUTONOMY_LOG_DIR", dir_->path()}};
+    if (const auto at = placement_.find(name); at != placement_.end()) {
+      // On another host: the same program inside that host's network namespace, naming the host
+      // (a namespace keeps the machine's hostname) and its link for the hosts profile.
+      args.insert(args.begin(), {"netns", "exec", at->second.first, "env", "AUTONOMY_HOST=" + at->second.second,
+                                 "AUTONOMY_DDS_INTERFACE=hnet0", program});
+      return start_child(name, ip_program(), std::move(args), env, must_keep_running, separate_stderr);
+    }
+    return start_child(name, program, std::move(args), env, must_keep_running, separate_stderr);
+  }
+  // Several hosts (tests/integration/hosts_test.cpp): the child of this name runs in network
+  // namespace `ns` as host `host`; the children and the observer use `uri` instead of loopback.
+  void place(const std::string& name, const std::string& ns, const std::string& host) { placement_[name] = {ns, host}; }
+  void use_uri(std::string uri) { uri_ = std::move(uri); }
+  std::string uri() const { return uri_.empty() ? dds_uri() : uri_; }
+  static std::string ip_program() {
+    for (const char* path : {"/usr/sbin/ip", "/sbin/ip", "/usr/bin/ip", "/bin/ip"})
+      if (::access(path, X_OK) == 0) return path;
+    return "/usr/sbin/ip";
+  }
+
+ private:
+  ChildProcess& start_child(const std::string& name, const std::string& program, std::vector<std::string> args,
+                            const std::map<std::string, std::string>& env, bool must_keep_running,
+                            bool separate_stderr) {
     // <name>.out: the child's stdout (and stderr unless separate); services also write their own
     // log file (<service>-<instance>.log) into the same folder through --log-dir.
     const std::string log = dir_->file(name + ".out");
@@ -83,6 +109,8 @@ class ProcessTest : public ::testing::Test {
          must_keep_running});
     return *children_.back().child;
   }
+
+ protected:
   ChildProcess& start_simulator(std::vector<std::string> args = {}, bool must_keep_running = true,
                                 const std::string& name = "simulator") {
     args.insert(args.end(), {"--domain", std::to_string(domain_), "--log-dir", dir_->path()});
@@ -133,6 +161,8 @@ class ProcessTest : public ::testing::Test {
   int domain_ = 0;
 
  private:
+  std::map<std::string, std::pair<std::string, std::string>> placement_;  // child name -> (namespace, host)
+  std::string uri_;
   struct Child {
     std::unique_ptr<ChildProcess> child;
     bool must_keep_running;
