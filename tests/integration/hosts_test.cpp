@@ -16,9 +16,12 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
+#include <sstream>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -68,8 +71,10 @@ class HostNetwork {
     return std::string("file://") + AUTONOMY_SOURCE_DIR + "/deploy/dds/hosts.xml,<Discovery><Peers>" + peers +
            "</Peers></Discovery>";
   }
+  // Loss on what `host` sends: with every host at N %, each packet between two hosts is lost
+  // with N % probability, in each direction (loss on both ends would compound to 1 - (1 - N)^2).
   bool loss(const std::string& host, int percent) {
-    return hosts_sh("loss " + net_ + " " + host + " " + std::to_string(percent), log_);
+    return hosts_sh("loss " + net_ + " " + host + " " + std::to_string(percent) + " out", log_);
   }
   bool partition(const std::string& host) { return hosts_sh("partition " + net_ + " " + host, log_); }
   bool heal(const std::string& host) { return hosts_sh("heal " + net_ + " " + host, log_); }
@@ -108,7 +113,7 @@ class OnHosts : public Base {
 };
 
 // 1. The courier paper's example (Fig. 5: A-120 closes, then opens) with the simulator, rhino's
-// behavior and the courier each on its own host, at 0, 10 and 30 % loss both ways on each host:
+// behavior and the courier each on its own host, at 0, 10 and 30 % loss on every packet between hosts (each way):
 // both jobs complete with the same sequence of events as on loopback (courier_test.cpp).
 class HostsCourierTest : public OnHosts<CourierTest>, public ::testing::WithParamInterface<int> {};
 
@@ -139,7 +144,7 @@ INSTANTIATE_TEST_SUITE_P(Loss, HostsCourierTest, ::testing::Values(0, 10, 30),
                          [](const auto& info) { return std::to_string(info.param) + "Percent"; });
 
 // 2. The DS1 day (executive_test.cpp's flight: planner, executive, simulator in lockstep, the
-// first four hours) on three hosts at 20 % loss both ways: every goal achieved, as on loopback.
+// first four hours) on three hosts at 20 % loss on every packet between hosts: every goal achieved, as on loopback.
 class HostsExecutiveTest : public OnHosts<ProcessTest> {};
 
 TEST_F(HostsExecutiveTest, TheDs1DayOnThreeHostsAtTwentyPercentLoss) {
@@ -231,6 +236,84 @@ TEST_F(HostsTeamTest, ARobotHostCutOffForTenSecondsRejoinsAndTheMissionCompletes
   const auto dropped = log.find("participant behavior/r2 is silent");
   ASSERT_NE(dropped, std::string::npos) << log;
   EXPECT_NE(log.find("participant behavior/r2 joined lockstep", dropped), std::string::npos) << log;
+}
+
+// 5. deploy/launch.sh --hosts with the recon-parallel set's behaviors (respawn, journal) each on
+// its own robot host and the world in lockstep on a fourth: r2's behavior is killed (-9) on its
+// host mid-mission, the launcher respawns it there by the set's policy, it takes its robot back
+// and every mission completes.
+class HostsLaunchTest : public OnHosts<ProcessTest> {
+ protected:
+  // The launched set, stopped whatever happens (before the network goes: a member of this class
+  // is destroyed before OnHosts' network).
+  struct Launched {
+    std::string run_dir;
+    ~Launched() {
+      const std::string cmd = "bash " + std::string(AUTONOMY_SOURCE_DIR) + "/deploy/launch.sh stop " + run_dir +
+                              " >>" + run_dir + "/stop.out 2>&1";
+      if (std::system(cmd.c_str()) != 0) std::fprintf(stderr, "launch.sh stop %s failed\n", run_dir.c_str());
+    }
+  };
+  std::optional<Launched> launched_;
+};
+
+TEST_F(HostsLaunchTest, AServiceKilledOnARemoteHostIsRespawnedAndTheMissionCompletes) {
+  NEED_ROOT();
+  make_hosts("h101", 101, {"world", "r1", "r2", "r3"});
+  join(101);
+  // The shipped set's behavior lines, each on its robot's host; the world in lockstep, held at
+  // the test's will (test/hold) so that the kill lands mid-mission.
+  std::string set = "simulator/main@world on-exit=ignore simulator --config {repo}/deploy/scenarios/recon.pbtxt "
+                    "--without-robots --mode lockstep --stop-when-finished --max-ticks 200000 --metrics "
+                    "{run}/metrics --wait-for behavior/r1 --wait-for behavior/r2 --wait-for behavior/r3 "
+                    "--wait-for test/hold\n";
+  std::istringstream shipped(read_file(std::string(AUTONOMY_SOURCE_DIR) + "/deploy/sets/recon-parallel.set"));
+  for (std::string line; std::getline(shipped, line);) {
+    if (line.rfind("behavior/", 0) != 0) continue;
+    const std::string name = line.substr(0, line.find(' '));
+    set += name + "@" + name.substr(9) + line.substr(name.size()) + "\n";
+  }
+  write_file(dir().file("recon-hosts.set"), set);
+  const std::string bin = std::string(AUTONOMY_SIMULATOR_BIN).substr(0, std::string(AUTONOMY_SIMULATOR_BIN).rfind('/'));
+  const std::string run = dir().file("run");
+  Recorder<msg::SimClock> clock(participant(), dds::topics::clock);
+  dds::Topic<msg::LockstepRegistration> registration_topic(participant(), dds::topics::lockstep_registration);
+  dds::Writer<msg::LockstepRegistration> registration(participant(), registration_topic);
+  dds::Topic<msg::TickAck> ack_topic(participant(), dds::topics::tick_ack);
+  dds::Writer<msg::TickAck> ack(participant(), ack_topic);
+  registration.write({"test/hold", true});
+  launched_.emplace(Launched{run});
+  const std::string launch = "bash " + std::string(AUTONOMY_SOURCE_DIR) + "/deploy/launch.sh --hosts h101 --domain 101 "
+                             "--run-dir " + run + " --bin " + bin + " --detach " + dir().file("recon-hosts.set") +
+                             " >" + dir().file("launch.out") + " 2>&1";
+  ASSERT_EQ(std::system(launch.c_str()), 0) << read_file(dir().file("launch.out"));
+  // The test acknowledges every tick it sees (the world waits for it like for any participant).
+  int64_t latest = -1;
+  const auto step = [&] {
+    for (const auto& c : clock.poll()) latest = std::max(latest, c.tick);
+    if (latest >= 0) ack.write({"test/hold", latest, 0});
+  };
+  ASSERT_TRUE(await("the mission at tick 300", [&] {
+    step();
+    return latest >= 300;
+  }, 120s));
+  const std::string pid_file = run + "/behavior-r2.pid";
+  const pid_t killed = std::stoi(read_file(pid_file));
+  ASSERT_EQ(::kill(killed, SIGKILL), 0);
+  ASSERT_TRUE(await("r2 respawned on its host and the set ready again", [&] {
+    step();
+    return read_file(run + "/launch.log").find("set 'recon-hosts' ready again (behavior/r2 respawned") !=
+           std::string::npos;
+  }, 60s)) << read_file(run + "/launch.log");
+  EXPECT_NE(read_file(run + "/launch.log").find("started behavior/r2 on r2"), std::string::npos);
+  registration.write({"test/hold", false});
+  ASSERT_TRUE(await("the world stopped with every mission finished", [&] {
+    return !read_file(run + "/metrics.json").empty() &&
+           read_file(run + "/launch.log").find("simulator/main (pid") != std::string::npos;
+  }, 240s)) << read_file(run + "/launch.log");
+  const auto metrics = nlohmann::json::parse(read_file(run + "/metrics.json"));
+  EXPECT_TRUE(metrics.at("team").at("all_finished").get<bool>()) << metrics.at("team").dump();
+  for (const auto& r : metrics.at("robots")) EXPECT_TRUE(r.at("finished").get<bool>()) << r.dump();
 }
 
 }  // namespace
