@@ -38,10 +38,15 @@ LockstepClient::LockstepClient(Service& service, std::string participant_name,
   service.loop().on_samples<msg::SimClock>(clock_reader_, [this](std::vector<dds::Sample<msg::SimClock>> samples) {
     // Only the newest tick matters: a participant that fell behind catches up in one step.
     const msg::SimClock* newest = nullptr;
+    bool ack_again = false;
     for (const auto& s : samples) {
       if (!s.valid) continue;
       const clock::ClockReading r{s.value.world_id, s.value.tick, s.value.sim_time_ns, s.value.step_ns};
       const clock::ClockVerdict v = check_.check(r, steady_ns());
+      // The simulator repeats the clock of a tick it still waits for: an ack of that tick may
+      // have been lost (written while this process and the simulator had lost each other, e.g.
+      // right after a SIGSTOP or a cut), so it is written again.
+      if (v == clock::ClockVerdict::Repeated && acked_ && s.value.tick == last_ack_.tick) ack_again = true;
       if (v == clock::ClockVerdict::Follow) {
         if (!newest) spdlog::debug("following {}", check_.explain(r, v));
         newest = &s.value;
@@ -50,6 +55,14 @@ LockstepClient::LockstepClient(Service& service, std::string participant_name,
         if (worth_a_warning(n)) spdlog::warn("clock sample ignored ({} so far): {}", n, check_.explain(r, v));
         heartbeat_.set_clock_samples_ignored(n);
       }
+    }
+    if (ack_again && !newest) {
+      // Announcing no commands: those written with the lost ack were lost with it (a velocity
+      // command holds for one tick; the next tick's replaces it), and the world must not wait
+      // for them.
+      msg::TickAck again = last_ack_;
+      again.commands_sent = 0;
+      ack_writer_.write(again);
     }
     if (!newest) return;
     if (clock_.tick() < 0) spdlog::info("joined world {} at tick {}", newest->world_id, newest->tick);
@@ -74,6 +87,7 @@ void LockstepClient::register_participant() { registration_writer_.write({name_,
 
 void LockstepClient::acknowledge(int64_t tick, uint32_t commands_sent, int64_t quiet_until_tick) {
   last_ack_ = {name_, tick, commands_sent, quiet_until_tick};
+  acked_ = true;
   // The clock (state, transient-local) can reach a new participant before its ack writer is
   // matched with the simulator's reader; an ack written then is lost (volatile) and the simulator
   // drops the participant after its ack timeout. Under DDS Security each endpoint pair matches

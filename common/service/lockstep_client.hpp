@@ -61,6 +61,7 @@ class LockstepClient {
   dds::Writer<msg::LockstepRegistration> registration_writer_;
   dds::Writer<msg::TickAck> ack_writer_;
   msg::TickAck last_ack_;
+  bool acked_ = false;  // last_ack_ was written (a tick was acknowledged)
 };
 
 }  // namespace autonomy::service

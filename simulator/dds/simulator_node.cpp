@@ -345,6 +345,11 @@ void SimulatorNode::on_timer() {
       spdlog::warn("participant {} did not acknowledge tick {} within {} s: dropped from lockstep", p, tick_,
                    options_.settings.ack_timeout_s);
     }
+    if (!quiet_ && barrier_.current_tick() == tick_ && !barrier_.complete(tick_) &&
+        now - clock_written_ >= std::chrono::seconds(1)) {
+      clock_writer_.write(last_clock_);
+      clock_written_ = now;
+    }
     // Nobody to wait for: the world idles forward in real time instead of spinning.
     if (barrier_.participants().empty() && !holding_start() && now - last_advance_ >= period) advance();
     advance_while_complete();
@@ -482,9 +487,11 @@ void SimulatorNode::open_tick() {
   const double now_s = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
   if (spacecraft_) spacecraft_->publish(tick_, now_ns);
   barrier_.begin_tick(tick_, now_s);
-  clock_writer_.write({tick_, now_ns, to_ns(options_.settings.step_s),
-                       lockstep() ? msg::ClockMode::Lockstep : msg::ClockMode::Paced, options_.settings.warp,
-                       options_.world_id});
+  last_clock_ = {tick_, now_ns, to_ns(options_.settings.step_s),
+                 lockstep() ? msg::ClockMode::Lockstep : msg::ClockMode::Paced, options_.settings.warp,
+                 options_.world_id};
+  clock_writer_.write(last_clock_);
+  clock_written_ = std::chrono::steady_clock::now();
 }
 
 void SimulatorNode::publish_robot_state(const RobotStatus& r) {

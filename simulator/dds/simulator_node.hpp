@@ -128,6 +128,11 @@ class SimulatorNode {
   std::set<std::string> registered_once_;  // for --wait-for: who has registered since the start
   int64_t tick_ = 0;
   std::chrono::steady_clock::time_point last_advance_;
+  // The open tick's clock sample and when it was last written: repeated every second while the
+  // world waits for acks (one may have been lost while a participant and the simulator had lost
+  // each other; participants write their ack of a repeated tick again).
+  msg::SimClock last_clock_{};
+  std::chrono::steady_clock::time_point clock_written_;
   std::map<int64_t, std::vector<msg::VelocityCommand>> commands_by_tick_;  // lockstep, per tick
   std::vector<msg::VelocityCommand> unsynchronised_commands_;  // from outside lockstep: next step
   std::vector<msg::SpawnRequest> spawn_requests_;

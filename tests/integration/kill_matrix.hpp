@@ -55,6 +55,7 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cstdlib>
 #include <csignal>
 #include <filesystem>
 #include <ostream>
@@ -115,9 +116,11 @@ class KillMatrixTest : public ProcessTest, public ::testing::WithParamInterface<
   // participant; every other line as shipped.
   // `also` edits the other lines (where a cell must depart from the shipped set, it says why).
   void prepare(const std::string& set, const LaunchedSet::LineEdit& also = nullptr) {
+    // AUTONOMY_MATRIX_DEBUG=1: every process logs at debug level (to follow a cell's ticks).
+    const std::string level = std::getenv("AUTONOMY_MATRIX_DEBUG") ? " --log-level debug" : "";
     set_.emplace(dir(), set, [&](const std::string& name, const std::string& line) {
-      if (name != "simulator/main") return also ? also(name, line) : line;
-      return replaced(line, " --mode paced", "") + " --mode lockstep --ack-timeout 30 --wait-for " + kHand;
+      if (name != "simulator/main") return (also ? also(name, line) : line) + level;
+      return replaced(line, " --mode paced", "") + " --mode lockstep --ack-timeout 30 --wait-for " + kHand + level;
     });
   }
 
