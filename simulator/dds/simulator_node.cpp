@@ -294,6 +294,9 @@ void SimulatorNode::on_registrations(std::vector<dds::Sample<msg::LockstepRegist
         spdlog::info("participant {} joined lockstep at tick {}{}", name, tick_, before_start ? " (from this tick)" : "");
     } else if (s.valid && !s.value.active) {
       barrier_.remove(name);  // it said so (a leaving LockstepClient writes active=false first)
+      // Left before this simulator read its registration (a test releasing the world while the
+      // simulator still listened for another world): it was there, and holds the start no more.
+      registered_once_.insert(name);
       spdlog::info("participant {} left lockstep at tick {}", name, tick_);
     } else {
       // The instance ended without a word: its writer's lease ran out (the process was killed,
