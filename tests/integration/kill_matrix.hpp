@@ -113,8 +113,8 @@ class KillMatrixTest : public ProcessTest, public ::testing::WithParamInterface<
   bool world_killed() const { return killed() && blows("simulator/main"); }
 
   // The set's copy: worlds in lockstep, held for the test's hand, waiting 30 s for a silent
-  // participant; every other line as shipped.
-  // `also` edits the other lines (where a cell must depart from the shipped set, it says why).
+  // participant; every other line as shipped, or as `also` edits it (a cell that departs from
+  // the shipped set says why).
   void prepare(const std::string& set, const LaunchedSet::LineEdit& also = nullptr) {
     // AUTONOMY_MATRIX_DEBUG=1: every process logs at debug level (to follow a cell's ticks).
     const std::string level = std::getenv("AUTONOMY_MATRIX_DEBUG") ? " --log-level debug" : "";
@@ -144,8 +144,8 @@ class KillMatrixTest : public ProcessTest, public ::testing::WithParamInterface<
     return tick_;
   }
   // Steps the world, as its lockstep participant, until `moment` holds after a tick; the world
-  // then waits there for the hand.
-  // Polled every millisecond, not at await()'s 20 ms: the hand steps thousands of ticks.
+  // then waits there for the hand. Polled every millisecond, not at await()'s 20 ms: the hand
+  // steps thousands of ticks.
   ::testing::AssertionResult step_until(const std::string& what, const std::function<bool()>& moment) {
     int64_t acked = -1;
     const auto deadline = std::chrono::steady_clock::now() + kMission;
@@ -208,7 +208,8 @@ class KillMatrixTest : public ProcessTest, public ::testing::WithParamInterface<
     EXPECT_TRUE(contains(out, "simulator/main: on-exit=stop, stopping the set")) << out;
   }
 
-  // After a stop or a kill the launcher must still run; at the end it is stopped as a user does.
+  // After a stop or a kill the set still runs, nothing stopped it and nothing was taken for hung
+  // (the test's end kills the launcher, and with it the set).
   void expect_the_set_still_runs() {
     ASSERT_TRUE(launcher_->running()) << launcher_output();
     const auto out = launcher_output();
