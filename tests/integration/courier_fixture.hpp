@@ -42,6 +42,16 @@ inline std::string office_scenario(const std::string& a120_script, const std::st
 
 inline constexpr auto kRun = std::chrono::seconds(120);
 
+// A courier command in restricted English from "test", once the courier reads commands.
+inline void send_command_text(dds::Writer<msg::CourierCommand>& writer, const std::string& id, const std::string& text) {
+  ASSERT_TRUE(writer.wait_for_readers(1, kDeadline));
+  msg::CourierCommand c;
+  c.command_id = id;
+  c.requester = "test";
+  c.text = text;
+  writer.write(c);
+}
+
 class CourierTest : public ProcessTest {
  protected:
   void start_world(const std::string& scenario_text, std::vector<std::string> wait_for_too = {}) {
@@ -61,14 +71,7 @@ class CourierTest : public ProcessTest {
                  {"--config", scenario_, "--journal", journal_, "--events", dir().file("events.jsonl"), "--domain",
                   std::to_string(domain_), "--log-dir", dir().path()});
   }
-  void send(const std::string& id, const std::string& text) {
-    ASSERT_TRUE(command_writer_->wait_for_readers(1, kDeadline));
-    msg::CourierCommand c;
-    c.command_id = id;
-    c.requester = "test";
-    c.text = text;
-    command_writer_->write(c);
-  }
+  void send(const std::string& id, const std::string& text) { send_command_text(*command_writer_, id, text); }
   // The world waits at tick 0 while the test is a lockstep participant that never acknowledges.
   void hold_world() { registration_writer_->write({"test/commands", true}); }
   // The world starts only while every --wait-for participant is registered: rhino's behavior must

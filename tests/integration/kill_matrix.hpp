@@ -100,7 +100,6 @@ class KillMatrixTest : public ProcessTest, public ::testing::WithParamInterface<
  protected:
   void SetUp() override {
     join(GetParam().domain);
-    beats_.emplace(participant(), dds::topics::heartbeat);
     clock_.emplace(participant(), dds::topics::clock);
     ack_topic_.emplace(participant(), dds::topics::tick_ack);
     ack_writer_.emplace(participant(), *ack_topic_);
@@ -222,7 +221,6 @@ class KillMatrixTest : public ProcessTest, public ::testing::WithParamInterface<
   pid_t victim_ = 0;
   bool clock_used_ = true;
   int64_t tick_ = -1;
-  std::optional<Recorder<msg::Heartbeat>> beats_;
   std::optional<Recorder<msg::SimClock>> clock_;
   std::optional<dds::Topic<msg::TickAck>> ack_topic_;
   std::optional<dds::Writer<msg::TickAck>> ack_writer_;

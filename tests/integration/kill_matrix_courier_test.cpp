@@ -23,14 +23,7 @@ class CourierSetKillTest : public KillMatrixTest {
     jobs_->poll();
     replies_->poll();
   }
-  void send(const std::string& id, const std::string& text) {
-    ASSERT_TRUE(command_writer_->wait_for_readers(1, kDeadline));
-    msg::CourierCommand c;
-    c.command_id = id;
-    c.requester = "test";
-    c.text = text;
-    command_writer_->write(c);
-  }
+  void send(const std::string& id, const std::string& text) { send_command_text(*command_writer_, id, text); }
   std::optional<msg::CourierJobStatus> last_of(const std::string& job) const {
     std::optional<msg::CourierJobStatus> last;
     for (const auto& s : jobs_->all())
