@@ -21,8 +21,12 @@ struct JobShopInstance {
   // Where each job's line is, so conflicts name it: the file and one line number per job.
   std::string file;
   std::vector<unsigned> job_lines;
+  unsigned header_line = 1;
 };
 
+// Errors carry file:line:column of the field at fault. A UTF-8 byte-order mark is skipped;
+// numbers that overflow and durations that add up to 2^52 ticks or more (the horizon's limit)
+// are errors.
 std::optional<JobShopInstance> parse_jobshop(std::string_view text, const std::string& file,
                                              Diagnostics* errors);
 pb::Model jobshop_model(const JobShopInstance& instance);

@@ -26,10 +26,24 @@ struct SyntaxError {
   std::string message;
 };
 
+// What an unexpected byte is, readable whatever it is (a control or non-ASCII byte printed raw
+// would garble the message).
+std::string unexpected(char c) {
+  const auto u = static_cast<unsigned char>(c);
+  if (u > 0x20 && u < 0x7f) return std::string("unexpected character '") + c + "'";
+  static const char hex[] = "0123456789ABCDEF";
+  std::string text = "unexpected byte 0x";
+  text += hex[u >> 4];
+  text += hex[u & 15];
+  text += u >= 0x80 ? " (outside comments the language is ASCII)" : " (a control character)";
+  return text;
+}
+
 std::vector<Token> lex(std::string_view s) {
   std::vector<Token> out;
   unsigned line = 1, column = 1;
-  std::size_t i = 0;
+  // A UTF-8 byte-order mark (editors on some systems write one) is not part of the text.
+  std::size_t i = s.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0;
   auto advance = [&](std::size_t n) {
     for (std::size_t k = 0; k < n && i < s.size(); ++k, ++i) {
       if (s[i] == '\n') {
@@ -76,6 +90,8 @@ std::vector<Token> lex(std::string_view s) {
         std::size_t used = 0;
         t.number = std::stod(t.text, &used);
         if (used != t.text.size()) throw std::invalid_argument("");
+      } catch (const std::out_of_range&) {
+        throw SyntaxError{line, column, "number '" + t.text + "' is out of range"};
       } catch (const std::exception&) {
         throw SyntaxError{line, column, "malformed number '" + t.text + "'"};
       }
@@ -87,7 +103,7 @@ std::vector<Token> lex(std::string_view s) {
         if (s.substr(i, 2) == p) t.text = p;
       if (t.text.empty()) {
         if (std::string_view("()[]{},:.|=<>+-*_").find(c) == std::string_view::npos)
-          throw SyntaxError{line, column, std::string("unexpected character '") + c + "'"};
+          throw SyntaxError{line, column, unexpected(c)};
         t.text = std::string(1, c);
       }
       advance(t.text.size());
@@ -192,7 +208,11 @@ class Parser {
   }
 
  private:
-  const Token& peek() const { return t_[pos_]; }
+  // The token `ahead` places on; past the end it is the end token (the lexer always ends the
+  // list with one), so no lookahead reads beyond the list.
+  const Token& peek(std::size_t ahead = 0) const {
+    return ahead < t_.size() - pos_ ? t_[pos_ + ahead] : t_.back();
+  }
   bool at_end() const { return peek().kind == Token::kEnd; }
   pb::Location here() const {
     pb::Location l;
@@ -242,9 +262,12 @@ class Parser {
     const Token at = peek();
     double v = number(what);
     if (std::isinf(v)) return v > 0 ? kNoBound : -kNoBound;
-    if (v != std::floor(v) || std::abs(v) >= double(kNoBound))
+    if (v != std::floor(v))
       throw SyntaxError{at.line, at.column,
                         std::string(what) + " must be an integer (time is in ticks)"};
+    if (std::abs(v) >= double(kNoBound))
+      throw SyntaxError{at.line, at.column,
+                        std::string(what) + " must lie within +-2^52 ticks ('inf' for none)"};
     return std::int64_t(v);
   }
   // '[' lb ',' ub ']' as time bounds.
@@ -489,7 +512,7 @@ class Parser {
 
   void fact(pb::Fact* f, bool goal) {
     *f->mutable_location() = here();
-    if (goal && t_[pos_ + 1].kind == Token::kPunct && t_[pos_ + 1].text == ":") {
+    if (goal && peek(1).kind == Token::kPunct && peek(1).text == ":") {
       f->set_label(ident("a goal label"));
       ++pos_;
     }

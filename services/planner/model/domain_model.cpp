@@ -177,7 +177,16 @@ std::optional<DomainModel> build_domain_model(const pb::Model& in, Diagnostics* 
         case pb::ParameterType::REAL:
           t.kind = param.type().kind() == pb::ParameterType::INTEGER ? ParameterType::Kind::kInteger
                                                                      : ParameterType::Kind::kReal;
-          if (t.lb > t.ub) check.error(param.location(), "parameter " + param.name() + ": lb > ub");
+          if (std::isnan(t.lb) || std::isnan(t.ub))
+            check.error(param.location(), "parameter " + param.name() + ": a bound is not a number");
+          else if (t.kind == ParameterType::Kind::kInteger &&
+                   !(std::abs(t.lb) <= double(kNoBound) && std::abs(t.ub) <= double(kNoBound)))
+            // Integer values become 64-bit codes (sets, exclusions): a bound beyond 2^52 could
+            // not be represented exactly, nor converted without overflow.
+            check.error(param.location(),
+                        "parameter " + param.name() + ": integer bounds must lie within +-2^52");
+          else if (t.lb > t.ub)
+            check.error(param.location(), "parameter " + param.name() + ": lb > ub");
           break;
         case pb::ParameterType::ENUMERATION:
         case pb::ParameterType::OBJECT: {
@@ -225,6 +234,8 @@ std::optional<DomainModel> build_domain_model(const pb::Model& in, Diagnostics* 
           }
         } else {
           cd.terms.push_back({TermRef::Kind::kConstant, -1, t.number()});
+          if (!(std::abs(t.number()) <= double(kNoBound)))  // also NaN
+            check.error(t.location(), "a constant must lie within +-2^52");
         }
       }
       const bool table = c.kind() == pb::ParameterConstraint::TABLE;
