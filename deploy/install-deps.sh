@@ -12,6 +12,8 @@ packages=(
   libeigen3-dev libompl-dev libspdlog-dev libfmt-dev libprotobuf-dev protobuf-compiler
   # ROS map_server YAML files (occupancy maps)
   libyaml-cpp-dev
+  # recordings: zstd compression of MCAP chunks (common/mcap)
+  libzstd-dev
   # the courier's journal of accepted commands and jobs (embedded SQLite, WAL)
   libsqlite3-dev
   # OMPL's CMake variables name these boost libraries
