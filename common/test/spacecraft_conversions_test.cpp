@@ -7,7 +7,7 @@ namespace autonomy::dds {
 namespace {
 
 template <typename T>
-T round_trip(const T& value) {
+T spacecraft_round_trip(const T& value) {
   typename DdsType<T>::C c{};
   Arena arena;
   DdsType<T>::to_c(value, c, arena);
@@ -17,18 +17,18 @@ T round_trip(const T& value) {
 TEST(SpacecraftConversionsTest, CommandAndStatusRoundTrip) {
   const msg::SpacecraftCommand c{"c-1",    "executive",  42,
                                  "camera", "take_image", {"asteroid-1", "raw"}};
-  const msg::SpacecraftCommand back = round_trip(c);
+  const msg::SpacecraftCommand back = spacecraft_round_trip(c);
   EXPECT_EQ(back.command_id, "c-1");
   EXPECT_EQ(back.source, "executive");
   EXPECT_EQ(back.tick, 42);
   EXPECT_EQ(back.device, "camera");
   EXPECT_EQ(back.command, "take_image");
   EXPECT_EQ(back.arguments, (std::vector<std::string>{"asteroid-1", "raw"}));
-  EXPECT_TRUE(round_trip(msg::SpacecraftCommand{}).arguments.empty());
+  EXPECT_TRUE(spacecraft_round_trip(msg::SpacecraftCommand{}).arguments.empty());
 
   const msg::SpacecraftCommandStatus s{"c-1", "executive",     "camera", "take_image",
                                        false, "camera is off", 42,       7};
-  const msg::SpacecraftCommandStatus sb = round_trip(s);
+  const msg::SpacecraftCommandStatus sb = spacecraft_round_trip(s);
   EXPECT_EQ(sb.command_id, "c-1");
   EXPECT_EQ(sb.source, "executive");
   EXPECT_EQ(sb.device, "camera");
@@ -40,7 +40,7 @@ TEST(SpacecraftConversionsTest, CommandAndStatusRoundTrip) {
   EXPECT_FALSE(sb.busy);
   msg::SpacecraftCommandStatus busy = s;
   busy.busy = true;
-  EXPECT_TRUE(round_trip(busy).busy);
+  EXPECT_TRUE(spacecraft_round_trip(busy).busy);
 }
 
 TEST(SpacecraftConversionsTest, FaultProtectionAndEventRoundTrip) {
@@ -48,7 +48,7 @@ TEST(SpacecraftConversionsTest, FaultProtectionAndEventRoundTrip) {
   t.fault_protection = {true, "no command or heartbeat of executive for 600 s", 600'000'000'000,
                         2, 601.5, 600.0};
   t.commands_busy = 17;
-  const msg::SpacecraftTelemetry b = round_trip(t);
+  const msg::SpacecraftTelemetry b = spacecraft_round_trip(t);
   EXPECT_TRUE(b.fault_protection.safe_mode);
   EXPECT_EQ(b.fault_protection.reason, "no command or heartbeat of executive for 600 s");
   EXPECT_EQ(b.fault_protection.safed_at_ns, 600'000'000'000);
@@ -58,7 +58,7 @@ TEST(SpacecraftConversionsTest, FaultProtectionAndEventRoundTrip) {
   EXPECT_EQ(b.commands_busy, 17u);
 
   const msg::SpacecraftEvent e{"ds1", 601, 600'000'000'000, "safed", "ips to standby"};
-  const msg::SpacecraftEvent eb = round_trip(e);
+  const msg::SpacecraftEvent eb = spacecraft_round_trip(e);
   EXPECT_EQ(eb.spacecraft, "ds1");
   EXPECT_EQ(eb.tick, 601);
   EXPECT_EQ(eb.sim_time_ns, 600'000'000'000);
@@ -81,7 +81,7 @@ TEST(SpacecraftConversionsTest, TelemetryRoundTrip) {
   t.storage = {5.0, 64.0};
   t.commands_accepted = 9;
   t.commands_rejected = 2;
-  const msg::SpacecraftTelemetry b = round_trip(t);
+  const msg::SpacecraftTelemetry b = spacecraft_round_trip(t);
   EXPECT_EQ(b.spacecraft, "ds1");
   EXPECT_EQ(b.tick, 3);
   EXPECT_EQ(b.sim_time_ns, 3000000000);
@@ -113,7 +113,7 @@ TEST(SpacecraftConversionsTest, TelemetryRoundTrip) {
 TEST(SpacecraftConversionsTest, FaultInjectionAndStateRoundTrip) {
   const msg::SpacecraftFaultInjection f{"f-1", "test", "false_sensor", "camera_switch_status", 0.25,
                                         false, true};
-  const auto fb = round_trip(f);
+  const auto fb = spacecraft_round_trip(f);
   EXPECT_EQ(fb.fault_id, "f-1");
   EXPECT_EQ(fb.source, "test");
   EXPECT_EQ(fb.kind, "false_sensor");
@@ -122,7 +122,7 @@ TEST(SpacecraftConversionsTest, FaultInjectionAndStateRoundTrip) {
   EXPECT_FALSE(fb.reset_cures);
   EXPECT_TRUE(fb.clear);
   const msg::SpacecraftFaultState s{"f-1", "failed", "lpe", 0.0, false, "at 7200 s", "reset", 99};
-  const auto sb = round_trip(s);
+  const auto sb = spacecraft_round_trip(s);
   EXPECT_EQ(sb.fault_id, "f-1");
   EXPECT_EQ(sb.kind, "failed");
   EXPECT_EQ(sb.subject, "lpe");

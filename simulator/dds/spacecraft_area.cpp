@@ -12,7 +12,7 @@ namespace {
 
 constexpr std::size_t kMaxArguments = 8;
 
-int64_t to_ns(double seconds) {
+int64_t seconds_to_ns(double seconds) {
   return static_cast<int64_t>(std::llround(seconds * 1e9));
 }
 
@@ -246,14 +246,14 @@ void SpacecraftArea::publish(std::int64_t tick, std::int64_t sim_time_ns) {
       spdlog::warn("spacecraft '{}' safed at {} s: {}", t.spacecraft, e.time_s, e.detail);
     else
       spdlog::info("spacecraft '{}' {} at {} s: {}", t.spacecraft, e.kind, e.time_s, e.detail);
-    event_writer_.write({t.spacecraft, tick, to_ns(e.time_s), e.kind, e.detail});
+    event_writer_.write({t.spacecraft, tick, seconds_to_ns(e.time_s), e.kind, e.detail});
   }
   for (const spacecraft::FaultEvent& e : craft_.take_fault_events()) {
     spdlog::info("fault '{}' ({} {}) {} at {} s ({})", e.fault.id, to_string(e.fault.kind),
                  e.fault.subject, e.active ? "active" : "ended by " + e.ended_by, e.time_s,
                  e.trigger);
     fault_writer_.write({e.fault.id, to_string(e.fault.kind), e.fault.subject, e.fault.value,
-                         e.active, e.trigger, e.ended_by, to_ns(e.time_s)});
+                         e.active, e.trigger, e.ended_by, seconds_to_ns(e.time_s)});
   }
 }
 

@@ -13,7 +13,7 @@ using geometry::Vec2;
 
 namespace {
 
-constexpr double kTol = kBoundaryToleranceM;
+constexpr double kModelTol = kBoundaryToleranceM;
 
 std::vector<geometry::Rect> bounds_of(const std::vector<Attenuator>& attenuators,
                                       const std::vector<MovingWall>& walls) {
@@ -39,8 +39,8 @@ void add(ObstacleLoss& total, const MovingWall& w, const Vec2& a, const Vec2& b)
 }
 
 bool within(const geometry::Rect& r, const Vec2& p) {
-  return p.x() >= r.min_x - kTol && p.x() <= r.max_x + kTol && p.y() >= r.min_y - kTol &&
-         p.y() <= r.max_y + kTol;
+  return p.x() >= r.min_x - kModelTol && p.x() <= r.max_x + kModelTol && p.y() >= r.min_y - kModelTol &&
+         p.y() <= r.max_y + kModelTol;
 }
 
 
@@ -67,15 +67,15 @@ bool crosses(const Vec2& p, const Vec2& q, const Vec2& a, const Vec2& b) {
   const Vec2 ab = b - a;
   const double pq_len = pq.norm();
   const double ab_len = ab.norm();
-  if (pq_len <= kTol || ab_len <= kTol) return false;
+  if (pq_len <= kModelTol || ab_len <= kModelTol) return false;
   // Signed distances (times the length of the other segment) of each end from the other line:
   // strictly on opposite sides, by more than the tolerance, for both segments.
   const double sa = cross(pq, a - p);
   const double sb = cross(pq, b - p);
   const double sp = cross(ab, p - a);
   const double sq = cross(ab, q - a);
-  const double tol_pq = kTol * pq_len;
-  const double tol_ab = kTol * ab_len;
+  const double tol_pq = kModelTol * pq_len;
+  const double tol_ab = kModelTol * ab_len;
   return ((sa > tol_pq && sb < -tol_pq) || (sa < -tol_pq && sb > tol_pq)) &&
          ((sp > tol_ab && sq < -tol_ab) || (sp < -tol_ab && sq > tol_ab));
 }

@@ -13,7 +13,7 @@ using geometry::Vec2;
 
 namespace {
 
-constexpr double kTol = kBoundaryToleranceM;
+constexpr double kRasterTol = kBoundaryToleranceM;
 constexpr int kBlockShift = 4;  // 16 x 16 cells per summary block
 constexpr int kBlockCells = 1 << kBlockShift;
 constexpr int kNoLine = std::numeric_limits<int>::min();
@@ -144,10 +144,10 @@ Traversal RasterAttenuator::traverse(const Vec2& a, const Vec2& b) const {
   const grid::OccupancyRaster& g = *raster_;
   const int n[2] = {g.width(), g.height()};
   const double length_m = (b - a).norm();
-  if (n[0] == 0 || n[1] == 0 || !(length_m > kTol)) return {};
+  if (n[0] == 0 || n[1] == 0 || !(length_m > kRasterTol)) return {};
   const double res = g.resolution_m();
-  const double tol_c = kTol / res;
-  const double tol_t = kTol / length_m;
+  const double tol_c = kRasterTol / res;
+  const double tol_t = kRasterTol / length_m;
 
   // Cell units; clip the parameter range to the raster (outside is free).
   Axis ax[2];
@@ -286,10 +286,10 @@ Traversal RasterAttenuator::traverse(const Vec2& a, const Vec2& b) const {
 
 Traversal traverse_raster_reference(const grid::OccupancyRaster& g, const Vec2& a, const Vec2& b) {
   const double length_m = (b - a).norm();
-  if (g.width() == 0 || g.height() == 0 || !(length_m > kTol)) return {};
+  if (g.width() == 0 || g.height() == 0 || !(length_m > kRasterTol)) return {};
   const double res = g.resolution_m();
-  const double tol_c = kTol / res;
-  const double tol_t = kTol / length_m;
+  const double tol_c = kRasterTol / res;
+  const double tol_t = kRasterTol / length_m;
   const Vec2 p((a.x() - g.origin().x) / res, (a.y() - g.origin().y) / res);
   const Vec2 d((b.x() - a.x()) / res, (b.y() - a.y()) / res);
   const Bits bit(g);

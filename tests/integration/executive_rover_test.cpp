@@ -21,8 +21,8 @@
 namespace autonomy::test {
 namespace {
 
-const std::string kScenario = std::string(AUTONOMY_SOURCE_DIR) + "/deploy/scenarios/field.pbtxt";
-const std::string kConfig = std::string(AUTONOMY_SOURCE_DIR) + "/services/executive/examples/field-rover.pbtxt";
+const std::string kRoverScenario = std::string(AUTONOMY_SOURCE_DIR) + "/deploy/scenarios/field.pbtxt";
+const std::string kRoverConfig = std::string(AUTONOMY_SOURCE_DIR) + "/services/executive/examples/field-rover.pbtxt";
 
 struct Site {
   const char* name;
@@ -43,7 +43,7 @@ class ExecutiveRoverTest : public ProcessTest {
     write_file(scenario, scenario_text);
     start("planner", AUTONOMY_PLANNER_BIN, {"--domain", std::to_string(domain), "--log-dir", dir().path()});
     start("executive", AUTONOMY_EXECUTIVE_BIN,
-          {"--config", kConfig, "--domain", std::to_string(domain), "--log-dir", dir().path(),
+          {"--config", kRoverConfig, "--domain", std::to_string(domain), "--log-dir", dir().path(),
            "--log-level", "debug", "--report-dir", dir().file("report")});
     start_behavior("rover");
     start_simulator({"--config", scenario, "--wait-for", "executive/main", "--wait-for", "behavior/rover"});
@@ -87,7 +87,7 @@ class ExecutiveRoverTest : public ProcessTest {
 };
 
 TEST_F(ExecutiveRoverTest, TheSurveyDrivesToEverySiteSamplesReportsAndComesHome) {
-  survey(218, read_file(kScenario));
+  survey(218, read_file(kRoverScenario));
   ASSERT_TRUE(finished()) << story();
   EXPECT_EQ(achieved(), sorted({"s1", "s2", "s3", "r1", "r2", "r3", "home"})) << story();
   EXPECT_TRUE(lost().empty()) << story();
@@ -119,7 +119,7 @@ TEST_F(ExecutiveRoverTest, TheSurveyDrivesToEverySiteSamplesReportsAndComesHome)
 
 TEST_F(ExecutiveRoverTest, ReportsTheRadioDoesNotDeliverStopTheRadioAndTheSurveyGoesOn) {
   // The radio model's default power: behind the boulder field the lander no longer hears the rover.
-  std::string text = read_file(kScenario);
+  std::string text = read_file(kRoverScenario);
   const std::string strong = "radio { tx_power_dbm: 30 }";
   ASSERT_NE(text.find(strong), std::string::npos);
   text.erase(text.find(strong), strong.size());

@@ -73,7 +73,7 @@ TEST_F(WorldIdentityTest, SecondSimulatorOnTheDomainRefusesAndNamesTheFirst) {
   EXPECT_EQ(first_beat.detail, "builtin:demo.pbtxt");
 
   const std::string scenario = std::string(AUTONOMY_SOURCE_DIR) + "/deploy/scenarios/field.pbtxt";
-  auto& second = start_simulator({"--config", scenario}, false, "simulator-2");
+  auto& second = start_simulator({"--config", scenario, "--world-check", "1"}, false, "simulator-2");
   const auto ended = second.wait_for_exit(kDeadline);
   ASSERT_TRUE(ended.has_value()) << "the second simulator still runs";
   EXPECT_TRUE(ended->exited && ended->code == 1) << ended->describe();

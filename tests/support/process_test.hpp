@@ -10,6 +10,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -113,6 +114,10 @@ class ProcessTest : public ::testing::Test {
  protected:
   ChildProcess& start_simulator(std::vector<std::string> args = {}, bool must_keep_running = true,
                                 const std::string& name = "simulator") {
+    // Each test has its own domain, so the simulator's 1 s listen for another world only delays
+    // the start: off unless the test passes --world-check (world_identity_test tests the check).
+    if (std::find(args.begin(), args.end(), "--world-check") == args.end())
+      args.insert(args.end(), {"--world-check", "0"});
     args.insert(args.end(), {"--domain", std::to_string(domain_), "--log-dir", dir_->path()});
     return start(name, AUTONOMY_SIMULATOR_BIN, args, must_keep_running);
   }

@@ -12,7 +12,7 @@ namespace autonomy::tools {
 
 namespace {
 
-struct Options {
+struct WaitOptions {
   int domain = 0;
   std::vector<std::string> targets;
   double timeout_s = 20.0;
@@ -28,7 +28,7 @@ struct Target {
   std::string name() const { return service + "/" + instance; }
 };
 
-int run(const Options& o, Context& ctx) {
+int run_wait(const WaitOptions& o, Context& ctx) {
   std::vector<Target> targets;
   for (const auto& t : o.targets) {
     const auto slash = t.find('/');
@@ -112,7 +112,7 @@ int run(const Options& o, Context& ctx) {
 }  // namespace
 
 Command add_node_wait(CLI::App& node) {
-  auto o = std::make_shared<Options>();
+  auto o = std::make_shared<WaitOptions>();
   auto* cmd = node.add_subcommand(
       "wait",
       "Wait until every named process's heartbeat says ready; print one line per process as it becomes ready. "
@@ -130,7 +130,7 @@ Command add_node_wait(CLI::App& node) {
   cmd->footer(
       "Exit codes: 0 all ready; 1 timeout (the missing ones and their last state on stderr), or DDS error; "
       "2 bad arguments; 130 Ctrl-C.");
-  return {cmd, [o](Context& ctx) { return run(*o, ctx); }};
+  return {cmd, [o](Context& ctx) { return run_wait(*o, ctx); }};
 }
 
 }  // namespace autonomy::tools

@@ -26,7 +26,7 @@ namespace autonomy::tools {
 
 namespace {
 
-struct Options {
+struct WatchOptions {
   int domain = 0;
   std::vector<std::string> targets;
   double hang_after_s = 10.0;
@@ -122,7 +122,7 @@ class SilentRelay {
   std::map<std::string, msg::Heartbeat> relayed_;  // name -> the heartbeat published for it
 };
 
-int run(const Options& o, Context& ctx) {
+int run_watch(const WatchOptions& o, Context& ctx) {
   LivelinessRules rules;
   rules.hang_after_s = o.hang_after_s;
   for (const auto& t : o.targets) {
@@ -179,7 +179,7 @@ int run(const Options& o, Context& ctx) {
 }  // namespace
 
 Command add_node_watch(CLI::App& node) {
-  auto o = std::make_shared<Options>();
+  auto o = std::make_shared<WatchOptions>();
   auto* cmd = node.add_subcommand(
       "watch",
       "Follow the heartbeats and print one line per change, until Ctrl-C: EVENT SERVICE/INSTANCE pid PID on HOST: "
@@ -198,7 +198,7 @@ Command add_node_watch(CLI::App& node) {
                 "One JSON object per line: {event, service, instance, host, pid, silent_s, limit_s, last_state}");
   cmd->add_flag("!--no-relay", o->relay, "Do not republish silent processes on autonomy/heartbeat/silent");
   cmd->footer("Exit codes: 0 after Ctrl-C or SIGTERM; 1 DDS error; 2 bad arguments.");
-  return {cmd, [o](Context& ctx) { return run(*o, ctx); }};
+  return {cmd, [o](Context& ctx) { return run_watch(*o, ctx); }};
 }
 
 }  // namespace autonomy::tools

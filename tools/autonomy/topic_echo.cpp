@@ -9,7 +9,7 @@ namespace autonomy::tools {
 
 namespace {
 
-struct Options {
+struct EchoOptions {
   int domain = 0;
   std::string topic;
   int64_t count = 0;
@@ -22,7 +22,7 @@ std::string dump(const json::Json& j) { return j.dump(-1, ' ', false, json::Json
 
 enum Tag : dds_attach_t { kData = 1, kInterrupt = 2, kStatus = 3 };
 
-int run(const Options& o, Context& ctx) {
+int run_echo(const EchoOptions& o, Context& ctx) {
   const auto registry = TopicRegistry::catalogue();
   const TopicEntry* topic = registry.find(o.topic);
   if (!topic) {
@@ -96,7 +96,7 @@ int run(const Options& o, Context& ctx) {
 }  // namespace
 
 Command add_topic_echo(CLI::App& topic) {
-  auto o = std::make_shared<Options>();
+  auto o = std::make_shared<EchoOptions>();
   auto* cmd = topic.add_subcommand(
       "echo",
       "Print a catalogue topic's samples, one JSON object per line (every field; enums as lower-case names). "
@@ -120,7 +120,7 @@ Command add_topic_echo(CLI::App& topic) {
       "Exit codes: 0 --count samples printed, or stopped with Ctrl-C; 1 --timeout passed first, or DDS error; "
       "2 unknown topic or bad arguments." +
       topics);
-  return {cmd, [o](Context& ctx) { return run(*o, ctx); }};
+  return {cmd, [o](Context& ctx) { return run_echo(*o, ctx); }};
 }
 
 }  // namespace autonomy::tools

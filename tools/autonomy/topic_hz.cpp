@@ -12,7 +12,7 @@ namespace autonomy::tools {
 
 namespace {
 
-struct Options {
+struct HzOptions {
   int domain = 0;
   std::string topic;
   size_t window = 10000;
@@ -62,7 +62,7 @@ class RateWindow {
   uint64_t total_ = 0;
 };
 
-int run(const Options& o, Context& ctx) {
+int run_hz(const HzOptions& o, Context& ctx) {
   const auto registry = TopicRegistry::catalogue();
   const TopicEntry* topic = registry.find(o.topic);
   if (!topic) {
@@ -115,7 +115,7 @@ int run(const Options& o, Context& ctx) {
 }  // namespace
 
 Command add_topic_hz(CLI::App& topic) {
-  auto o = std::make_shared<Options>();
+  auto o = std::make_shared<HzOptions>();
   auto* cmd = topic.add_subcommand(
       "hz",
       "Print, every second, the rate of a catalogue topic's samples as they arrive here: average rate, "
@@ -133,7 +133,7 @@ Command add_topic_hz(CLI::App& topic) {
       ->capture_default_str();
   const std::string topics = "\nTopics of the catalogue: " + TopicRegistry::catalogue().names() + ".";
   cmd->footer("Exit codes: 0 after --duration or Ctrl-C; 1 DDS error; 2 unknown topic or bad arguments." + topics);
-  return {cmd, [o](Context& ctx) { return run(*o, ctx); }};
+  return {cmd, [o](Context& ctx) { return run_hz(*o, ctx); }};
 }
 
 }  // namespace autonomy::tools

@@ -13,7 +13,7 @@ namespace autonomy::tools {
 
 namespace {
 
-struct Options {
+struct TopicListOptions {
   int domain = 0;
   double wait_s = 1.0;
   bool verbose = false;
@@ -46,7 +46,7 @@ std::string pad(const std::string& s, size_t width) {
   return s.size() >= width ? s : s + std::string(width - s.size(), ' ');
 }
 
-int run(const Options& o, Context& ctx) {
+int run_topic_list(const TopicListOptions& o, Context& ctx) {
   dds::Participant participant(o.domain);
   Discovery discovery(participant);
   Interrupt interrupt(ctx.signals, participant);
@@ -85,7 +85,7 @@ int run(const Options& o, Context& ctx) {
 }  // namespace
 
 Command add_topic_list(CLI::App& topic) {
-  auto o = std::make_shared<Options>();
+  auto o = std::make_shared<TopicListOptions>();
   auto* cmd = topic.add_subcommand(
       "list",
       "List every topic seen on the domain, ours and other DDS processes' (from DCPSPublication and "
@@ -97,7 +97,7 @@ Command add_topic_list(CLI::App& topic) {
       ->capture_default_str();
   cmd->add_flag("-v,--verbose", o->verbose, "Also one line per endpoint: writer/reader, GUID, QoS");
   cmd->footer("Exit codes: 0 listed (also when nothing was seen), 1 DDS error, 2 bad arguments, 130 Ctrl-C.");
-  return {cmd, [o](Context& ctx) { return run(*o, ctx); }};
+  return {cmd, [o](Context& ctx) { return run_topic_list(*o, ctx); }};
 }
 
 }  // namespace autonomy::tools

@@ -13,7 +13,7 @@ namespace autonomy::tools {
 
 namespace {
 
-struct Options {
+struct PubOptions {
   int domain = 0;
   std::string topic;
   std::string json_text;
@@ -62,7 +62,7 @@ bool robot_served(Interrupt& interrupt, const dds::Participant& participant, con
   }
 }
 
-int run(const Options& o, Context& ctx) {
+int run_pub(const PubOptions& o, Context& ctx) {
   const auto registry = TopicRegistry::catalogue();
   const TopicEntry* topic = registry.find(o.topic);
   if (!topic) {
@@ -149,7 +149,7 @@ int run(const Options& o, Context& ctx) {
 }  // namespace
 
 Command add_topic_pub(CLI::App& topic) {
-  auto o = std::make_shared<Options>();
+  auto o = std::make_shared<PubOptions>();
   auto* cmd = topic.add_subcommand(
       "pub",
       "Publish a message given as JSON on a catalogue topic, with the topic's QoS class. Key fields are "
@@ -183,7 +183,7 @@ Command add_topic_pub(CLI::App& topic) {
       "invalid JSON, a missing key field, a wrong type or unknown field, bad arguments; 130 Ctrl-C before --count was "
       "reached." +
       topics);
-  return {cmd, [o](Context& ctx) { return run(*o, ctx); }};
+  return {cmd, [o](Context& ctx) { return run_pub(*o, ctx); }};
 }
 
 }  // namespace autonomy::tools

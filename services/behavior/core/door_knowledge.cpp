@@ -7,13 +7,13 @@ namespace autonomy::behavior {
 
 namespace {
 
-bool positive_finite(double v) { return std::isfinite(v) && v > 0.0; }
+bool positive_finite_door(double v) { return std::isfinite(v) && v > 0.0; }
 
 }  // namespace
 
 DoorKnowledge::DoorKnowledge(DoorKnowledgeSettings settings) : settings_(settings) {
-  if (!positive_finite(settings_.closed_below_rad) || !positive_finite(settings_.memory_s) ||
-      !positive_finite(settings_.thickness_m) || !std::isfinite(settings_.open_above_rad) ||
+  if (!positive_finite_door(settings_.closed_below_rad) || !positive_finite_door(settings_.memory_s) ||
+      !positive_finite_door(settings_.thickness_m) || !std::isfinite(settings_.open_above_rad) ||
       settings_.open_above_rad < settings_.closed_below_rad) {
     throw std::invalid_argument("door knowledge settings must be positive and finite, open_above >= closed_below");
   }

@@ -11,7 +11,7 @@ namespace autonomy::behavior {
 
 namespace {
 
-bool positive_finite(double v) { return std::isfinite(v) && v > 0.0; }
+bool positive_finite_limit(double v) { return std::isfinite(v) && v > 0.0; }
 
 // True when every cell the segment a -> b touches is reachable, walking the cells in order
 // (Amanatides & Woo, "A fast voxel traversal algorithm", 1987). Exact rather than sampled: a robot
@@ -65,11 +65,11 @@ bool visible(const CostToGoField& field, const geometry::Vec2& a, const geometry
 
 GoToController::GoToController(Kinematics kinematics, MotionLimits limits, GoToConfig config)
     : kinematics_(kinematics), limits_(limits), config_(config) {
-  if (!positive_finite(limits.max_speed_mps) || !positive_finite(limits.max_omega_rps)) {
+  if (!positive_finite_limit(limits.max_speed_mps) || !positive_finite_limit(limits.max_omega_rps)) {
     throw std::invalid_argument("max speed and max omega must be positive and finite");
   }
-  if (!positive_finite(config.lookahead_m) || !positive_finite(config.slowdown_radius_m) ||
-      !positive_finite(config.heading_gain) || !positive_finite(config.turn_in_place_rad)) {
+  if (!positive_finite_limit(config.lookahead_m) || !positive_finite_limit(config.slowdown_radius_m) ||
+      !positive_finite_limit(config.heading_gain) || !positive_finite_limit(config.turn_in_place_rad)) {
     throw std::invalid_argument("go-to controller parameters must be positive and finite");
   }
 }

@@ -17,7 +17,7 @@ void require_same_geometry(const GridGeometry& a, const GridGeometry& b, const c
     throw std::invalid_argument(std::string(what) + " geometry differs from the tracker's grid");
 }
 
-bool positive_finite(double v) { return std::isfinite(v) && v > 0.0; }
+bool positive_finite_setting(double v) { return std::isfinite(v) && v > 0.0; }
 
 template <typename... Args>
 std::string format(const char* fmt, Args... args) {
@@ -30,8 +30,8 @@ std::string format(const char* fmt, Args... args) {
 
 GoalTracker::GoalTracker(OccupancyGrid grid, GoalTrackerConfig config)
     : grid_(std::move(grid)), config_(config) {
-  if (!positive_finite(config.default_tolerance_m) || !positive_finite(config.stall_timeout_s) ||
-      !positive_finite(config.min_progress_m) || !std::isfinite(config.collision_timeout_s) ||
+  if (!positive_finite_setting(config.default_tolerance_m) || !positive_finite_setting(config.stall_timeout_s) ||
+      !positive_finite_setting(config.min_progress_m) || !std::isfinite(config.collision_timeout_s) ||
       config.collision_timeout_s < 0.0 ||
       !std::isfinite(config.route_search_radius_m) ||
       config.route_search_radius_m < 0.0) {

@@ -8,7 +8,7 @@ namespace autonomy::behavior {
 
 namespace {
 
-bool positive_finite(double v) { return std::isfinite(v) && v > 0.0; }
+bool positive_finite_size(double v) { return std::isfinite(v) && v > 0.0; }
 
 // Number of cells covering `length`; the tolerance keeps 10 / 0.1 from becoming 101 cells.
 int cells_covering(double length_m, double resolution_m) {
@@ -18,10 +18,10 @@ int cells_covering(double length_m, double resolution_m) {
 }  // namespace
 
 OccupancyGrid::OccupancyGrid(const WorldMap& world, double resolution_m, double inflation_radius_m) {
-  if (!positive_finite(world.width_m) || !positive_finite(world.height_m)) {
+  if (!positive_finite_size(world.width_m) || !positive_finite_size(world.height_m)) {
     throw std::invalid_argument("world width and height must be positive and finite");
   }
-  if (!positive_finite(resolution_m)) {
+  if (!positive_finite_size(resolution_m)) {
     throw std::invalid_argument("grid resolution must be positive and finite");
   }
   if (!std::isfinite(inflation_radius_m) || inflation_radius_m < 0.0) {
@@ -44,7 +44,7 @@ OccupancyGrid::OccupancyGrid(const WorldMap& world, double resolution_m, double 
     }
   }
   for (const auto& r : world.rasters) {
-    if (!r || !positive_finite(r->resolution_m()) || r->origin().yaw != 0.0 || !std::isfinite(r->origin().x) ||
+    if (!r || !positive_finite_size(r->resolution_m()) || r->origin().yaw != 0.0 || !std::isfinite(r->origin().x) ||
         !std::isfinite(r->origin().y)) {
       throw std::invalid_argument("occupancy rasters must exist, have a positive resolution and no rotation");
     }
@@ -138,7 +138,7 @@ OccupancyGrid OccupancyGrid::from_picture(const std::vector<std::string>& rows_t
   if (rows_top_first.empty() || rows_top_first.front().empty()) {
     throw std::invalid_argument("a grid picture needs at least one cell");
   }
-  if (!positive_finite(resolution_m)) {
+  if (!positive_finite_size(resolution_m)) {
     throw std::invalid_argument("grid resolution must be positive and finite");
   }
   const auto cols = rows_top_first.front().size();

@@ -12,7 +12,7 @@ namespace {
 using test::at_clock;
 using test::small_office;
 
-DeskRequest ask(const std::string& id, const std::string& robot, HandoverKind kind, const std::string& place,
+DeskRequest desk_ask(const std::string& id, const std::string& robot, HandoverKind kind, const std::string& place,
                 const std::string& object) {
   return {id, robot, kind, place, object};
 }
@@ -28,7 +28,7 @@ class HandoverDeskTest : public ::testing::Test {
 TEST_F(HandoverDeskTest, LoadIsAcceptedThenCompletedAtItsPlannedTimeAndTheObjectMoves) {
   const double t0 = at_clock(9, 15);
   const DeskAnswer accepted =
-      desk.request(ask("q1", "r1", HandoverKind::load, "anna-desk", "letter-1"), RobotAtDesk{kAnnaDesk, 1}, t0);
+      desk.request(desk_ask("q1", "r1", HandoverKind::load, "anna-desk", "letter-1"), RobotAtDesk{kAnnaDesk, 1}, t0);
   EXPECT_EQ(accepted.state, DeskAnswerState::accepted);
   EXPECT_EQ(accepted.request_id, "q1");
   EXPECT_EQ(accepted.helper, "Anna");
@@ -60,7 +60,7 @@ TEST_F(HandoverDeskTest, LoadIsAcceptedThenCompletedAtItsPlannedTimeAndTheObject
 
 TEST_F(HandoverDeskTest, ARepeatedRequestGetsTheLatestAnswerAndStartsNothing) {
   const double t0 = at_clock(9, 15);
-  const auto req = ask("q1", "r1", HandoverKind::load, "anna-desk", "letter-1");
+  const auto req = desk_ask("q1", "r1", HandoverKind::load, "anna-desk", "letter-1");
   ASSERT_EQ(desk.request(req, RobotAtDesk{kAnnaDesk, 1}, t0).state, DeskAnswerState::accepted);
   const DeskAnswer again = desk.request(req, RobotAtDesk{kAnnaDesk, 1}, t0 + 1.0);
   EXPECT_EQ(again.state, DeskAnswerState::accepted);
@@ -79,42 +79,42 @@ TEST_F(HandoverDeskTest, MalformedAndUnknownRobotRequestsAreRejectedWithReasons)
     EXPECT_EQ(a.state, DeskAnswerState::rejected) << a.detail;
     return a.reason + ": " + a.detail;
   };
-  EXPECT_EQ(reject(ask("", "r1", HandoverKind::load, "anna-desk", "letter-1"), at_anna),
+  EXPECT_EQ(reject(desk_ask("", "r1", HandoverKind::load, "anna-desk", "letter-1"), at_anna),
             "invalid_request: request_id is empty");
-  EXPECT_EQ(reject(ask(std::string(129, 'q'), "r1", HandoverKind::load, "anna-desk", "letter-1"), at_anna),
+  EXPECT_EQ(reject(desk_ask(std::string(129, 'q'), "r1", HandoverKind::load, "anna-desk", "letter-1"), at_anna),
             "invalid_request: request_id has 129 bytes, more than 128");
-  EXPECT_EQ(desk.request(ask(std::string(100000, 'q'), "r1", HandoverKind::load, "anna-desk", "letter-1"), at_anna, t0)
+  EXPECT_EQ(desk.request(desk_ask(std::string(100000, 'q'), "r1", HandoverKind::load, "anna-desk", "letter-1"), at_anna, t0)
                 .request_id,
             std::string(128, 'q'));  // echoed cut to the limit
-  EXPECT_EQ(reject(ask("q0", "r1", HandoverKind::load, std::string(65, 'p'), "letter-1"), at_anna),
+  EXPECT_EQ(reject(desk_ask("q0", "r1", HandoverKind::load, std::string(65, 'p'), "letter-1"), at_anna),
             "invalid_request: place has 65 bytes, more than 64");
-  EXPECT_EQ(reject(ask("q1", "r 1", HandoverKind::load, "anna-desk", "letter-1"), at_anna),
+  EXPECT_EQ(reject(desk_ask("q1", "r 1", HandoverKind::load, "anna-desk", "letter-1"), at_anna),
             "invalid_request: robot id 'r 1' has characters outside [A-Za-z0-9_.-]");
-  EXPECT_EQ(reject(ask("q2", "r1", static_cast<HandoverKind>(7), "anna-desk", "letter-1"), at_anna),
+  EXPECT_EQ(reject(desk_ask("q2", "r1", static_cast<HandoverKind>(7), "anna-desk", "letter-1"), at_anna),
             "invalid_request: kind is neither load nor unload");
-  EXPECT_EQ(reject(ask("q3", "r1", HandoverKind::load, "", "letter-1"), at_anna), "invalid_request: place is empty");
-  EXPECT_EQ(reject(ask("q4", "r1", HandoverKind::load, "anna-desk", ""), at_anna),
+  EXPECT_EQ(reject(desk_ask("q3", "r1", HandoverKind::load, "", "letter-1"), at_anna), "invalid_request: place is empty");
+  EXPECT_EQ(reject(desk_ask("q4", "r1", HandoverKind::load, "anna-desk", ""), at_anna),
             "invalid_request: object_id is empty");
-  EXPECT_EQ(reject(ask("q5", "ghost", HandoverKind::load, "anna-desk", "letter-1"), std::nullopt),
+  EXPECT_EQ(reject(desk_ask("q5", "ghost", HandoverKind::load, "anna-desk", "letter-1"), std::nullopt),
             "unknown_robot: robot ghost is not in the world");
-  EXPECT_EQ(reject(ask("q6", "r1", HandoverKind::load, "nowhere", "letter-1"), at_anna),
+  EXPECT_EQ(reject(desk_ask("q6", "r1", HandoverKind::load, "nowhere", "letter-1"), at_anna),
             "unknown_place: unknown place nowhere");
   // A rejected request id stays answered: asking again (even from the right place) repeats it.
-  EXPECT_EQ(reject(ask("q6", "r1", HandoverKind::load, "anna-desk", "letter-1"), at_anna),
+  EXPECT_EQ(reject(desk_ask("q6", "r1", HandoverKind::load, "anna-desk", "letter-1"), at_anna),
             "unknown_place: unknown place nowhere");
   EXPECT_EQ(desk.office().pending_count(), 0u);
 }
 
 TEST_F(HandoverDeskTest, NobodyPresentAndRobotAwayAreRejectedByTheOffice) {
   // Bob is in 10:00-11:00 only.
-  const DeskAnswer not_carried = desk.request(ask("q1", "r1", HandoverKind::unload, "bob-desk", "letter-1"),
+  const DeskAnswer not_carried = desk.request(desk_ask("q1", "r1", HandoverKind::unload, "bob-desk", "letter-1"),
                                          RobotAtDesk{kBobDesk, 1}, at_clock(9, 0));
   EXPECT_EQ(not_carried.reason, "object_not_carried_by_robot");
-  const DeskAnswer load = desk.request(ask("q2", "r1", HandoverKind::load, "anna-desk", "letter-1"),
+  const DeskAnswer load = desk.request(desk_ask("q2", "r1", HandoverKind::load, "anna-desk", "letter-1"),
                                        RobotAtDesk{{6.0, 2.0}, 1}, at_clock(9, 0));
   EXPECT_EQ(load.reason, "robot_not_at_place");
   EXPECT_EQ(load.detail, "robot r1 is 4.0 m from anna-desk (must be within 0.8 m)");
-  const DeskAnswer early = desk.request(ask("q3", "r1", HandoverKind::load, "anna-desk", "letter-1"),
+  const DeskAnswer early = desk.request(desk_ask("q3", "r1", HandoverKind::load, "anna-desk", "letter-1"),
                                         RobotAtDesk{kAnnaDesk, 1}, at_clock(8, 45));
   EXPECT_EQ(early.reason, "nobody_present");
   EXPECT_EQ(early.detail, "nobody at anna-desk at 08:45 (somebody is back at 09:00)");
@@ -122,7 +122,7 @@ TEST_F(HandoverDeskTest, NobodyPresentAndRobotAwayAreRejectedByTheOffice) {
 
 TEST_F(HandoverDeskTest, LeavingThePlaceFailsTheHandoverAndTheRequestHearsWhy) {
   const double t0 = at_clock(9, 15);
-  ASSERT_EQ(desk.request(ask("q1", "r1", HandoverKind::load, "anna-desk", "letter-1"), RobotAtDesk{kAnnaDesk, 1}, t0)
+  ASSERT_EQ(desk.request(desk_ask("q1", "r1", HandoverKind::load, "anna-desk", "letter-1"), RobotAtDesk{kAnnaDesk, 1}, t0)
                 .state,
             DeskAnswerState::accepted);
   const auto failed = desk.advance(t0 + 5.0, {{"r1", {5.0, 2.0}}});
@@ -134,7 +134,7 @@ TEST_F(HandoverDeskTest, LeavingThePlaceFailsTheHandoverAndTheRequestHearsWhy) {
   desk.changed_objects();
   EXPECT_TRUE(desk.office().object("letter-1")->location.is_at("anna-desk"));
 
-  ASSERT_EQ(desk.request(ask("q2", "r1", HandoverKind::load, "anna-desk", "letter-1"), RobotAtDesk{kAnnaDesk, 1}, t0 + 6)
+  ASSERT_EQ(desk.request(desk_ask("q2", "r1", HandoverKind::load, "anna-desk", "letter-1"), RobotAtDesk{kAnnaDesk, 1}, t0 + 6)
                 .state,
             DeskAnswerState::accepted);
   const auto gone = desk.advance(t0 + 7.0, {});
@@ -148,13 +148,13 @@ TEST(HandoverDesk, TheRunSeedDecidesTheDrawnDurations) {
   const auto bob_takes = [](uint64_t seed) {
     HandoverDesk d(small_office(), seed);
     const double t0 = at_clock(10, 15);
-    EXPECT_EQ(d.request(ask("q1", "r1", HandoverKind::load, "anna-desk", "letter-1"), RobotAtDesk{kAnnaDesk, 1}, t0)
+    EXPECT_EQ(d.request(desk_ask("q1", "r1", HandoverKind::load, "anna-desk", "letter-1"), RobotAtDesk{kAnnaDesk, 1}, t0)
                   .state,
               DeskAnswerState::accepted);
     EXPECT_EQ(d.advance(t0 + 20.0, {{"r1", kAnnaDesk}}).size(), 1u);
     const double t1 = at_clock(10, 30);
     const DeskAnswer a =
-        d.request(ask("q2", "r1", HandoverKind::unload, "bob-desk", "letter-1"), RobotAtDesk{kBobDesk, 1}, t1);
+        d.request(desk_ask("q2", "r1", HandoverKind::unload, "bob-desk", "letter-1"), RobotAtDesk{kBobDesk, 1}, t1);
     EXPECT_EQ(a.state, DeskAnswerState::accepted) << a.detail;
     EXPECT_EQ(a.helper, "Bob");
     return a.completes_at_s - t1;

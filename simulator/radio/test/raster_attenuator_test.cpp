@@ -29,7 +29,7 @@ std::shared_ptr<grid::OccupancyRaster> raster(int w, int h, double res, grid::Ra
   return std::make_shared<grid::OccupancyRaster>(w, h, res, o);
 }
 
-void expect_same(const Traversal& t, int crossings, int stretches, double inside_m) {
+void expect_raster_same(const Traversal& t, int crossings, int stretches, double inside_m) {
   EXPECT_EQ(t.crossings, crossings);
   EXPECT_EQ(t.stretches, stretches);
   EXPECT_NEAR(t.inside_m, inside_m, 1e-9);
@@ -79,12 +79,12 @@ TEST(RasterAttenuator, EveryBandIsOneWall) {
 
 TEST(RasterAttenuator, RadiosInsideAWallPayTheWayOut) {
   const RasterAttenuator r(one_wall(), 12.0, 0.5);
-  expect_same(r.traverse({5.5, 2.3}, {9.0, 2.3}), 1, 1, 0.5);  // leaves the wall: 1 wall
-  expect_same(r.traverse({9.0, 2.3}, {5.5, 2.3}), 1, 1, 0.5);  // either way
-  expect_same(r.traverse({5.2, 2.3}, {5.8, 7.3}), 0, 1, std::hypot(0.6, 5.0));  // stays inside
-  expect_same(r.traverse({5.0, 2.3}, {6.0, 2.3}), 0, 1, 1.0);  // face to face, through the inside
-  expect_same(r.traverse({6.0, 2.3}, {9.0, 2.3}), 0, 0, 0.0);  // from the face outwards
-  expect_same(r.traverse({4.0, 2.3}, {6.0, 2.3}), 1, 1, 1.0);  // to the far face: in, then on it
+  expect_raster_same(r.traverse({5.5, 2.3}, {9.0, 2.3}), 1, 1, 0.5);  // leaves the wall: 1 wall
+  expect_raster_same(r.traverse({9.0, 2.3}, {5.5, 2.3}), 1, 1, 0.5);  // either way
+  expect_raster_same(r.traverse({5.2, 2.3}, {5.8, 7.3}), 0, 1, std::hypot(0.6, 5.0));  // stays inside
+  expect_raster_same(r.traverse({5.0, 2.3}, {6.0, 2.3}), 0, 1, 1.0);  // face to face, through the inside
+  expect_raster_same(r.traverse({6.0, 2.3}, {9.0, 2.3}), 0, 0, 0.0);  // from the face outwards
+  expect_raster_same(r.traverse({4.0, 2.3}, {6.0, 2.3}), 1, 1, 1.0);  // to the far face: in, then on it
 }
 
 TEST(RasterAttenuator, CornersAndGridLinesAreBoundary) {
@@ -92,22 +92,22 @@ TEST(RasterAttenuator, CornersAndGridLinesAreBoundary) {
   g->set_blocked({5, 5}, true);
   const RasterAttenuator r(g, 12.0, 0.5);
   // x + y = 10 touches cell (5, 5) at its corner (5, 5) only.
-  expect_same(r.traverse({3.0, 7.0}, {7.0, 3.0}), 0, 0, 0.0);
+  expect_raster_same(r.traverse({3.0, 7.0}, {7.0, 3.0}), 0, 0, 0.0);
   // Along the cell's lower edge (y = 5) and its left edge (x = 5): on the boundary.
-  expect_same(r.traverse({0.0, 5.0}, {12.0, 5.0}), 0, 0, 0.0);
-  expect_same(r.traverse({5.0, 0.5}, {5.0, 11.0}), 0, 0, 0.0);
+  expect_raster_same(r.traverse({0.0, 5.0}, {12.0, 5.0}), 0, 0, 0.0);
+  expect_raster_same(r.traverse({5.0, 0.5}, {5.0, 11.0}), 0, 0, 0.0);
 
   // Two cells meeting at a corner: the diagonal through it leaves one wall and enters another.
   g->set_blocked({4, 4}, true);
   const RasterAttenuator two(g, 12.0, 0.5);
-  expect_same(two.traverse({2.5, 2.5}, {7.5, 7.5}), 2, 2, 2.0 * std::sqrt(2.0));
+  expect_raster_same(two.traverse({2.5, 2.5}, {7.5, 7.5}), 2, 2, 2.0 * std::sqrt(2.0));
   // With the other two cells of that corner blocked, it is one 2 x 2 block: one wall.
   g->set_blocked({4, 5}, true);
   g->set_blocked({5, 4}, true);
   const RasterAttenuator block(g, 12.0, 0.5);
-  expect_same(block.traverse({2.5, 2.5}, {7.5, 7.5}), 1, 1, 2.0 * std::sqrt(2.0));
+  expect_raster_same(block.traverse({2.5, 2.5}, {7.5, 7.5}), 1, 1, 2.0 * std::sqrt(2.0));
   // Along the grid line y = 5 between two blocked rows: inside the block (x in [4, 6]).
-  expect_same(block.traverse({0.0, 5.0}, {12.0, 5.0}), 1, 1, 2.0);
+  expect_raster_same(block.traverse({0.0, 5.0}, {12.0, 5.0}), 1, 1, 2.0);
 }
 
 TEST(RasterAttenuator, CellsOutsideTheMapAreFreeAndOriginIsHonoured) {
@@ -115,13 +115,13 @@ TEST(RasterAttenuator, CellsOutsideTheMapAreFreeAndOriginIsHonoured) {
   auto g = raster(40, 20, 0.5, {100.0, 50.0, 0.0});
   block_columns(*g, 10, 11);
   const RasterAttenuator r(g, 12.0, 0.5);
-  expect_same(r.traverse({90.0, 52.3}, {130.0, 52.3}), 1, 1, 1.0);  // enters and leaves the map
-  expect_same(r.traverse({1.0, 2.3}, {9.0, 2.3}), 0, 0, 0.0);        // far from it
-  expect_same(r.traverse({90.0, 40.0}, {130.0, 40.0}), 0, 0, 0.0);   // below it
+  expect_raster_same(r.traverse({90.0, 52.3}, {130.0, 52.3}), 1, 1, 1.0);  // enters and leaves the map
+  expect_raster_same(r.traverse({1.0, 2.3}, {9.0, 2.3}), 0, 0, 0.0);        // far from it
+  expect_raster_same(r.traverse({90.0, 40.0}, {130.0, 40.0}), 0, 0, 0.0);   // below it
   // A map whose border column is blocked: entering it from outside crosses that wall.
   auto edge = raster(10, 10, 1.0);
   block_columns(*edge, 0, 0);
-  expect_same(RasterAttenuator(edge, 12.0, 0.5).traverse({-5.0, 5.5}, {5.0, 5.5}), 1, 1, 1.0);
+  expect_raster_same(RasterAttenuator(edge, 12.0, 0.5).traverse({-5.0, 5.5}, {5.0, 5.5}), 1, 1, 1.0);
 }
 
 TEST(RasterAttenuator, RejectsUnusableMaps) {

@@ -26,7 +26,7 @@ const std::string kMinimal = R"(  name: "ds1"
   }
 )";
 
-Errors errors_of(const std::string& text) {
+Errors section_errors_of(const std::string& text) {
   const ScenarioLoadResult result = load_scenario_text(text, "s.pbtxt");
   EXPECT_FALSE(result.ok());
   Errors out;
@@ -62,7 +62,7 @@ TEST(SpacecraftSection, FaultProtectionAndQueueLimitAreReadAndChecked) {
   EXPECT_DOUBLE_EQ(r.scenario->spacecraft->fault_protection.commander_timeout_s, 30.0);
   EXPECT_EQ(r.scenario->spacecraft->fault_protection.commander, "exec");
   EXPECT_EQ(r.scenario->spacecraft->command_queue_limit, 5u);
-  EXPECT_EQ(errors_of(section(
+  EXPECT_EQ(section_errors_of(section(
                 kMinimal + "  fault_protection { commander_timeout_s: -1 commander: \"\" }\n"
                            "  command_queue_limit: 0\n")),
             (Errors{"s.pbtxt:11:22: fault_protection: commander_timeout_s must be >= 0 (0: off) "
@@ -96,7 +96,7 @@ TEST(SpacecraftSection, FaultsWithTimesAndEventsAreRead) {
 }
 
 TEST(SpacecraftSection, ErrorsNameTheirLineAndColumn) {
-  EXPECT_EQ(errors_of(section(R"(  name: "ds1"
+  EXPECT_EQ(section_errors_of(section(R"(  name: "ds1"
   targets { name: "star" direction { z: 1 } }
   attitude {
     initial_target: "moon"
@@ -108,7 +108,7 @@ TEST(SpacecraftSection, ErrorsNameTheirLineAndColumn) {
                     "s.pbtxt:7:31: control mode 'thrusters': actuator 'ty' is not one of "
                     "attitude.thrusters"}));
   EXPECT_EQ(
-      errors_of(section(kMinimal + R"(  ion_engine { max_level: 0 }
+      section_errors_of(section(kMinimal + R"(  ion_engine { max_level: 0 }
   camera { initial_mode: "imaging" exposure_s: -1 }
   telecom {
     windows { station: "dss-14" start_s: 100 end_s: 200 rate_kbps: 10 }
@@ -123,7 +123,7 @@ TEST(SpacecraftSection, ErrorsNameTheirLineAndColumn) {
               "s.pbtxt:15:46: window 1 (dss-43): end_s must be after start_s (got 120.0)",
               "s.pbtxt:15:57: window 1 (dss-43): rate_kbps must be positive (got 0.0)"}));
   EXPECT_EQ(
-      errors_of(
+      section_errors_of(
           section(kMinimal + R"(  faults { id: "x" kind: STUCK_CLOSED subject: "camera" at_s: 5 }
   faults { id: "y" subject: "ips" }
   faults { id: "z" kind: FAILED subject: "ips" on_command: "warp engage" }
@@ -133,7 +133,7 @@ TEST(SpacecraftSection, ErrorsNameTheirLineAndColumn) {
           "s.pbtxt:12:3: fault 'y': kind is missing (STUCK_ON, FAILED, FALSE_SENSOR, STUCK_CLOSED, "
           "NEVER_CONFIRMED)",
           "s.pbtxt:13:48: failed fault 'z': on_command names unknown device 'warp'"}));
-  EXPECT_EQ(errors_of("spacecraft { name: \"x\" }\n"),
+  EXPECT_EQ(section_errors_of("spacecraft { name: \"x\" }\n"),
             (Errors{"s.pbtxt:1:1: spacecraft: at least one target is needed",
                     "s.pbtxt:1:1: spacecraft: attitude is missing"}));
 }

@@ -24,27 +24,27 @@ SpacecraftSpec spec_with_timeout(double timeout_s) {
   return s;
 }
 
-Command cmd(const std::string& device, const std::string& command,
+Command protection_cmd(const std::string& device, const std::string& command,
             std::vector<std::string> arguments = {}, const std::string& id = "c") {
   return {id, "test", device, command, std::move(arguments)};
 }
 
-void run(Spacecraft& sc, int steps) {
+void run_steps(Spacecraft& sc, int steps) {
   for (int i = 0; i < steps; ++i) sc.step(1.0);
 }
 
 TEST(FaultProtectionTest, SafesWhenTheCommanderIsSilentForTheTimeout) {
   Spacecraft sc(spec_with_timeout(60));
-  ASSERT_TRUE(sc.submit(cmd("ips", "thrust", {"5"})).accepted);  // heard at 0 s
-  ASSERT_TRUE(sc.submit(cmd("adcs", "turn", {"asteroid"})).accepted);
-  run(sc, 60);  // steps starting at 0..59 s: silent for less than 60 s at each
+  ASSERT_TRUE(sc.submit(protection_cmd("ips", "thrust", {"5"})).accepted);  // heard at 0 s
+  ASSERT_TRUE(sc.submit(protection_cmd("adcs", "turn", {"asteroid"})).accepted);
+  run_steps(sc, 60);  // steps starting at 0..59 s: silent for less than 60 s at each
   EXPECT_FALSE(sc.safe_mode());
   EXPECT_EQ(sc.mode("ips"), "thrusting");
   EXPECT_EQ(sc.mode("adcs"), "turning");
   EXPECT_TRUE(sc.take_events().empty());
   EXPECT_DOUBLE_EQ(sc.telemetry().fault_protection.commander_silent_s, 60.0);
 
-  run(sc, 1);  // the step starting at 60 s safes first
+  run_steps(sc, 1);  // the step starting at 60 s safes first
   EXPECT_TRUE(sc.safe_mode());
   EXPECT_EQ(sc.mode("ips"), "standby");
   EXPECT_EQ(sc.mode("camera"), "off");
@@ -66,14 +66,14 @@ TEST(FaultProtectionTest, SafesWhenTheCommanderIsSilentForTheTimeout) {
             "asteroid stopped, attitude held");
   EXPECT_DOUBLE_EQ(events[0].time_s, 60.0);
 
-  run(sc, 100);  // safed once: no second safing while it lasts
+  run_steps(sc, 100);  // safed once: no second safing while it lasts
   EXPECT_TRUE(sc.take_events().empty());
   EXPECT_EQ(sc.telemetry().fault_protection.safings, 1u);
 }
 
 TEST(FaultProtectionTest, AHeartbeatEndsSafeModeAndCommandsAreCarriedOutAgain) {
   Spacecraft sc(spec_with_timeout(60));
-  run(sc, 61);  // nobody ever spoke: the start counts as the last sign
+  run_steps(sc, 61);  // nobody ever spoke: the start counts as the last sign
   ASSERT_TRUE(sc.safe_mode());
   EXPECT_EQ(sc.take_events().at(0).detail,
             "no command or heartbeat of executive for 60 s: camera off, attitude held");
@@ -87,18 +87,18 @@ TEST(FaultProtectionTest, AHeartbeatEndsSafeModeAndCommandsAreCarriedOutAgain) {
   EXPECT_DOUBLE_EQ(events[0].time_s, 61.0);
   EXPECT_FALSE(sc.telemetry().fault_protection.safe_mode);
   EXPECT_EQ(sc.telemetry().fault_protection.reason, "");
-  EXPECT_EQ(sc.telemetry().fault_protection.safings, 1u);  // the run's count stays
+  EXPECT_EQ(sc.telemetry().fault_protection.safings, 1u);  // the run_steps's count stays
 
-  ASSERT_TRUE(sc.submit(cmd("camera", "power_on")).accepted);
-  ASSERT_TRUE(sc.submit(cmd("ips", "thrust", {"3"})).accepted);
-  run(sc, 1);
+  ASSERT_TRUE(sc.submit(protection_cmd("camera", "power_on")).accepted);
+  ASSERT_TRUE(sc.submit(protection_cmd("ips", "thrust", {"3"})).accepted);
+  run_steps(sc, 1);
   EXPECT_EQ(sc.mode("camera"), "ready");
   EXPECT_EQ(sc.mode("ips"), "thrusting");
 
   // Silent again for the timeout (from the last command at 61 s): safed a second time.
-  run(sc, 59);
+  run_steps(sc, 59);
   EXPECT_FALSE(sc.safe_mode());
-  run(sc, 1);
+  run_steps(sc, 1);
   EXPECT_TRUE(sc.safe_mode());
   EXPECT_EQ(sc.telemetry().fault_protection.safings, 2u);
   EXPECT_EQ(sc.telemetry().fault_protection.safed_at_ns, 121'000'000'000);
@@ -106,25 +106,25 @@ TEST(FaultProtectionTest, AHeartbeatEndsSafeModeAndCommandsAreCarriedOutAgain) {
 
 TEST(FaultProtectionTest, ACommandEndsSafeModeAndIsCheckedAsAlways) {
   Spacecraft sc(spec_with_timeout(10));
-  run(sc, 11);
+  run_steps(sc, 11);
   ASSERT_TRUE(sc.safe_mode());
   (void)sc.take_events();
   // Even a rejected command shows that somebody is commanding.
-  EXPECT_EQ(sc.submit(cmd("camera", "take_image", {"star"}, "img-1")).reason,
+  EXPECT_EQ(sc.submit(protection_cmd("camera", "take_image", {"star"}, "img-1")).reason,
             "camera is off, not ready");
   EXPECT_FALSE(sc.safe_mode());
   const auto events = sc.take_events();
   ASSERT_EQ(events.size(), 1u);
   EXPECT_EQ(events[0].detail, "safe mode ended by command img-1 from test");
-  EXPECT_TRUE(sc.submit(cmd("ips", "thrust", {"2"})).accepted);
+  EXPECT_TRUE(sc.submit(protection_cmd("ips", "thrust", {"2"})).accepted);
   EXPECT_EQ(sc.mode("ips"), "thrusting");
 }
 
 TEST(FaultProtectionTest, SignsOfTheCommanderWithinTheTimeoutKeepItFromSafing) {
   Spacecraft sc(spec_with_timeout(60));
-  ASSERT_TRUE(sc.submit(cmd("ips", "thrust", {"5"})).accepted);
+  ASSERT_TRUE(sc.submit(protection_cmd("ips", "thrust", {"5"})).accepted);
   for (int i = 0; i < 20; ++i) {
-    run(sc, 59);
+    run_steps(sc, 59);
     sc.commander_heard("lockstep ack of executive/ds1");
   }
   EXPECT_FALSE(sc.safe_mode());
@@ -135,8 +135,8 @@ TEST(FaultProtectionTest, SignsOfTheCommanderWithinTheTimeoutKeepItFromSafing) {
 
 TEST(FaultProtectionTest, ATimeoutOfZeroSwitchesItOff) {
   Spacecraft sc(spec_with_timeout(0));
-  ASSERT_TRUE(sc.submit(cmd("ips", "thrust", {"5"})).accepted);
-  run(sc, 100000);
+  ASSERT_TRUE(sc.submit(protection_cmd("ips", "thrust", {"5"})).accepted);
+  run_steps(sc, 100000);
   EXPECT_FALSE(sc.safe_mode());
   EXPECT_EQ(sc.mode("ips"), "thrusting");
   EXPECT_DOUBLE_EQ(sc.telemetry().fault_protection.commander_timeout_s, 0.0);
@@ -145,9 +145,9 @@ TEST(FaultProtectionTest, ATimeoutOfZeroSwitchesItOff) {
 
 TEST(FaultProtectionTest, AnEngineStuckOnStaysOnAndTheEventSaysSo) {
   Spacecraft sc(spec_with_timeout(30));
-  ASSERT_TRUE(sc.submit(cmd("ips", "thrust", {"4"})).accepted);
+  ASSERT_TRUE(sc.submit(protection_cmd("ips", "thrust", {"4"})).accepted);
   ASSERT_TRUE(sc.inject({"stuck", FaultKind::StuckOn, "ips", 0, true, std::nullopt, ""}).accepted);
-  run(sc, 31);
+  run_steps(sc, 31);
   ASSERT_TRUE(sc.safe_mode());
   EXPECT_EQ(sc.mode("ips"), "thrusting");
   EXPECT_EQ(sc.take_events().at(0).detail,

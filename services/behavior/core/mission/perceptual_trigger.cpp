@@ -8,7 +8,7 @@ namespace autonomy::behavior {
 
 namespace {
 
-std::string number(double v) {
+std::string trigger_number(double v) {
   std::ostringstream s;
   s << v;
   return s.str();
@@ -25,8 +25,8 @@ class AtGoalTrigger final : public PerceptualTrigger {
     if (!c.goal) return std::nullopt;
     const double d = (*c.goal - c.perception.pose.position()).norm();
     if (!(d <= c.tolerance_m)) return std::nullopt;
-    return "at goal (" + number(c.goal->x()) + ", " + number(c.goal->y()) + ") within " +
-           number(c.tolerance_m) + " m";
+    return "at goal (" + trigger_number(c.goal->x()) + ", " + trigger_number(c.goal->y()) + ") within " +
+           trigger_number(c.tolerance_m) + " m";
   }
 };
 
@@ -36,11 +36,11 @@ class InAreaTrigger final : public PerceptualTrigger {
   std::optional<std::string> fires(const TriggerContext& c) const override {
     if (!area_.contains(c.perception.pose.position())) return std::nullopt;
     if (area_.shape == Area::Shape::Circle) {
-      return "in area: within " + number(area_.circle.radius) + " m of (" +
-             number(area_.circle.center.x()) + ", " + number(area_.circle.center.y()) + ")";
+      return "in area: within " + trigger_number(area_.circle.radius) + " m of (" +
+             trigger_number(area_.circle.center.x()) + ", " + trigger_number(area_.circle.center.y()) + ")";
     }
-    return "in area [" + number(area_.rect.min_x) + ", " + number(area_.rect.max_x) + "] x [" +
-           number(area_.rect.min_y) + ", " + number(area_.rect.max_y) + "]";
+    return "in area [" + trigger_number(area_.rect.min_x) + ", " + trigger_number(area_.rect.max_x) + "] x [" +
+           trigger_number(area_.rect.min_y) + ", " + trigger_number(area_.rect.max_y) + "]";
   }
 
  private:
@@ -90,7 +90,7 @@ class TimeoutTrigger final : public PerceptualTrigger {
     if (!(std::isfinite(seconds_) && seconds_ > 0.0) || !(c.time_in_state_s >= seconds_)) {
       return std::nullopt;
     }
-    return "timeout: " + number(seconds_) + " s in state";
+    return "timeout: " + trigger_number(seconds_) + " s in state";
   }
 
  private:

@@ -13,7 +13,7 @@ std::string where(const geometry::Vec2& p) {
   return s.str();
 }
 
-PathResult failure(PathStatus status, std::string reason) {
+PathResult grid_failure(PathStatus status, std::string reason) {
   PathResult r;
   r.status = status;
   r.reason = std::move(reason);
@@ -52,16 +52,16 @@ PathResult follow_field(const CostToGoField& field, const OccupancyGrid& grid,
   const auto& geo = field.geometry();
   const auto goal_cell = field.goal_cell();
   if (!goal_cell || grid.blocked(*goal_cell)) {
-    return failure(PathStatus::GoalBlocked,
+    return grid_failure(PathStatus::GoalBlocked,
                    "goal " + where(field.goal()) + " is outside the map or in an obstacle");
   }
   const auto start_cell = geo.cell_at(start.position());
   if (!start_cell || grid.blocked(*start_cell)) {
-    return failure(PathStatus::StartBlocked,
+    return grid_failure(PathStatus::StartBlocked,
                    "start " + where(start.position()) + " is outside the map or in an obstacle");
   }
   if (!field.reachable(*start_cell)) {
-    return failure(PathStatus::Unreachable, "no route from " + where(start.position()) + " to " +
+    return grid_failure(PathStatus::Unreachable, "no route from " + where(start.position()) + " to " +
                                                 where(field.goal()) + " on the map");
   }
   PathResult r;
@@ -78,7 +78,7 @@ PathResult follow_field(const CostToGoField& field, const OccupancyGrid& grid,
     c = {c.col + dc, c.row + dr};
   }
   if (c != *goal_cell)
-    return failure(PathStatus::Unreachable, "the field's walk did not reach the goal");
+    return grid_failure(PathStatus::Unreachable, "the field's walk did not reach the goal");
   r.poses.push_back({geo.centre(c).x(), geo.centre(c).y(), 0.0});
   r.poses.push_back({field.goal().x(), field.goal().y(), 0.0});
   set_headings(r.poses);
@@ -91,7 +91,7 @@ GridPathPlanner::GridPathPlanner(std::shared_ptr<const OccupancyGrid> grid)
     : grid_(std::move(grid)) {}
 
 PathResult GridPathPlanner::plan(const PathRequest& request) {
-  if (auto problem = request_problem(request)) return failure(PathStatus::InvalidRequest, *problem);
+  if (auto problem = request_problem(request)) return grid_failure(PathStatus::InvalidRequest, *problem);
   const CostToGoField field(*grid_, request.goal);
   auto r = follow_field(field, *grid_, request.start);
   if (r.found() && request.goal_heading) r.poses.back().theta = *request.goal_heading;

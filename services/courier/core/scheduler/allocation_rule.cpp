@@ -35,7 +35,7 @@ RouteCost simulate(const RouteSimulator& sim, int courier, const std::vector<Sto
   return out;
 }
 
-Objective minus(const Objective& a, const Objective& b) {
+Objective objective_minus(const Objective& a, const Objective& b) {
   return {a.late_jobs - b.late_jobs, a.lateness_s - b.lateness_s, a.completion_s - b.completion_s,
           a.travel_s - b.travel_s, a.interruptions - b.interruptions};
 }
@@ -128,7 +128,7 @@ std::vector<AllocationReason> explain_allocation(const SchedulingProblem& proble
       if (!inserted) continue;
       // The fleet's objective with the move, minus the schedule's: only the two routes change.
       const Objective d =
-          minus(mine_without.cost + inserted->cost, as_scheduled[mine].cost + as_scheduled[c].cost);
+          objective_minus(mine_without.cost + inserted->cost, as_scheduled[mine].cost + as_scheduled[c].cost);
       if (!best_difference || better(d, *best_difference)) {
         best_difference = d;
         r.alternative = static_cast<int>(c);

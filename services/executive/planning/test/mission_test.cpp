@@ -11,11 +11,11 @@
 namespace autonomy::executive {
 namespace {
 
-const std::string kExamples = PLANNER_EXAMPLES_DIR;
+const std::string kPlannerExamples = PLANNER_EXAMPLES_DIR;
 
 Mission ds1(const std::string& problem) {
   std::string error;
-  auto m = Mission::load(kExamples + "/ds1.model", kExamples + "/" + problem, &error);
+  auto m = Mission::load(kPlannerExamples + "/ds1.model", kPlannerExamples + "/" + problem, &error);
   EXPECT_TRUE(m) << error;
   return std::move(*m);
 }

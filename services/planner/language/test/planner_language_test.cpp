@@ -9,14 +9,14 @@
 namespace autonomy::planner {
 namespace {
 
-std::string slurp(const std::string& path) {
+std::string slurp_example(const std::string& path) {
   Diagnostics errors;
   return read_text_file(path, &errors).value_or("");
 }
 
 TEST(PlannerLanguage, TheCameraExampleReadsAsInThePaper) {
   Diagnostics errors;
-  auto pbm = parse_model(slurp(PLANNER_EXAMPLES_DIR "/camera.model"), "camera.model", &errors);
+  auto pbm = parse_model(slurp_example(PLANNER_EXAMPLES_DIR "/camera.model"), "camera.model", &errors);
   ASSERT_TRUE(pbm) << to_string(errors);
   auto model = build_domain_model(*pbm, &errors);
   ASSERT_TRUE(model) << to_string(errors);
@@ -38,7 +38,7 @@ TEST(PlannerLanguage, TheCameraExampleReadsAsInThePaper) {
   EXPECT_EQ(model->predicates[model->predicate("turning")].constraints.size(), 1u);
 
   auto pbp =
-      parse_problem(slurp(PLANNER_EXAMPLES_DIR "/camera.problem"), "camera.problem", &errors);
+      parse_problem(slurp_example(PLANNER_EXAMPLES_DIR "/camera.problem"), "camera.problem", &errors);
   ASSERT_TRUE(pbp) << to_string(errors);
   auto problem = build_problem(*model, *pbp, &errors);
   ASSERT_TRUE(problem) << to_string(errors);
@@ -117,7 +117,7 @@ TEST(PlannerLanguage, MistakesAreReportedAtFileLineColumn) {
 
 TEST(PlannerLanguage, ProblemMistakesNameTheStatement) {
   Diagnostics errors;
-  auto pbm = parse_model(slurp(PLANNER_EXAMPLES_DIR "/camera.model"), "camera.model", &errors);
+  auto pbm = parse_model(slurp_example(PLANNER_EXAMPLES_DIR "/camera.model"), "camera.model", &errors);
   auto model = build_domain_model(*pbm, &errors);
   ASSERT_TRUE(model);
   const char* cases[][2] = {
@@ -145,7 +145,7 @@ TEST(PlannerLanguage, ProblemMistakesNameTheStatement) {
 
 TEST(JobShop, Ft06ReadsIntoTimelinesAndGoals) {
   Diagnostics errors;
-  auto inst = parse_jobshop(slurp(JOBSHOP_DIR "/ft06"), "ft06", &errors);
+  auto inst = parse_jobshop(slurp_example(JOBSHOP_DIR "/ft06"), "ft06", &errors);
   ASSERT_TRUE(inst) << to_string(errors);
   EXPECT_EQ(inst->jobs, 6);
   EXPECT_EQ(inst->machines, 6);

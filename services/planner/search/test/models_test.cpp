@@ -19,14 +19,14 @@ namespace {
 
 const std::string kExamples = PLANNER_EXAMPLES_DIR;
 
-struct Loaded {
+struct LoadedModel {
   DomainModel model;
   PlanningProblem problem;
 };
 
 // Model and problem files as shipped; `extra` is appended to the problem (its lines follow
 // the file's, so conflicts keep naming the file's own lines).
-std::optional<Loaded> load(const std::string& model_name, const std::string& problem_name,
+std::optional<LoadedModel> load_model(const std::string& model_name, const std::string& problem_name,
                            const std::string& extra = "") {
   const std::string model_file = kExamples + "/" + model_name;
   const std::string problem_file = kExamples + "/" + problem_name;
@@ -45,7 +45,7 @@ std::optional<Loaded> load(const std::string& model_name, const std::string& pro
     ADD_FAILURE() << to_string(errors);
     return std::nullopt;
   }
-  return Loaded{*model, *problem};
+  return LoadedModel{*model, *problem};
 }
 
 // "file:line" of the first line of a shipped file that starts with `prefix`.
@@ -66,7 +66,7 @@ int line_count(const std::string& name) {
   return n;
 }
 
-PlanResult plan_with(const Loaded& c, const std::string& engine, std::size_t budget = 200000) {
+PlanResult plan_with(const LoadedModel& c, const std::string& engine, std::size_t budget = 200000) {
   PlanningOptions options;
   options.engine = engine;
   options.termination.max_decisions = budget;
@@ -110,7 +110,7 @@ bool engine_expected(const std::string& problem, const std::string& engine) {
 }
 
 TEST(ShippedModels, TheDs1DayIsPlannedWithEveryOutcomeTheModelPromises) {
-  auto c = load("ds1.model", "ds1-day.problem");
+  auto c = load_model("ds1.model", "ds1-day.problem");
   ASSERT_TRUE(c);
   std::size_t goals = 0;
   for (const FactDef& f : c->problem.facts) goals += !f.initial;
@@ -190,7 +190,7 @@ TEST(ShippedModels, TheDs1DayIsPlannedWithEveryOutcomeTheModelPromises) {
 }
 
 TEST(ShippedModels, TheRoverSamplesWhereItStandsAndTransmitsInPassesOnItsBattery) {
-  auto c = load("rover.model", "rover.problem");
+  auto c = load_model("rover.model", "rover.problem");
   ASSERT_TRUE(c);
   for (const std::string& engine : search_engine_names()) {
     PlanResult r = plan_with(*c, engine);
@@ -272,7 +272,7 @@ TEST(ShippedModels, JobShopFt06WithEveryEngine) {
 }
 
 TEST(ShippedModels, TheCameraWithEveryEngine) {
-  auto c = load("camera.model", "camera.problem");
+  auto c = load_model("camera.model", "camera.problem");
   ASSERT_TRUE(c);
   for (const std::string& engine : search_engine_names()) {
     PlanResult r = plan_with(*c, engine);
@@ -290,7 +290,7 @@ void expect_names(const std::string& explanation, const std::vector<std::string>
 TEST(ShippedModels, AnInfeasibleDs1DayNamesItsConflictingStatements) {
   // The first downlink (in the pass from 4800) cannot come before the first image (by 4800).
   const int relation_line = line_count("ds1-day.problem") + 1;
-  auto c = load("ds1.model", "ds1-day.problem", "down1 before nav1_1\n");
+  auto c = load_model("ds1.model", "ds1-day.problem", "down1 before nav1_1\n");
   ASSERT_TRUE(c);
   for (const std::string& engine : search_engine_names()) {
     PlanResult r = plan_with(*c, engine);
@@ -303,7 +303,7 @@ TEST(ShippedModels, AnInfeasibleDs1DayNamesItsConflictingStatements) {
 
 TEST(ShippedModels, AnInfeasibleRoverNamesItsConflictingStatements) {
   const int first = line_count("rover.problem") + 1;
-  auto c = load("rover.model", "rover.problem", "s1 before s2\ns2 before s1\n");
+  auto c = load_model("rover.model", "rover.problem", "s1 before s2\ns2 before s1\n");
   ASSERT_TRUE(c);
   PlanResult r = plan_with(*c, "chronological");
   EXPECT_EQ(r.status, PlanStatus::kInfeasible);

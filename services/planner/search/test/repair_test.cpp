@@ -15,12 +15,12 @@ namespace {
 
 using Choice = EngineOptions::Choice;
 
-struct Loaded {
+struct LoadedRepair {
   DomainModel model;
   PlanningProblem problem;
 };
 
-std::optional<Loaded> load_files(const std::string& model_name, const std::string& problem_text,
+std::optional<LoadedRepair> load_files(const std::string& model_name, const std::string& problem_text,
                                  const std::string& problem_file = "test.problem") {
   Diagnostics errors;
   const std::string model_file = std::string(PLANNER_EXAMPLES_DIR "/") + model_name;
@@ -33,10 +33,10 @@ std::optional<Loaded> load_files(const std::string& model_name, const std::strin
     ADD_FAILURE() << to_string(errors);
     return std::nullopt;
   }
-  return Loaded{*model, *problem};
+  return LoadedRepair{*model, *problem};
 }
 
-std::optional<Loaded> load_shipped(const std::string& model_name, const std::string& problem_name) {
+std::optional<LoadedRepair> load_shipped(const std::string& model_name, const std::string& problem_name) {
   Diagnostics errors;
   const std::string file = std::string(PLANNER_EXAMPLES_DIR "/") + problem_name;
   auto text = read_text_file(file, &errors);
@@ -47,7 +47,7 @@ std::optional<Loaded> load_shipped(const std::string& model_name, const std::str
   return load_files(model_name, *text, file);
 }
 
-std::optional<Loaded> load_jobshop(const std::string& name) {
+std::optional<LoadedRepair> load_jobshop(const std::string& name) {
   Diagnostics errors;
   const std::string file = std::string(PLANNER_EXAMPLES_DIR "/jobshop/") + name;
   auto text = read_text_file(file, &errors);
@@ -58,7 +58,7 @@ std::optional<Loaded> load_jobshop(const std::string& name) {
     ADD_FAILURE() << to_string(errors);
     return std::nullopt;
   }
-  return Loaded{*model, *problem};
+  return LoadedRepair{*model, *problem};
 }
 
 struct Recorded {
@@ -73,7 +73,7 @@ struct RepairRun {
   std::vector<Recorded> decisions;
 };
 
-RepairRun plan_by_repair(const Loaded& c, unsigned seed, std::size_t budget) {
+RepairRun plan_by_repair(const LoadedRepair& c, unsigned seed, std::size_t budget) {
   RepairRun run;
   PlanningOptions options;
   options.engine = "repair";
@@ -94,7 +94,7 @@ TEST(RepairEngine, PlansTheShippedModelsWithEverySeedAndTheValidatorAgrees) {
   auto ft06 = load_jobshop("ft06");
   ASSERT_TRUE(camera && rover && ft06);
   for (unsigned seed : {1u, 2u, 3u, 17u}) {
-    for (const Loaded* c : {&*camera, &*rover, &*ft06}) {
+    for (const LoadedRepair* c : {&*camera, &*rover, &*ft06}) {
       RepairRun run = plan_by_repair(*c, seed, 50000);
       ASSERT_TRUE(run.result.plan) << "seed " << seed << ": " << to_string(run.result.status);
       EXPECT_NE(run.result.status, PlanStatus::kInfeasible);

@@ -19,7 +19,7 @@ std::vector<geometry::Pose2> straight_path(double length) {
 }
 
 // A 10 x 6 m room split by a 0.2 m wall at x = 5 with a 1 m doorway at y in [2.5, 3.5].
-WorldMap walled_room() {
+WorldMap walled_room_map() {
   WorldMap w;
   w.width_m = 10.0;
   w.height_m = 6.0;
@@ -29,7 +29,7 @@ WorldMap walled_room() {
 
 TEST(PathFollower, DrivesAReedsSheppPathThroughTheDoorwayWithinTheLimits) {
   seed_ompl(11);
-  const WorldMap w = walled_room();
+  const WorldMap w = walled_room_map();
   const auto grid = std::make_shared<const OccupancyGrid>(w, 0.05, 0.35);
   OmplPlannerSettings s;
   s.turning_radius_m = 0.4;

@@ -61,11 +61,11 @@ Drive drive(const std::vector<geometry::Pose2>& path, geometry::Pose2 pose, Kine
   return d;
 }
 
-const MotionLimits kLimits{0.8, 1.5};
+const MotionLimits kPursuitLimits{0.8, 1.5};
 
 TEST(PurePursuit, ConvergesOnAStraightLineFromAnOffset) {
   const auto path = densify({{0, 0}, {6, 0}});
-  const auto d = drive(path, {0.0, 0.5, 0.0}, Kinematics::Unicycle, kLimits);
+  const auto d = drive(path, {0.0, 0.5, 0.0}, Kinematics::Unicycle, kPursuitLimits);
   EXPECT_TRUE(d.arrived);
   EXPECT_NEAR(d.end.x, 6.0, 0.1);
   EXPECT_NEAR(d.end.y, 0.0, 0.1);
@@ -75,7 +75,7 @@ TEST(PurePursuit, ConvergesOnAStraightLineFromAnOffset) {
 TEST(PurePursuit, FollowsAnLPathWithBothKinematics) {
   const auto path = densify({{0, 0}, {4, 0}, {4, 4}});
   for (Kinematics k : {Kinematics::Unicycle, Kinematics::Holonomic}) {
-    const auto d = drive(path, {0.0, 0.0, 0.0}, k, kLimits);
+    const auto d = drive(path, {0.0, 0.0, 0.0}, k, kPursuitLimits);
     EXPECT_TRUE(d.arrived);
     EXPECT_NEAR(d.end.x, 4.0, 0.1);
     EXPECT_NEAR(d.end.y, 4.0, 0.1);
@@ -85,16 +85,16 @@ TEST(PurePursuit, FollowsAnLPathWithBothKinematics) {
 
 TEST(PurePursuit, TurnsInPlaceWhenThePathIsBehind) {
   const auto path = densify({{0, 0}, {-3, 0}});
-  const auto step = pure_pursuit(path, 0, {0.0, 0.0, 0.0}, Kinematics::Unicycle, kLimits);
+  const auto step = pure_pursuit(path, 0, {0.0, 0.0, 0.0}, Kinematics::Unicycle, kPursuitLimits);
   EXPECT_EQ(step.command.vx, 0.0);
-  EXPECT_DOUBLE_EQ(std::abs(step.command.omega), kLimits.max_omega_rps);
+  EXPECT_DOUBLE_EQ(std::abs(step.command.omega), kPursuitLimits.max_omega_rps);
   EXPECT_FALSE(step.arrived);
 }
 
 TEST(PurePursuit, EmptyPathAndArrivalGiveZeroCommands) {
-  EXPECT_TRUE(pure_pursuit({}, 0, {}, Kinematics::Unicycle, kLimits).arrived);
+  EXPECT_TRUE(pure_pursuit({}, 0, {}, Kinematics::Unicycle, kPursuitLimits).arrived);
   const auto path = densify({{0, 0}, {1, 0}});
-  const auto step = pure_pursuit(path, 0, {1.0, 0.05, 0.0}, Kinematics::Unicycle, kLimits);
+  const auto step = pure_pursuit(path, 0, {1.0, 0.05, 0.0}, Kinematics::Unicycle, kPursuitLimits);
   EXPECT_TRUE(step.arrived);
   EXPECT_TRUE(step.command.is_zero());
 }
