@@ -24,6 +24,10 @@ class Equal final : public Procedure {
     return n.narrow(scope_[0], n.domain(scope_[1])) && n.narrow(scope_[1], a);
   }
   std::string name() const override { return "equal"; }
+  void differences(std::vector<DifferenceEdge>* out) const override {
+    out->push_back({scope_[0], scope_[1], 0});
+    out->push_back({scope_[1], scope_[0], 0});
+  }
 };
 
 class NotEqual final : public Procedure {
@@ -51,6 +55,9 @@ class LessEqual final : public Procedure {
            n.narrow_bounds(scope_[0], -HUGE_VAL, n.domain(scope_[1]).hi() - offset_);
   }
   std::string name() const override { return "less_equal"; }
+  void differences(std::vector<DifferenceEdge>* out) const override {
+    out->push_back({scope_[0], scope_[1], offset_});
+  }
 
  private:
   double offset_;

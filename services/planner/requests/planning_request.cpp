@@ -246,6 +246,9 @@ msg::PlanningReply run_planning(const msg::PlanningRequest& q, const PreparedRun
       break;
   }
   r.detail = result.explanation;
+  // Ended inside propagation: say what ended it and where.
+  if (result.status == PlanStatus::kOutOfBudget && !r.detail.empty())
+    r.detail = (cancelled ? "cancelled: " : "the time budget ended: ") + r.detail;
   if (r.status == msg::PlanningStatus::OutOfTime && r.detail.empty())
     r.detail = control.out_of_time() ? "the time budget ended"
                : q.max_decisions > 0 &&

@@ -39,8 +39,11 @@ PlanResult make_plan(const DomainModel& model, const PlanningProblem& problem,
     return result;
   }
   TokenNetwork net(model, problem);
+  // Propagation honours the budget and cancellation too (before any search starts, a model's
+  // parameter constraints can take long: issue 29).
+  net.set_stop(options.termination.stop);
   if (!net.initialize()) {
-    result.status = PlanStatus::kInfeasible;
+    result.status = net.interrupted() ? PlanStatus::kOutOfBudget : PlanStatus::kInfeasible;
     result.explanation = net.conflict();
     return result;
   }
@@ -51,6 +54,9 @@ PlanResult make_plan(const DomainModel& model, const PlanningProblem& problem,
   while (true) {
     SearchOutcome out = engine->solve(net, left);
     add(result.statistics, out.statistics);
+    // A propagation the stop condition cut short failed without proving anything.
+    if (out.status == SearchStatus::kExhausted && net.interrupted())
+      out.status = SearchStatus::kOutOfBudget;
     if (left.max_decisions != static_cast<std::size_t>(-1))
       left.max_decisions -= std::min(left.max_decisions, out.statistics.decisions);
     if (out.status != SearchStatus::kPlanFound) {

@@ -291,9 +291,28 @@ bool TokenNetwork::initialize() {
 bool TokenNetwork::propagate_constraints(const std::string& why) {
   for (int round = 0; round < 20; ++round) {
     PropagationResult r = cn_.propagate();
+    if (!r && r.interrupted) {
+      interrupted_ = true;
+      conflict_ = "stopped during parameter propagation (" + why + ")";
+      return false;
+    }
     if (!r) {
       conflict_ = "parameter constraints cannot hold (" + why + ")";
-      if (!r.failed_on_restrict) conflict_ += ": " + cn_.constraint(r.failed).name();
+      if (!r.cycle.empty()) {
+        // Name the relations of the cycle (parameter names): "a + 1 <= b, b + 1 <= a".
+        conflict_ += ": no values satisfy ";
+        std::vector<DifferenceEdge> edges;
+        for (ConstraintId c : r.cycle) cn_.constraint(c).differences(&edges);
+        for (std::size_t i = 0; i < edges.size(); ++i) {
+          std::ostringstream text;
+          text << (i ? ", " : "") << cn_.name(edges[i].a);
+          if (edges[i].offset != 0) text << " + " << edges[i].offset;
+          text << " <= " << cn_.name(edges[i].b);
+          conflict_ += text.str();
+        }
+      } else if (!r.failed_on_restrict) {
+        conflict_ += ": " + cn_.constraint(r.failed).name();
+      }
       return false;
     }
     bool changed = false;

@@ -135,6 +135,11 @@ class TokenNetwork {
 
   std::size_t decisions_applied() const { return decisions_; }
 
+  // Asked during parameter propagation (a deadline, a cancellation): true ends it as a failure
+  // that interrupted() marks, so that no search takes it for a proof.
+  void set_stop(std::function<bool()> stop) { cn_.set_stop(std::move(stop)); }
+  bool interrupted() const { return interrupted_; }
+
  private:
   TokenId new_token(std::size_t timeline, int predicate);
   bool setup_token(TokenId t, const std::string& why);
@@ -166,6 +171,7 @@ class TokenNetwork {
   TimepointId makespan_ = 0;
   std::string conflict_;
   std::size_t decisions_ = 0;
+  bool interrupted_ = false;
 };
 
 }  // namespace autonomy::planner

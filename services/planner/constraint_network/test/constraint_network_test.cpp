@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <functional>
 #include <random>
 
@@ -175,6 +176,67 @@ TEST(ConstraintProcedures, NeverRemoveAnAllowedValue) {
     }
   }
   EXPECT_GT(pruned, 0);
+}
+
+// a < b, b < a on a range of 2^52 (issue 29): bounds propagation alone would move each bound
+// by one per call; the cycle of differences is found after a few thousand calls instead, for
+// integers and reals, and through equalities.
+TEST(ConstraintNetwork, ACycleOfStrictInequalitiesIsFoundInsteadOfStepped) {
+  for (bool integer : {true, false}) {
+    for (bool through_equal : {false, true}) {
+      ConstraintNetwork n;
+      const double big = 4503599627370496.0;
+      auto domain = [&] { return integer ? Domain::integer(0, big) : Domain::real(0, big); };
+      VariableId a = n.add_variable(domain(), "a"), b = n.add_variable(domain(), "b");
+      VariableId c = n.add_variable(domain(), "c");
+      const double step = integer ? 1 : 1e-6;
+      ConstraintId ab = n.add_constraint(make_less_equal(a, b, step));
+      ConstraintId bc = n.add_constraint(through_equal ? make_equal(b, c)
+                                                       : make_less_equal(b, c, 0));
+      ConstraintId ca = n.add_constraint(make_less_equal(c, a, through_equal ? 0 : step));
+      auto m = n.mark();
+      PropagationResult r = n.propagate();
+      EXPECT_FALSE(r);
+      EXPECT_FALSE(r.interrupted);
+      std::vector<ConstraintId> cycle = r.cycle;
+      std::sort(cycle.begin(), cycle.end());
+      EXPECT_EQ(cycle, (std::vector<ConstraintId>{ab, bc, ca}));
+      EXPECT_LT(n.statistics().procedure_calls, 10000u);
+      n.undo_to(m);
+      EXPECT_EQ(n.domain(a).hi(), big);
+      EXPECT_EQ(n.domain(c).lo(), 0);
+    }
+  }
+  // A cycle whose offsets add up to 0 is satisfiable: propagation ends consistent.
+  ConstraintNetwork n;
+  VariableId a = n.add_variable(Domain::integer(0, 1e9)), b = n.add_variable(Domain::integer(5, 7));
+  n.add_constraint(make_less_equal(a, b, 0));
+  n.add_constraint(make_less_equal(b, a, 0));
+  ASSERT_TRUE(n.propagate());
+  EXPECT_EQ(n.domain(a).lo(), 5);
+  EXPECT_EQ(n.domain(a).hi(), 7);
+}
+
+// A propagation that steps without a cycle of differences (two linear equalities that cannot
+// both hold) ends when the stop condition says so, and its trail does not grow with its steps.
+TEST(ConstraintNetwork, StopEndsALongPropagationWhoseTrailStaysSmall) {
+  ConstraintNetwork n;
+  const double big = 1e12;
+  VariableId a = n.add_variable(Domain::integer(0, big)), b = n.add_variable(Domain::integer(0, big));
+  n.add_constraint(make_linear_equal({a, b}, {1, -1}, 1));   // a = b + 1
+  n.add_constraint(make_linear_equal({a, b}, {1, -1}, -1));  // a = b - 1
+  int asked = 0;
+  n.set_stop([&] { return ++asked > 100; });
+  auto m = n.mark();
+  PropagationResult r = n.propagate();
+  EXPECT_FALSE(r);
+  EXPECT_TRUE(r.interrupted);
+  EXPECT_EQ(asked, 101);
+  EXPECT_GT(n.statistics().narrowings, 20000u);
+  EXPECT_LE(n.mark().trail - m.trail, 2u);  // each variable trailed once since the mark
+  n.undo_to(m);
+  EXPECT_EQ(n.domain(a).lo(), 0);
+  EXPECT_EQ(n.domain(b).hi(), big);
 }
 
 }  // namespace

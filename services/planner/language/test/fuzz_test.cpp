@@ -173,7 +173,10 @@ TEST(ReaderFuzz, MutatedModelsAreReadOrRefusedWithTheirLocation) {
   for (const Pair& p : kExamples) {
     const std::string text = slurp(std::string(PLANNER_EXAMPLES_DIR "/") + p.model);
     const std::string problem_text = slurp(std::string(PLANNER_EXAMPLES_DIR "/") + p.problem);
-    for (const auto& [m, what] : mutations(text, seed++, 600)) {
+    Diagnostics problem_errors;
+    const auto pbp = parse_problem(problem_text, p.problem, &problem_errors);
+    ASSERT_TRUE(pbp) << to_string(problem_errors);
+    for (const auto& [m, what] : mutations(text, seed++, 400)) {
       ++cases;
       Diagnostics errors;
       auto pbm = parse_model(m, p.model, &errors);
@@ -186,9 +189,7 @@ TEST(ReaderFuzz, MutatedModelsAreReadOrRefusedWithTheirLocation) {
       ++read;
       EXPECT_TRUE(errors.empty()) << what;
       // The original problem against the changed model: its errors are the problem's lines.
-      Diagnostics problem_errors;
-      auto pbp = parse_problem(problem_text, p.problem, &problem_errors);
-      ASSERT_TRUE(pbp) << to_string(problem_errors);
+      problem_errors.clear();
       if (!build_problem(*model, *pbp, &problem_errors))
         expect_located(problem_errors, p.problem, problem_text, std::string(p.model) + ", " + what);
       if (HasFatalFailure()) return;

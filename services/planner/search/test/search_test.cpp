@@ -228,6 +228,39 @@ TEST(Search, TheDecisionBudgetStopsTheRun) {
   EXPECT_TRUE(stopped);
 }
 
+// Parameter propagation before any search (issue 29): `where a < b, b < a` on a range of 2^52
+// would step both bounds by one a call; the cycle is found and named at once. A constraint
+// loop that is no cycle of differences still steps, and the budget ends it inside propagation
+// (the stop condition here counts its own calls: deterministic, no clock).
+TEST(Search, PropagationFindsCyclesAndHonoursTheBudget) {
+  const std::string problem = "problem p\nhorizon 100\nobject o : C\ngoal o.x == p(_, _";
+  Loaded cycle = load_text(
+      "model m\npredicate p(a: int[0, 4503599627370495], b: int[0, 4503599627370495])"
+      " where a < b, b < a\nclass C { attribute x = p }\n",
+      problem + ")\n");
+  for (const std::string& engine : search_engine_names()) {
+    PlanningOptions options;
+    options.engine = engine;
+    PlanResult r = make_plan(cycle.model, cycle.problem, options);
+    EXPECT_EQ(r.status, PlanStatus::kInfeasible) << engine;
+    EXPECT_NE(r.explanation.find("no values satisfy a + 1 <= b, b + 1 <= a"), std::string::npos)
+        << r.explanation;
+  }
+  Loaded loop = load_text(
+      "model m\npredicate p(a: int[1, 4503599627370495], b: int[0, 4503599627370495],"
+      " c: int[0, 4503599627370495]) where a + 1 * b == c, c < b\n"
+      "class C { attribute x = p }\n",
+      problem + ", _)\n");
+  PlanningOptions options;
+  int asked = 0;
+  options.termination.stop = [&] { return ++asked > 1000; };
+  PlanResult r = make_plan(loop.model, loop.problem, options);
+  EXPECT_EQ(r.status, PlanStatus::kOutOfBudget) << r.explanation;
+  EXPECT_NE(r.explanation.find("stopped during parameter propagation"), std::string::npos)
+      << r.explanation;
+  EXPECT_EQ(asked, 1001);  // it stopped the first time the budget said so
+}
+
 // Job-shop instances as timelines: valid schedules, makespans against the known optimum.
 struct JobShopCase {
   const char* name;
