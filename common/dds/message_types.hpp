@@ -81,6 +81,7 @@ AUTONOMY_DDS_TYPE(msg::TeamDelivery, autonomy_TeamDelivery)
 AUTONOMY_DDS_TYPE(msg::DoorCommand, autonomy_DoorCommand)
 AUTONOMY_DDS_TYPE(msg::NavCancel, autonomy_NavCancel)
 AUTONOMY_DDS_TYPE(msg::MissionStatus, autonomy_MissionStatus)
+AUTONOMY_DDS_TYPE(msg::Itinerary, autonomy_Itinerary)
 // The office: load/unload requests and answers, object ground truth.
 AUTONOMY_DDS_TYPE(msg::HandoverRequest, autonomy_HandoverRequest)
 AUTONOMY_DDS_TYPE(msg::HandoverStatus, autonomy_HandoverStatus)

@@ -40,6 +40,8 @@ inline constexpr TopicSpec<msg::TeamDelivery> team_inbox{"autonomy/team/inbox", 
 inline constexpr TopicSpec<msg::DoorCommand> door_command{"autonomy/sim/door_command", QosClass::Command};
 inline constexpr TopicSpec<msg::NavCancel> nav_cancel{"autonomy/nav/cancel", QosClass::Command};
 inline constexpr TopicSpec<msg::MissionStatus> mission_status{"autonomy/mission/status", QosClass::State};
+// Fleet traffic (docs/traffic.md): each behavior's path with times, footprint and passage claim.
+inline constexpr TopicSpec<msg::Itinerary> itinerary{"autonomy/nav/itinerary", QosClass::State};
 // The office: robots ask the simulator to load and unload objects; where every object is (truth).
 inline constexpr TopicSpec<msg::HandoverRequest> handover_request{"autonomy/office/handover_request",
                                                                   QosClass::Request};
@@ -101,6 +103,7 @@ void for_each_topic(Visitor&& visit) {
   visit(door_command);
   visit(nav_cancel);
   visit(mission_status);
+  visit(itinerary);
   visit(handover_request);
   visit(handover_status);
   visit(truth_object);

@@ -2,6 +2,7 @@
 // C++ value types of idl/navigation.idl.
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace autonomy::msg {
 
@@ -39,6 +40,25 @@ struct MissionStatus {
   std::string reason;
   bool finished = false;
   int64_t tick = 0;
+};
+
+struct ItineraryPoint {
+  double x = 0.0, y = 0.0;
+  int64_t t_ns = 0;
+};
+
+// A robot's itinerary (docs/traffic.md); claim is "", "waiting" or "holding".
+struct Itinerary {
+  std::string robot_id;
+  int64_t tick = 0;
+  int64_t sim_time_ns = 0;
+  double radius = 0.0;
+  double x = 0.0, y = 0.0;
+  std::vector<ItineraryPoint> path;
+  std::string passage;
+  std::string claim;
+  int64_t request_time_ns = 0;
+  std::string waiting_for;
 };
 
 const char* to_string(GoalState s);

@@ -167,6 +167,11 @@ TEST(ConversionsTest, MissionStatusRoundTrip) {
   expect_round_trip(test::make_mission_status(Variant::Empty));
 }
 
+TEST(ConversionsTest, ItineraryRoundTrip) {
+  expect_round_trip(test::make_itinerary(Variant::Full));
+  expect_round_trip(test::make_itinerary(Variant::Empty));
+}
+
 TEST(ConversionsTest, WorldV2TypesRoundTrip) {
   for (const Variant v : {Variant::Full, Variant::Empty}) {
     expect_round_trip(test::make_range_scan(v));

@@ -206,6 +206,22 @@ inline msg::GoalStatus make_goal_status(Variant v) {
   m.robot_id = s(v, kUtf8A);
   m.goal_id = s(v, kUtf8B);
   m.state = msg::GoalState::Preempted;
+inline msg::Itinerary make_itinerary(Variant v) {
+  msg::Itinerary m;
+  m.robot_id = s(v, kUtf8A);
+  m.tick = 909;
+  m.sim_time_ns = 90'900'000'000;
+  m.radius = 0.3;
+  m.x = 1.25;
+  m.y = -2.5;
+  if (v == Variant::Full) m.path = {{1.0, 2.0, 91'000'000'000}, {3.5, 4.25, 92'000'000'000}};
+  m.passage = s(v, kUtf8B);
+  m.claim = s(v, kUtf8C);
+  m.request_time_ns = 90'000'000'000;
+  m.waiting_for = s(v, kUtf8A);
+  return m;
+}
+
   m.reason = s(v, kUtf8C);
   m.tick = 707;
   m.distance_to_goal = 6.125;
@@ -480,6 +496,12 @@ inline auto fields(const msg::GoalStatus& m) {
 
 inline auto fields(const msg::RangeScan& m) {
   return std::make_tuple(m.robot_id, m.tick, m.angle_min, m.angle_increment, m.max_range, m.ranges);
+}
+inline auto fields(const msg::Itinerary& m) {
+  std::vector<std::tuple<double, double, int64_t>> path;
+  for (const auto& p : m.path) path.emplace_back(p.x, p.y, p.t_ns);
+  return std::make_tuple(m.robot_id, m.tick, m.sim_time_ns, m.radius, m.x, m.y, path, m.passage, m.claim,
+                         m.request_time_ns, m.waiting_for);
 }
 inline auto fields(const msg::PoseEstimate& m) { return std::make_tuple(m.robot_id, m.tick, m.x, m.y, m.theta); }
 inline auto fields(const msg::DoorObservation& m) {

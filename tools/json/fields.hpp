@@ -366,6 +366,36 @@ struct Fields<msg::GoalStatus> {
 // --- Simulator world v2: perception, ground truth, radio, team messages, door commands ---------
 
 template <>
+struct Fields<msg::ItineraryPoint> {
+  static constexpr const char* name = "ItineraryPoint";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("x", m.x);
+    v.field("y", m.y);
+    v.field("t_ns", m.t_ns);
+  }
+};
+
+template <>
+struct Fields<msg::Itinerary> {
+  static constexpr const char* name = "Itinerary";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.key("robot_id", m.robot_id);
+    v.field("tick", m.tick);
+    v.field("sim_time_ns", m.sim_time_ns);
+    v.field("radius", m.radius);
+    v.field("x", m.x);
+    v.field("y", m.y);
+    v.field("path", m.path);
+    v.field("passage", m.passage);
+    v.field("claim", m.claim);
+    v.field("request_time_ns", m.request_time_ns);
+    v.field("waiting_for", m.waiting_for);
+  }
+};
+
+template <>
 struct Fields<msg::RangeScan> {
   static constexpr const char* name = "RangeScan";
   template <typename V, typename M>

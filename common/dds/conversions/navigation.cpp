@@ -54,4 +54,39 @@ msg::MissionStatus DdsType<msg::MissionStatus>::from_c(const C& in) {
           from_c_str(in.reason), in.finished, in.tick};
 }
 
+void DdsType<msg::Itinerary>::to_c(const msg::Itinerary& v, C& out, Arena& arena) {
+  out.robot_id = c_str(v.robot_id);
+  out.tick = v.tick;
+  out.sim_time_ns = v.sim_time_ns;
+  out.radius = v.radius;
+  out.x = v.x;
+  out.y = v.y;
+  const uint32_t n = static_cast<uint32_t>(v.path.size());
+  auto* points = arena.allocate<autonomy_ItineraryPoint>(n);
+  for (uint32_t i = 0; i < n; ++i) points[i] = {v.path[i].x, v.path[i].y, v.path[i].t_ns};
+  out.path = {n, n, points, false};
+  out.passage = c_str(v.passage);
+  out.claim = c_str(v.claim);
+  out.request_time_ns = v.request_time_ns;
+  out.waiting_for = c_str(v.waiting_for);
+}
+
+msg::Itinerary DdsType<msg::Itinerary>::from_c(const C& in) {
+  msg::Itinerary v;
+  v.robot_id = from_c_str(in.robot_id);
+  v.tick = in.tick;
+  v.sim_time_ns = in.sim_time_ns;
+  v.radius = in.radius;
+  v.x = in.x;
+  v.y = in.y;
+  v.path.reserve(in.path._length);
+  for (uint32_t i = 0; i < in.path._length; ++i)
+    v.path.push_back({in.path._buffer[i].x, in.path._buffer[i].y, in.path._buffer[i].t_ns});
+  v.passage = from_c_str(in.passage);
+  v.claim = from_c_str(in.claim);
+  v.request_time_ns = in.request_time_ns;
+  v.waiting_for = from_c_str(in.waiting_for);
+  return v;
+}
+
 }  // namespace autonomy::dds

@@ -148,6 +148,35 @@ void GoalTracker::note_resumed(std::string note) {
   if (pursued_ && status_ && status_->state == GoalState::Accepted) status_->reason = std::move(note);
 }
 
+GoalReport GoalTracker::wait(std::string why, double now_s) {
+  GoalReport report;
+  if (pursued_ && status_ && status_->state == GoalState::Active) {
+    pursued_->waiting = true;
+    pursued_->last_progress_s = now_s;
+    if (status_->reason != why) {
+      status_->reason = std::move(why);
+      report.changes.push_back(*status_);
+    }
+  }
+  report.current = status_;
+  return report;
+}
+
+GoalReport GoalTracker::proceed(double now_s) {
+  GoalReport report;
+  if (pursued_ && pursued_->waiting) {
+    pursued_->waiting = false;
+    pursued_->last_progress_s = now_s;
+    pursued_->best_remaining_m = std::numeric_limits<double>::infinity();  // it may have stepped aside
+    if (status_ && !status_->reason.empty()) {
+      status_->reason.clear();
+      report.changes.push_back(*status_);
+    }
+  }
+  report.current = status_;
+  return report;
+}
+
 GoalReport GoalTracker::cancel(const std::string& goal_id, std::string reason) {
   GoalReport report;
   if (pursued_ && (goal_id.empty() || goal_id == pursued_->id)) {
@@ -206,7 +235,9 @@ GoalReport GoalTracker::update(const geometry::Pose2& pose, double now_s, bool i
   }
 
   const double remaining = remaining_path_m(p, position);
-  if (remaining <= p.best_remaining_m - config_.min_progress_m ||
+  if (p.waiting) {
+    p.last_progress_s = now_s;  // waiting for a passage is no stall (wait() bounds it)
+  } else if (remaining <= p.best_remaining_m - config_.min_progress_m ||
       (std::isinf(p.best_remaining_m) && std::isfinite(remaining))) {
     p.best_remaining_m = remaining;
     p.last_progress_s = now_s;

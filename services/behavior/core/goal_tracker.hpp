@@ -99,6 +99,14 @@ class GoalTracker {
   // reason, saying so. Only while the pursued goal is still Accepted; otherwise nothing changes.
   void note_resumed(std::string note);
 
+  // The pursued goal waits for a narrow passage (traffic, docs/traffic.md): it is published Active
+  // again with `why` as its reason ("waiting for r2 to clear doorway A-114"; once per new reason),
+  // and waiting is no stall: the stall clock stands still until proceed(). Only while Active.
+  [[nodiscard]] GoalReport wait(std::string why, double now_s);
+  // The wait is over: Active again with an empty reason; progress is judged afresh from now.
+  [[nodiscard]] GoalReport proceed(double now_s);
+  bool waiting() const { return pursued_ && pursued_->waiting; }
+
   // Cancels the pursued goal when goal_id is empty or names it: [Cancelled]. Otherwise no change.
   [[nodiscard]] GoalReport cancel(const std::string& goal_id, std::string reason);
 
@@ -125,6 +133,7 @@ class GoalTracker {
     double best_remaining_m;  // least path cost seen so far (+inf before activation)
     double last_progress_s;   // when best_remaining_m last dropped by min_progress_m
     std::optional<double> collision_since_s;  // start of the current run of collisions
+    bool waiting = false;                     // wait(): the stall clock stands still
   };
 
   GoalReport rejected(const std::string& goal_id, const geometry::Vec2& goal, std::string reason);

@@ -102,6 +102,8 @@ BehaviorNode::BehaviorNode(service::Service& service, BehaviorNodeOptions option
     }
   });
 
+  if (!options_.mission && options_.traffic) open_traffic_topics();
+
   // The range scan: the mission's perception, and the avoid schema beside a planned path.
   const bool follows_paths = !options_.mission && options_.path.planner == GoToPlanner::Ompl;
   if (options_.mission || follows_paths) {
@@ -192,7 +194,7 @@ void BehaviorNode::on_states(std::vector<dds::Sample<msg::RobotState>> samples) 
   for (auto& s : samples) {
     if (!s.valid) continue;
     if (s.value.robot_id != options_.robot_id) {
-      if (options_.mission) teammate_states_[s.value.robot_id] = s.value;
+      if (options_.mission || options_.traffic) teammate_states_[s.value.robot_id] = s.value;
       continue;
     }
     if (!state_ || s.value.tick >= state_->tick) state_ = std::move(s.value);
@@ -251,6 +253,7 @@ void BehaviorNode::become_ready_when_possible() {
                  options_.path.ompl.turn_in_place_at_start ? ", turning in place at the start" : "");
   }
   spdlog::info("robot {} ready at ({:.2f}, {:.2f}) on map '{}'", options_.robot_id, st.x, st.y, map_->name);
+  if (options_.traffic) start_traffic(st.radius);
   service_.set_ready();
   // A journal with goals: the --goal was taken by an earlier run (respawned with the same flags).
   // A goal from the journal starts at the next tick (control_pending_tick).

@@ -41,6 +41,7 @@
 #include "services/behavior/core/path/ompl_path_planner.hpp"
 #include "services/behavior/core/path/path_follower.hpp"
 #include "services/behavior/core/plan_resource.hpp"
+#include "services/behavior/core/traffic/traffic_rule.hpp"
 #include "services/behavior/journal/behavior_journal.hpp"
 
 #include <chrono>
@@ -84,6 +85,11 @@ struct BehaviorNodeOptions {
   DoorKnowledgeSettings doors;           // goal mode: doors seen closed are planned around
   GoToPathOptions path;                  // goal mode: how go-to paths are planned and followed
   std::string journal_path;              // "": no journal (nothing survives the process)
+  // Goal mode: fleet traffic (docs/traffic.md): itineraries, reservations of narrow passages,
+  // robots that hold nothing planned around. Off: this robot ignores the others (and publishes
+  // no itinerary), as before issue 25.
+  bool traffic = true;
+  traffic::TrafficSettings traffic_rule;
 };
 
 class BehaviorNode {
@@ -126,6 +132,20 @@ class BehaviorNode {
   // The range rays that hit something the map does not have (map_obstacles_ filters).
   std::vector<RangeRay> range_rays() const;
   void update_map_obstacles();
+  // Fleet traffic (traffic_mode.cpp, docs/traffic.md), goal mode. traffic_step() decides this
+  // tick's claim and returns a command when the traffic rule drives instead of the goal (waiting
+  // at a holding point, stopped), nullopt to follow the goal as usual.
+  void open_traffic_topics();
+  void start_traffic(double radius_m);
+  std::optional<VelocityCommand> traffic_step(const geometry::Pose2& pose, double now_s);
+  std::vector<traffic::OtherRobot> other_robots(double now_s) const;
+  // Robots that hold nothing (no itinerary, a stale one, parked) near this one become obstacles
+  // of its plans; `force` adds one the traffic rule found in a passage. Replans when they changed.
+  void refresh_robot_obstacles(const geometry::Vec2& me, double now_s, const std::string& force = "");
+  // The map as this robot plans on it: the doors it knows of and the robots it plans around.
+  WorldMap planning_world() const;
+  std::string planning_closures() const;
+  void publish_itinerary(double now_s, int64_t tick);
   uint32_t control_mission(int64_t tick);
   Perception perceive() const;
   void publish(const GoalReport& report);
@@ -157,6 +177,35 @@ class BehaviorNode {
   // The map's obstacles (doors believed closed included) grown by a few centimetres: range hits
   // there are the map's own, already planned around; the avoid schema sees only the others.
   std::optional<OccupancyGrid> map_obstacles_;
+  // The tracker's grid as the OMPL planner holds it, copied once per grid (a copy per plan cost
+  // milliseconds on the recon map): a new grid has a new raster.
+  std::shared_ptr<const OccupancyGrid> path_grid_;
+
+  // Fleet traffic (goal mode, options_.traffic).
+  std::optional<traffic::TrafficRule> traffic_;
+  std::map<std::string, msg::Itinerary> itineraries_;  // the others', newest per robot
+  std::vector<geometry::Vec2> path_ahead_;             // this tick's path on the goal's field
+  traffic::TrafficDecision traffic_decision_;          // this tick's
+  struct Holding {
+    std::string blocker;
+    std::optional<geometry::Vec2> point;
+    std::optional<CostToGoField> field;
+  };
+  std::optional<Holding> holding_;                     // while waiting for a passage
+  struct RobotObstacle {
+    geometry::Vec2 position;
+    double radius = 0.0;
+    std::string why;  // "r2 (no itinerary for 3.0 s)"
+  };
+  std::map<std::string, RobotObstacle> robot_obstacles_;  // planned around now
+  std::set<std::string> forced_obstacles_;                // found in a passage by the rule
+  std::optional<double> traffic_since_s_;                 // sim time of the first traffic step
+  double last_itinerary_s_ = -1e18;
+  std::string last_itinerary_key_;                        // claim, passage, whom it waits for
+  double robot_radius_ = 0.0;
+  std::unique_ptr<dds::Topic<msg::Itinerary>> itinerary_topic_;
+  std::unique_ptr<dds::Reader<msg::Itinerary>> itinerary_reader_;
+  std::unique_ptr<dds::Writer<msg::Itinerary>> itinerary_writer_;
 
   std::unique_ptr<BehaviorJournal> journal_;
   std::vector<JournalledGoal> journalled_goals_;        // as found at start, resumed once ready

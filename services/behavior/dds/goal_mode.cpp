@@ -124,7 +124,7 @@ std::optional<CostToGoField> BehaviorNode::field_for(const geometry::Vec2& targe
                                                      std::string* error) const {
   const OccupancyGrid& grid = tracker_->grid();  // the obstacles and the doors known closed
   if (set.layers.empty()) return CostToGoField(grid, target);
-  const auto world = apply_constraints(doors_.apply(world_), set, options_.layers, error);
+  const auto world = apply_constraints(planning_world(), set, options_.layers, error);
   if (!world) return std::nullopt;
   const OccupancyGrid constrained(*world, grid.geometry().resolution_m(), grid.inflation_radius_m());
   return CostToGoField(constrained, target);
@@ -144,11 +144,10 @@ void BehaviorNode::update_door_knowledge(double now_s) {
   if (!doors_.update(sightings, now_s, world_)) return;
   if (follower_) update_map_obstacles();
   const std::vector<std::string> closed = doors_.closed();
-  const std::string closures = closed.empty() ? "" : describe_closed_doors(closed);
   spdlog::info("robot {}: {}; replanning", options_.robot_id, describe_closed_doors(closed));
   const OccupancyGrid& old = tracker_->grid();
-  tracker_->set_grid(OccupancyGrid(doors_.apply(world_), old.geometry().resolution_m(), old.inflation_radius_m()),
-                     closures);
+  tracker_->set_grid(OccupancyGrid(planning_world(), old.geometry().resolution_m(), old.inflation_radius_m()),
+                     planning_closures());
   const auto target = tracker_->target();
   if (!target || !pursued_constraints_) return;
   std::string error;
@@ -171,6 +170,13 @@ uint32_t BehaviorNode::control_goal(int64_t tick) {
   update_door_knowledge(now_s);
   publish(tracker_->update(pose, now_s, state_->in_collision));
 
+  // Fleet traffic: a narrow passage held by another robot, or robots to plan around.
+  const auto traffic_command = traffic_step(pose, now_s);
+  publish_itinerary(now_s, tick);
+  if (traffic_command && tracker_->active()) {
+    send_command(*traffic_command, tick);
+    return 1;
+  }
   if (tracker_->active() && follower_) {
     if (const auto command = follow_path(pose, now_s)) {
       send_command(*command, tick);

@@ -1,0 +1,246 @@
+// BehaviorNode in goal mode, fleet traffic (docs/traffic.md): this robot's itinerary out, the
+// others' in, the traffic rule's decision each tick (drive, wait at a holding point, give up),
+// and the robots that hold nothing (no itinerary, a stale one, parked) planned around. The rule
+// itself is services/behavior/core/traffic; this file only feeds it and carries out its decisions.
+#include "services/behavior/dds/behavior_node.hpp"
+
+#include "services/behavior/core/traffic/field_path.hpp"
+#include "services/behavior/core/traffic/holding_point.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace autonomy::behavior {
+
+namespace {
+
+constexpr double kItineraryLength_m = 10.0;    // how much of the path the itinerary shows
+constexpr double kItineraryPeriod_s = 0.5;     // written at least this often while ready
+constexpr double kObstacleRange_m = 6.0;       // robots that hold nothing are planned around within
+constexpr double kObstacleMoved_m = 0.25;      // a robot obstacle that moved this far is replanned
+constexpr double kHoldingTolerance_m = 0.15;
+
+std::string format_xy(const geometry::Vec2& p) {
+  char b[64];
+  std::snprintf(b, sizeof b, "(%.2f, %.2f)", p.x(), p.y());
+  return b;
+}
+
+}  // namespace
+
+void BehaviorNode::open_traffic_topics() {
+  const auto& p = service_.participant();
+  itinerary_topic_ = std::make_unique<dds::Topic<msg::Itinerary>>(p, dds::topics::itinerary);
+  itinerary_reader_ = std::make_unique<dds::Reader<msg::Itinerary>>(p, *itinerary_topic_);
+  itinerary_writer_ = std::make_unique<dds::Writer<msg::Itinerary>>(p, *itinerary_topic_);
+  service_.loop().on_samples<msg::Itinerary>(*itinerary_reader_, [this](auto samples) {
+    for (auto& s : samples) {
+      if (!s.valid || s.value.robot_id == options_.robot_id) continue;
+      auto& held = itineraries_[s.value.robot_id];
+      if (s.value.sim_time_ns >= held.sim_time_ns) held = std::move(s.value);
+    }
+  });
+}
+
+void BehaviorNode::start_traffic(double radius_m) {
+  robot_radius_ = radius_m;
+  traffic::PassageSettings ps;
+  ps.robot_radius_m = radius_m;
+  traffic_.emplace(traffic::narrow_passages(world_, ps), options_.robot_id, options_.traffic_rule);
+  std::string names;
+  for (const auto& p : traffic_->passages()) names += (names.empty() ? "" : ", ") + p.id;
+  spdlog::info("robot {}: traffic: {} narrow passages reserved one robot at a time{}{}", options_.robot_id,
+               traffic_->passages().size(), names.empty() ? "" : ": ", names);
+}
+
+std::vector<traffic::OtherRobot> BehaviorNode::other_robots(double now_s) const {
+  std::vector<traffic::OtherRobot> out;
+  for (const auto& [id, st] : teammate_states_) {
+    traffic::OtherRobot o;
+    o.id = id;
+    o.position = geometry::Vec2(st.x, st.y);
+    const auto it = itineraries_.find(id);
+    if (it != itineraries_.end()) {
+      const msg::Itinerary& i = it->second;
+      o.has_itinerary = true;
+      o.itinerary_age_s = now_s - static_cast<double>(i.sim_time_ns) * 1e-9;
+      o.has_path = !i.path.empty();
+      const auto state = traffic::claim_state_from(i.claim);
+      if (state && *state != traffic::ClaimState::None)
+        o.claim = {i.passage, *state, static_cast<double>(i.request_time_ns) * 1e-9};
+    } else if (traffic_since_s_ && now_s - *traffic_since_s_ <= options_.traffic_rule.itinerary_expiry_s) {
+      // Not heard of yet, just after this robot started: robots starting together publish
+      // within the expiry, so it is taken as one that drives until then.
+      o.has_itinerary = true;
+      o.has_path = true;
+    }
+    out.push_back(std::move(o));
+  }
+  return out;
+}
+
+WorldMap BehaviorNode::planning_world() const {
+  WorldMap w = doors_.apply(world_);
+  for (const auto& [id, o] : robot_obstacles_)
+    w.obstacles.push_back({o.position.x() - o.radius, o.position.y() - o.radius, o.position.x() + o.radius,
+                           o.position.y() + o.radius});
+  return w;
+}
+
+std::string BehaviorNode::planning_closures() const {
+  const std::vector<std::string> closed = doors_.closed();
+  std::string out = closed.empty() ? "" : describe_closed_doors(closed);
+  for (const auto& [id, o] : robot_obstacles_) out += (out.empty() ? "" : "; ") + o.why;
+  return out;
+}
+
+void BehaviorNode::refresh_robot_obstacles(const geometry::Vec2& me, double now_s, const std::string& force) {
+  if (!force.empty()) forced_obstacles_.insert(force);
+  const double expiry = options_.traffic_rule.itinerary_expiry_s;
+  std::map<std::string, RobotObstacle> now;
+  for (const auto& [id, st] : teammate_states_) {
+    const geometry::Vec2 p(st.x, st.y);
+    if ((p - me).norm() > kObstacleRange_m) continue;
+    const auto it = itineraries_.find(id);
+    // A robot never heard of counts from this robot's first traffic step: robots starting
+    // together publish within the expiry.
+    const double age = now_s - (it == itineraries_.end() ? *traffic_since_s_
+                                                         : static_cast<double>(it->second.sim_time_ns) * 1e-9);
+    std::string why;
+    if (it == itineraries_.end()) {
+      if (age <= expiry) continue;
+      why = id + " (no itinerary)";
+    } else if (age > expiry) {
+      char b[32];
+      std::snprintf(b, sizeof b, "%.1f s", age);
+      why = id + " (no itinerary for " + b + ")";
+    } else if (forced_obstacles_.count(id) && it->second.path.empty() && it->second.claim.empty()) {
+      why = id + " (parked)";
+    } else {
+      continue;  // it drives or waits by the rule: not an obstacle
+    }
+    std::string where;
+    for (const auto& q : traffic_->passages())
+      if (q.contains(p)) where = " in " + q.name;
+    now[id] = {p, st.radius, "robot " + why + " at " + format_xy(p) + where};
+  }
+  // A forced obstacle that drives again, or went away, is forgotten.
+  for (auto it = forced_obstacles_.begin(); it != forced_obstacles_.end();)
+    it = now.count(*it) ? std::next(it) : forced_obstacles_.erase(it);
+  bool changed = now.size() != robot_obstacles_.size();
+  for (const auto& [id, o] : now) {
+    const auto old = robot_obstacles_.find(id);
+    changed |= old == robot_obstacles_.end() || (old->second.position - o.position).norm() > kObstacleMoved_m;
+  }
+  if (!changed) return;
+  robot_obstacles_ = std::move(now);
+  spdlog::info("robot {}: planning around {}", options_.robot_id,
+               robot_obstacles_.empty() ? std::string("no robots") : planning_closures());
+  const OccupancyGrid& old = tracker_->grid();
+  tracker_->set_grid(OccupancyGrid(planning_world(), old.geometry().resolution_m(), old.inflation_radius_m()),
+                     planning_closures());
+  if (follower_) update_map_obstacles();
+  const auto target = tracker_->target();
+  if (!target || !pursued_constraints_) return;
+  std::string error;
+  auto field = field_for(target->goal, *pursued_constraints_, &error);
+  if (!field) {
+    spdlog::warn("goal {}: cannot replan around robots: {}", target->id, error);
+    return;
+  }
+  publish(tracker_->replan(std::move(*field), now_s));
+  if (follower_ && tracker_->active()) {
+    path_wanted_ = true;
+    plan_path("robots in the way changed");
+  }
+}
+
+std::optional<VelocityCommand> BehaviorNode::traffic_step(const geometry::Pose2& pose, double now_s) {
+  path_ahead_.clear();
+  traffic_decision_ = {};
+  if (!traffic_) return std::nullopt;
+  const geometry::Vec2 me = pose.position();
+  if (!traffic_since_s_) traffic_since_s_ = now_s;
+  refresh_robot_obstacles(me, now_s);
+  if (!tracker_->active()) {
+    traffic_->reset();
+    holding_.reset();
+    return std::nullopt;
+  }
+  path_ahead_ = traffic::field_path(*tracker_->field(), me, kItineraryLength_m);
+  traffic_decision_ = traffic_->decide(me, path_ahead_, other_robots(now_s), now_s);
+  const traffic::TrafficDecision& d = traffic_decision_;
+  switch (d.action) {
+    case traffic::TrafficAction::Drive:
+      if (tracker_->waiting()) {
+        spdlog::info("robot {}: {} granted", options_.robot_id, d.passage ? d.passage->name : std::string("passage"));
+        publish(tracker_->proceed(now_s));
+      }
+      holding_.reset();
+      return std::nullopt;
+    case traffic::TrafficAction::Wait: {
+      if (!tracker_->waiting()) spdlog::info("robot {}: {}", options_.robot_id, d.reason);
+      publish(tracker_->wait(d.reason, now_s));
+      if (!holding_ || holding_->blocker != d.blocker) {
+        holding_.emplace();
+        holding_->blocker = d.blocker;
+        std::vector<geometry::Vec2> keep_clear;
+        if (const auto it = itineraries_.find(d.blocker); it != itineraries_.end())
+          for (const auto& p : it->second.path) keep_clear.emplace_back(p.x, p.y);
+        holding_->point = traffic::holding_point(tracker_->grid(), me, *d.passage, traffic_->passages(), keep_clear);
+        if (holding_->point) holding_->field.emplace(tracker_->grid(), *holding_->point);
+      }
+      if (!holding_->field) return VelocityCommand{};
+      return controller_->command(pose, *holding_->field, kHoldingTolerance_m).command;
+    }
+    case traffic::TrafficAction::Obstacle:
+      spdlog::info("robot {}: {}; planning around it", options_.robot_id, d.reason);
+      refresh_robot_obstacles(me, now_s, d.blocker);
+      holding_.reset();
+      return VelocityCommand{};
+    case traffic::TrafficAction::GiveUp:
+      publish(tracker_->block(d.reason));
+      holding_.reset();
+      return VelocityCommand{};
+  }
+  return std::nullopt;
+}
+
+void BehaviorNode::publish_itinerary(double now_s, int64_t tick) {
+  if (!traffic_ || !itinerary_writer_ || !state_) return;
+  const traffic::Claim& c = traffic_->claim();
+  const std::string key = std::string(traffic::to_string(c.state)) + "|" + c.passage + "|" + traffic_decision_.blocker;
+  if (key == last_itinerary_key_ && now_s - last_itinerary_s_ < kItineraryPeriod_s) return;
+  msg::Itinerary it;
+  it.robot_id = options_.robot_id;
+  it.tick = tick;
+  it.sim_time_ns = state_->sim_time_ns;
+  it.radius = robot_radius_;
+  it.x = state_->x;
+  it.y = state_->y;
+  // Expected times at full speed from now; a waiting robot shows where it waits.
+  geometry::Vec2 prev(state_->x, state_->y);
+  double t = now_s;
+  const double speed = std::max(state_->max_speed, 1e-3);
+  std::vector<geometry::Vec2> points = path_ahead_;
+  if (tracker_ && tracker_->waiting()) {
+    points.clear();
+    if (holding_ && holding_->point) points.push_back(*holding_->point);
+  }
+  for (const geometry::Vec2& p : points) {
+    t += (p - prev).norm() / speed;
+    prev = p;
+    it.path.push_back({p.x(), p.y(), static_cast<int64_t>(std::llround(t * 1e9))});
+  }
+  it.passage = c.passage;
+  it.claim = traffic::to_string(c.state);
+  it.request_time_ns = static_cast<int64_t>(std::llround(c.request_time_s * 1e9));
+  it.waiting_for = traffic_decision_.action == traffic::TrafficAction::Wait ? traffic_decision_.blocker : "";
+  itinerary_writer_->write(it);
+  last_itinerary_s_ = now_s;
+  last_itinerary_key_ = key;
+}
+
+}  // namespace autonomy::behavior
