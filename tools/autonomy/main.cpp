@@ -26,13 +26,15 @@ int main(int argc, char** argv) {
   node->require_subcommand(1);
   auto* courier = app.add_subcommand("courier", "The courier service: send, jobs, cancel; knowledge (what it learned)");
   courier->require_subcommand(1);
+  auto* bag = app.add_subcommand("bag", "Recordings (MCAP): info");
+  bag->require_subcommand(1);
 
   const std::vector<Command> commands = {add_topic_list(*topic), add_topic_echo(*topic), add_topic_hz(*topic),
                                          add_topic_pub(*topic),  add_node_list(*node),   add_node_wait(*node),
                                          add_node_watch(*node),
                                          add_courier_send(*courier), add_courier_jobs(*courier),
                                          add_courier_cancel(*courier), add_courier_knowledge(*courier),
-                                         add_plan(app)};
+                                         add_plan(app), add_record(app), add_play(app), add_bag_info(*bag)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,16 @@
+# Writes OUT, a C++ file holding the text of each IDL file in FILES (cmake -P script, run at
+# build time): the recorder embeds a topic type's IDL as its MCAP schema.
+set(_body "// Generated from idl/*.idl by tools/recording/embed_idl.cmake: do not edit.\n#include \"tools/recording/idl_text.hpp\"\n\nnamespace autonomy::recording {\n\nconst std::vector<IdlFile>& idl_files() {\n  static const std::vector<IdlFile> files = {\n")
+string(REPLACE "|" ";" FILES "${FILES}")
+foreach(_f ${FILES})
+  file(READ "${_f}" _text)
+  get_filename_component(_name "${_f}" NAME)
+  string(FIND "${_text}" ")autonomy_idl\"" _clash)
+  if(NOT _clash EQUAL -1)
+    message(FATAL_ERROR "${_f} contains the raw string delimiter )autonomy_idl\"")
+  endif()
+  string(APPEND _body "      {\"${_name}\", R\"autonomy_idl(${_text})autonomy_idl\"},\n")
+endforeach()
+string(APPEND _body "  };\n  return files;\n}\n\n}  // namespace autonomy::recording\n")
+file(WRITE "${OUT}.tmp" "${_body}")
+execute_process(COMMAND ${CMAKE_COMMAND} -E copy_if_different "${OUT}.tmp" "${OUT}")
