@@ -146,6 +146,8 @@ class BehaviorNode {
   WorldMap planning_world() const;
   std::string planning_closures() const;
   void publish_itinerary(double now_s, int64_t tick);
+  // The command, without its translation when it drives into a robot close ahead (traffic/brake.hpp).
+  VelocityCommand brake_for_robots(const geometry::Pose2& pose, const VelocityCommand& command) const;
   uint32_t control_mission(int64_t tick);
   Perception perceive() const;
   void publish(const GoalReport& report);
@@ -196,6 +198,7 @@ class BehaviorNode {
     geometry::Vec2 position;
     double radius = 0.0;
     std::string why;  // "r2 (no itinerary for 3.0 s)"
+    bool soft = false;  // a waiting robot: dropped when it leaves no route
   };
   std::map<std::string, RobotObstacle> robot_obstacles_;  // planned around now
   std::set<std::string> forced_obstacles_;                // found in a passage by the rule

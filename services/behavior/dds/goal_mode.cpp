@@ -174,18 +174,18 @@ uint32_t BehaviorNode::control_goal(int64_t tick) {
   const auto traffic_command = traffic_step(pose, now_s);
   publish_itinerary(now_s, tick);
   if (traffic_command && tracker_->active()) {
-    send_command(*traffic_command, tick);
+    send_command(brake_for_robots(pose, *traffic_command), tick);
     return 1;
   }
   if (tracker_->active() && follower_) {
     if (const auto command = follow_path(pose, now_s)) {
-      send_command(*command, tick);
+      send_command(brake_for_robots(pose, *command), tick);
       return 1;
     }
   }
   if (tracker_->active()) {
     const GoToDecision decision = controller_->command(pose, *tracker_->field(), tracker_->tolerance_m());
-    send_command(decision.command, tick);
+    send_command(brake_for_robots(pose, decision.command), tick);
     return 1;
   }
   if (follower_) follower_->clear();

@@ -4,6 +4,7 @@
 // itself is services/behavior/core/traffic; this file only feeds it and carries out its decisions.
 #include "services/behavior/dds/behavior_node.hpp"
 
+#include "services/behavior/core/traffic/brake.hpp"
 #include "services/behavior/core/traffic/field_path.hpp"
 #include "services/behavior/core/traffic/holding_point.hpp"
 
@@ -118,13 +119,15 @@ void BehaviorNode::refresh_robot_obstacles(const geometry::Vec2& me, double now_
       why = id + " (no itinerary for " + b + ")";
     } else if (forced_obstacles_.count(id) && it->second.path.empty() && it->second.claim.empty()) {
       why = id + " (parked)";
+    } else if (it->second.claim == "waiting" && it->second.path.size() <= 1) {
+      why = id + " (waiting)";  // soft: planned around only while a route is left beside it
     } else {
       continue;  // it drives or waits by the rule: not an obstacle
     }
     std::string where;
     for (const auto& q : traffic_->passages())
       if (q.contains(p)) where = " in " + q.name;
-    now[id] = {p, st.radius, "robot " + why + " at " + format_xy(p) + where};
+    now[id] = {p, st.radius, "robot " + why + " at " + format_xy(p) + where, why == id + " (waiting)"};
   }
   // A forced obstacle that drives again, or went away, is forgotten.
   for (auto it = forced_obstacles_.begin(); it != forced_obstacles_.end();)
@@ -149,6 +152,21 @@ void BehaviorNode::refresh_robot_obstacles(const geometry::Vec2& me, double now_
   if (!field) {
     spdlog::warn("goal {}: cannot replan around robots: {}", target->id, error);
     return;
+  }
+  const auto routed = [&](const CostToGoField& f) {
+    return std::isfinite(f.cost_at(me)) ||
+           f.nearest_reachable(me, tracker_->config().route_search_radius_m).has_value();
+  };
+  bool soft = false;
+  for (const auto& [id, o] : robot_obstacles_) soft |= o.soft;
+  if (soft && !routed(*field)) {
+    // Waiting robots leave no way past: they will move, so they are not planned around.
+    for (auto it = robot_obstacles_.begin(); it != robot_obstacles_.end();)
+      it = it->second.soft ? robot_obstacles_.erase(it) : std::next(it);
+    tracker_->set_grid(OccupancyGrid(planning_world(), old.geometry().resolution_m(), old.inflation_radius_m()),
+                       planning_closures());
+    field = field_for(target->goal, *pursued_constraints_, &error);
+    if (!field) return;
   }
   publish(tracker_->replan(std::move(*field), now_s));
   if (follower_ && tracker_->active()) {
@@ -206,6 +224,13 @@ std::optional<VelocityCommand> BehaviorNode::traffic_step(const geometry::Pose2&
       return VelocityCommand{};
   }
   return std::nullopt;
+}
+
+VelocityCommand BehaviorNode::brake_for_robots(const geometry::Pose2& pose, const VelocityCommand& command) const {
+  if (!traffic_) return command;
+  std::vector<traffic::Disc> near;
+  for (const auto& [id, st] : teammate_states_) near.push_back({geometry::Vec2(st.x, st.y), st.radius});
+  return traffic::brake_for_robots(pose, controller_->kinematics(), robot_radius_, command, near);
 }
 
 void BehaviorNode::publish_itinerary(double now_s, int64_t tick) {

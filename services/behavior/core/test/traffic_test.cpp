@@ -2,6 +2,7 @@
 // total order among claims, waiting outside, obstacles, the wait bound, holding points and the
 // path a field drives.
 #include "services/behavior/core/goal_tracker.hpp"
+#include "services/behavior/core/traffic/brake.hpp"
 #include "services/behavior/core/traffic/field_path.hpp"
 #include "services/behavior/core/traffic/holding_point.hpp"
 #include "services/behavior/core/traffic/passage.hpp"
@@ -200,6 +201,21 @@ TEST(HoldingPointTest, WaitsOutsideEveryBoxOffTheOtherPath) {
   for (const auto& p : their_path) EXPECT_GE((p - *h).norm(), 0.7);
   EXPECT_LT(h->y(), 4.9);  // on this robot's side of the wall
   EXPECT_FALSE(holding_point(grid, Vec2(1, 5), all[0], all, their_path));  // in the wall
+}
+
+TEST(BrakeTest, NoDrivingIntoARobotCloserThanTheGap) {
+  const geometry::Pose2 east{0, 0, 0};
+  const VelocityCommand forward{0.9, 0.0, 0.3};
+  const std::vector<Disc> ahead{{Vec2(0.7, 0.0), 0.3}};  // 0.1 m between the discs
+  auto c = brake_for_robots(east, Kinematics::Unicycle, 0.3, forward, ahead);
+  EXPECT_EQ(c.vx, 0.0);
+  EXPECT_EQ(c.omega, 0.3);  // turning in place stays allowed
+  // Behind, or far enough: the command stands.
+  EXPECT_EQ(brake_for_robots(east, Kinematics::Unicycle, 0.3, forward, {{Vec2(-0.7, 0.0), 0.3}}).vx, 0.9);
+  EXPECT_EQ(brake_for_robots(east, Kinematics::Unicycle, 0.3, forward, {{Vec2(1.0, 0.0), 0.3}}).vx, 0.9);
+  // Holonomic: the world-frame velocity counts, not the heading.
+  EXPECT_EQ(brake_for_robots(east, Kinematics::Holonomic, 0.3, {0.0, 0.5, 0.0}, {{Vec2(0.0, 0.7), 0.3}}).vy, 0.0);
+  EXPECT_EQ(brake_for_robots(east, Kinematics::Holonomic, 0.3, {0.0, -0.5, 0.0}, {{Vec2(0.0, 0.7), 0.3}}).vy, -0.5);
 }
 
 TEST(GoalTrackerWaitTest, WaitingIsPublishedOnceAndIsNoStall) {

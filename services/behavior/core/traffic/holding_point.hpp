@@ -15,7 +15,8 @@ namespace autonomy::behavior::traffic {
 struct HoldingSettings {
   double search_m = 4.0;       // > 0: candidates within this path distance of the robot
   double prefer_gap_m = 1.5;   // > 0: distance from the passage worth walking for (capped there)
-  double keep_clear_m = 0.7;   // >= 0: centre distance to keep from the other robot's path
+  double keep_clear_m = 0.9;   // >= 0: centre distance to keep from the other robot's path
+                               // (two 0.3 m discs and more than the brake's 0.2 m gap)
 };
 
 // nullopt when the robot's own cell has no route (it sits in an obstacle's margin) or no cell
