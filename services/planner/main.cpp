@@ -27,6 +27,15 @@ int main(int argc, char** argv) {
                        "Requests that may wait while one is planned (more are answered busy)")
             ->check(CLI::Range(0, 1000))
             ->capture_default_str();
+        app.add_option("--workers", options.workers,
+                       "Requests planned at once, each on its own thread")
+            ->check(CLI::Range(1, 64))
+            ->capture_default_str();
+        app.add_option("--margin-ms", options.margin_ms,
+                       "A running request not answered by its budget plus this is answered "
+                       "out_of_time (its search is cancelled)")
+            ->check(CLI::Range(std::int64_t{10}, std::int64_t{600000}))
+            ->capture_default_str();
       },
       [&](service::Service& service) {
         return std::make_unique<planner::PlannerNode>(service, options);

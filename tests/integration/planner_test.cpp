@@ -2,7 +2,7 @@
 // process) and from the `autonomy plan` CLI, over Cyclone DDS on loopback. Every plan that comes
 // back goes through the plan validator here, on the test's own parse of the model and problem.
 //
-// One DDS domain per test (ctest runs them in parallel); this file uses 170-176 only:
+// One DDS domain per test (ctest runs them in parallel); this file uses 170-178 only:
 //
 //   domain  test
 //   ------  -----------------------------------------------------------------
@@ -13,6 +13,8 @@
 //    174    PlannerTest.AnExhaustedBudgetIsAnsweredOutOfTimeWithTheBestPlanSoFar
 //    175    PlannerTest.ALateJoiningReaderGetsTheLatestPlan
 //    176    PlannerTest.TheCliPlansFilesAndJobShops
+//    177    PlannerTest.AModelThatPropagatesForeverHoldsUpNoOtherClient
+//    178    PlannerTest.ARequestWaitingBehindAnotherIsAnsweredAtItsOwnDeadline
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -238,7 +240,7 @@ TEST_F(PlannerTest, BadRequestsGetReasonsAndTheNextGoodOneIsServed) {
 }
 
 TEST_F(PlannerTest, CancellingALongSearchEndsItWithTheBestPlanSoFar) {
-  start_planner(173);
+  start_planner(173, {"--workers", "1"});  // one search at a time: the others queue
   // la01 is not proved optimal within minutes: it runs until cancelled.
   msg::PlanningRequest la01 = jobshop_request("la01", "la01");
   la01.budget_ms = 600000;
@@ -360,6 +362,81 @@ TEST_F(PlannerTest, TheCliPlansFilesAndJobShops) {
   EXPECT_EQ(bcode, 2) << bout;
   EXPECT_NE(bout.find("status: rejected (parse_error)"), std::string::npos) << bout;
   EXPECT_NE(bout.find(bad + ":2:27:"), std::string::npos) << bout;
+}
+
+// A model whose parameter propagation steps through a range of 10^12 without a cycle of
+// differences (issue 29): only the budget ends it.
+msg::PlanningRequest endless_request(const std::string& id, std::int64_t budget_ms) {
+  msg::PlanningRequest q;
+  q.request_id = id;
+  q.requester = "test";
+  q.model_file = "endless.model";
+  q.model_text =
+      "model endless\npredicate p(a: int[1, 1000000000000], b: int[0, 1000000000000],"
+      " c: int[0, 1000000000000]) where a + 1 * b == c, c < b\n"
+      "class C { attribute x = p }\n";
+  q.problem_file = "endless.problem";
+  q.problem_text = "problem one\nhorizon 100\nobject o : C\ngoal o.x == p(_, _, _)\n";
+  q.budget_ms = budget_ms;
+  return q;
+}
+
+TEST_F(PlannerTest, AModelThatPropagatesForeverHoldsUpNoOtherClient) {
+  start_planner(177);  // two workers (the default)
+  send(endless_request("endless-long", 60000));
+  ASSERT_TRUE(await("the planner took it", [&] {
+    return read_file(dir().file("planner-main.log")).find("endless-long from test") !=
+           std::string::npos;
+  }));
+  // Another client (the CLI, its own process) with an ordinary request and a short budget: had
+  // it waited behind the endless one, its budget would have ended in the queue.
+  ChildProcess& cli = start("plan-camera", AUTONOMY_AUTONOMY_BIN,
+                            {"plan", kExamples + "/camera.model", kExamples + "/camera.problem",
+                             "--budget-ms", "3000", "--domain", std::to_string(domain_)},
+                            false);
+  const auto status = cli.wait_for_exit(60s);
+  ASSERT_TRUE(status && status->exited) << read_file(cli.log_file());
+  EXPECT_EQ(status->code, 0) << read_file(cli.log_file());
+  EXPECT_NE(read_file(cli.log_file()).find("status: plan_found"), std::string::npos)
+      << read_file(cli.log_file());
+  replies_->poll();
+  EXPECT_TRUE(replies_to("endless-long").empty());  // still propagating
+  cancel("endless-long");
+  const msg::PlanningReply c = reply_to("endless-long");
+  EXPECT_EQ(c.status, msg::PlanningStatus::Cancelled);
+  EXPECT_EQ(c.detail, "cancelled: stopped during parameter propagation (the problem's parameters)");
+
+  // The budget ends the propagation: answered out_of_time, saying where it stopped.
+  send(endless_request("endless", 1000));
+  const msg::PlanningReply r = reply_to("endless");
+  EXPECT_EQ(r.status, msg::PlanningStatus::OutOfTime) << r.reason << ": " << r.detail;
+  EXPECT_EQ(r.detail,
+            "the time budget ended: stopped during parameter propagation (the problem's "
+            "parameters)");
+  EXPECT_FALSE(r.has_plan);
+  EXPECT_GE(r.statistics.elapsed_ms, 1000);
+}
+
+TEST_F(PlannerTest, ARequestWaitingBehindAnotherIsAnsweredAtItsOwnDeadline) {
+  start_planner(178, {"--workers", "1"});
+  send(endless_request("endless", 4000));
+  ASSERT_TRUE(await("the planner took it", [&] {
+    return read_file(dir().file("planner-main.log")).find("endless from test") !=
+           std::string::npos;
+  }));
+  msg::PlanningRequest camera = camera_request("camera-waits");
+  camera.budget_ms = 500;
+  send(camera);
+  const msg::PlanningReply w = reply_to("camera-waits");
+  EXPECT_EQ(w.status, msg::PlanningStatus::OutOfTime) << w.reason << ": " << w.detail;
+  EXPECT_NE(w.detail.find("waited for a worker"), std::string::npos) << w.detail;
+  EXPECT_FALSE(w.has_plan);
+  EXPECT_TRUE(replies_to("endless").empty());  // answered before the one it waited behind
+  const msg::PlanningReply r = reply_to("endless");
+  EXPECT_EQ(r.status, msg::PlanningStatus::OutOfTime) << r.reason << ": " << r.detail;
+  // The worker is free again: the next request is planned.
+  send(camera_request("camera-next"));
+  EXPECT_EQ(reply_to("camera-next").status, msg::PlanningStatus::PlanFound);
 }
 
 }  // namespace

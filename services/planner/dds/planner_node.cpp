@@ -2,6 +2,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <chrono>
 
 #include "common/msg/text_limits.hpp"
@@ -27,11 +28,18 @@ PlannerNode::PlannerNode(service::Service& service, PlannerNodeOptions options)
   loop.on_samples<msg::PlanningCancel>(cancel_reader_,
                                        [this](auto samples) { on_cancels(std::move(samples)); });
   loop.on_condition(outbox_ready_.handle(), [this] { on_worker_output(); });
-  worker_ = std::thread([this] { work(); });
+  loop.every(std::chrono::milliseconds(20), [this] { enforce_deadlines(); });
+  options_.workers = std::max<std::size_t>(1, options_.workers);
+  for (std::size_t i = 0; i < options_.workers; ++i) {
+    workers_.push_back(std::make_unique<Worker>());
+    Worker& w = *workers_.back();
+    w.thread = std::thread([this, &w] { work(w); });
+  }
   spdlog::info(
-      "planning requests on {}; default budget {} ms, at most {} ms; up to {} waiting requests",
+      "planning requests on {}; default budget {} ms, at most {} ms; {} workers, up to {} "
+      "waiting requests",
       dds::topics::planner_request.name, options_.default_budget_ms, options_.limits.max_budget_ms,
-      options_.max_queue);
+      options_.workers, options_.max_queue);
   service.set_ready();
 }
 
@@ -39,10 +47,11 @@ PlannerNode::~PlannerNode() {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     stopping_ = true;
-    cancel_ = true;
+    for (auto& w : workers_) w->cancel = true;
   }
   wake_.notify_all();
-  if (worker_.joinable()) worker_.join();
+  for (auto& w : workers_)
+    if (w->thread.joinable()) w->thread.join();
   // The loop has stopped: answer here what the worker finished (its search was cancelled) and
   // what still waited, so that no requester waits for a reply that never comes.
   try {
@@ -50,9 +59,9 @@ PlannerNode::~PlannerNode() {
     items.swap(outbox_);
     for (const Outgoing& item : items)
       if (const auto* r = std::get_if<msg::PlanningReply>(&item)) reply_writer_.write(*r);
-    for (const msg::PlanningRequest& q : queue_)
-      reply_writer_.write(
-          rejected_reply(q, "stopping", "the planner stopped before it started this request"));
+    for (const Queued& q : queue_)
+      reply_writer_.write(rejected_reply(q.request, "stopping",
+                                         "the planner stopped before it started this request"));
   } catch (const std::exception& e) {
     spdlog::warn("stopping: the last replies were not sent: {}", e.what());
   }
@@ -79,11 +88,12 @@ void PlannerNode::on_requests(std::vector<dds::Sample<msg::PlanningRequest>> sam
       answer(*rejected, true);
       continue;
     }
-    if (pending_.size() > options_.max_queue) {
-      spdlog::warn("request {} answered busy: {} requests wait already", shown,
-                   pending_.size() - 1);
+    const std::size_t waiting =
+        pending_.size() > options_.workers ? pending_.size() - options_.workers : 0;
+    if (waiting >= options_.max_queue && pending_.size() >= options_.workers) {
+      spdlog::warn("request {} answered busy: {} requests wait already", shown, waiting);
       answer(rejected_reply(q, "busy",
-                            "the planner is busy: " + std::to_string(pending_.size() - 1) +
+                            "the planner is busy: " + std::to_string(waiting) +
                                 " requests wait already; send it again later"),
              false);
       continue;
@@ -91,11 +101,14 @@ void PlannerNode::on_requests(std::vector<dds::Sample<msg::PlanningRequest>> sam
     spdlog::info("request {} from {}: engine {}, budget {} ms{}", shown,
                  msg::clipped_for_log(q.requester), q.engine.empty() ? "chronological" : q.engine,
                  q.budget_ms > 0 ? q.budget_ms : options_.default_budget_ms,
-                 pending_.empty() ? "" : ", queued behind " + std::to_string(pending_.size()));
+                 pending_.empty() ? "" : ", " + std::to_string(pending_.size()) + " pending");
     pending_.insert(q.request_id);
     {
+      const auto now = Clock::now();
+      const auto budget =
+          std::chrono::milliseconds(q.budget_ms > 0 ? q.budget_ms : options_.default_budget_ms);
       std::lock_guard<std::mutex> lock(mutex_);
-      queue_.push_back(std::move(q));
+      queue_.push_back({std::move(q), now, now + budget});
     }
     wake_.notify_one();
   }
@@ -116,15 +129,18 @@ void PlannerNode::on_cancels(std::vector<dds::Sample<msg::PlanningCancel>> sampl
     std::optional<msg::PlanningRequest> dequeued;
     {
       std::lock_guard<std::mutex> lock(mutex_);
-      if (running_ == id) {
-        cancel_ = true;
-      } else {
-        for (auto it = queue_.begin(); it != queue_.end(); ++it) {
-          if (it->request_id == id) {
-            dequeued = std::move(*it);
-            queue_.erase(it);
-            break;
-          }
+      bool running = false;
+      for (auto& w : workers_) {
+        if (w->running == id) {
+          w->cancel = true;
+          running = true;
+        }
+      }
+      for (auto it = queue_.begin(); !running && it != queue_.end(); ++it) {
+        if (it->request.request_id == id) {
+          dequeued = std::move(it->request);
+          queue_.erase(it);
+          break;
         }
       }
     }
@@ -148,10 +164,62 @@ void PlannerNode::on_worker_output() {
     items.swap(outbox_);
   }
   for (const Outgoing& item : items) {
-    if (const auto* p = std::get_if<msg::PlanningProgress>(&item))
-      progress_writer_.write(*p);
-    else
-      answer(std::get<msg::PlanningReply>(item), true);
+    if (const auto* p = std::get_if<msg::PlanningProgress>(&item)) {
+      if (pending_.count(p->request_id)) progress_writer_.write(*p);
+      continue;
+    }
+    const auto& reply = std::get<msg::PlanningReply>(item);
+    if (!pending_.count(reply.request_id)) {  // the watchdog answered it already
+      spdlog::warn("request {}: a late result ({}) dropped: it was answered at its deadline",
+                   msg::clipped_for_log(reply.request_id), msg::to_string(reply.status));
+      continue;
+    }
+    answer(reply, true);
+  }
+}
+
+msg::PlanningReply PlannerNode::out_of_time_reply(const msg::PlanningRequest& q,
+                                                  const std::string& detail) {
+  msg::PlanningReply r = rejected_reply(q, "", detail);
+  r.status = msg::PlanningStatus::OutOfTime;
+  r.request_id = q.request_id;
+  return r;
+}
+
+void PlannerNode::enforce_deadlines() {
+  const auto now = Clock::now();
+  const auto margin = std::chrono::milliseconds(options_.margin_ms);
+  std::vector<msg::PlanningReply> late;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (auto it = queue_.begin(); it != queue_.end();) {
+      if (now < it->deadline) {
+        ++it;
+        continue;
+      }
+      const double waited = std::chrono::duration<double, std::milli>(now - it->received).count();
+      late.push_back(out_of_time_reply(
+          it->request, "the time budget ended while the request waited for a worker (every one "
+                       "was busy)"));
+      late.back().statistics.elapsed_ms = waited;
+      it = queue_.erase(it);
+    }
+    for (auto& w : workers_) {
+      if (w->running.empty() || now < w->deadline + margin || !pending_.count(w->running))
+        continue;
+      // A stage that did not honour the budget: the requester is answered now, the search is
+      // told to stop, and what it returns later is dropped.
+      w->cancel = true;
+      msg::PlanningRequest q;
+      q.request_id = w->running;
+      late.push_back(out_of_time_reply(
+          q, "the time budget ended and the search had not stopped " +
+                 std::to_string(options_.margin_ms) + " ms later; it was cancelled"));
+    }
+  }
+  for (const msg::PlanningReply& r : late) {
+    spdlog::warn("request {}: {}", msg::clipped_for_log(r.request_id), r.detail);
+    answer(r, true);
   }
 }
 
@@ -187,44 +255,43 @@ void PlannerNode::post(Outgoing item) {
   outbox_ready_.trigger();
 }
 
-void PlannerNode::work() {
+void PlannerNode::work(Worker& self) {
   for (;;) {
-    msg::PlanningRequest q;
+    Queued q;
     {
       std::unique_lock<std::mutex> lock(mutex_);
       wake_.wait(lock, [&] { return stopping_ || !queue_.empty(); });
       if (stopping_) return;
       q = std::move(queue_.front());
       queue_.pop_front();
-      running_ = q.request_id;
-      cancel_ = false;
+      self.running = q.request.request_id;
+      self.deadline = q.deadline;
+      self.cancel = false;
     }
     msg::PlanningReply reply;
     try {
-      reply = plan_one(q);
+      reply = plan_one(q, self);
     } catch (const std::exception& e) {
       // Nothing a request holds should get here; if it does, it is answered, not fatal.
-      spdlog::error("request {}: planning failed: {}", msg::clipped_for_log(q.request_id),
+      spdlog::error("request {}: planning failed: {}", msg::clipped_for_log(q.request.request_id),
                     e.what());
-      reply = rejected_reply(q, "internal_error", e.what());
+      reply = rejected_reply(q.request, "internal_error", e.what());
     }
     if (stopping_ && reply.status == msg::PlanningStatus::Cancelled)
       reply.detail = "the planner is stopping";
     {
       std::lock_guard<std::mutex> lock(mutex_);
-      running_.clear();
+      self.running.clear();
     }
     post(std::move(reply));  // when stopping, the destructor sends it
   }
 }
 
-msg::PlanningReply PlannerNode::plan_one(const msg::PlanningRequest& q) {
-  using Clock = std::chrono::steady_clock;
-  const auto started = Clock::now();
-  const auto budget =
-      std::chrono::milliseconds(q.budget_ms > 0 ? q.budget_ms : options_.default_budget_ms);
-  const auto elapsed_ms = [started] {
-    return std::chrono::duration<double, std::milli>(Clock::now() - started).count();
+msg::PlanningReply PlannerNode::plan_one(const Queued& queued, Worker& self) {
+  const msg::PlanningRequest& q = queued.request;
+  const auto received = queued.received, deadline = queued.deadline;
+  const auto elapsed_ms = [received] {
+    return std::chrono::duration<double, std::milli>(Clock::now() - received).count();
   };
   auto prepared = prepare_run(q);
   if (auto* rejected = std::get_if<msg::PlanningReply>(&prepared)) {
@@ -233,8 +300,8 @@ msg::PlanningReply PlannerNode::plan_one(const msg::PlanningRequest& q) {
     return std::move(*rejected);
   }
   RunControl control;
-  control.cancelled = [this] { return cancel_.load(std::memory_order_relaxed); };
-  control.out_of_time = [started, budget] { return Clock::now() - started >= budget; };
+  control.cancelled = [&self] { return self.cancel.load(std::memory_order_relaxed); };
+  control.out_of_time = [deadline] { return Clock::now() >= deadline; };
   control.elapsed_ms = elapsed_ms;
   control.on_progress = [this](const msg::PlanningProgress& p) { post(p); };
   return run_planning(q, std::get<PreparedRun>(prepared), control);

@@ -1,10 +1,13 @@
 #pragma once
 // The planner's thin DDS shell. Requests (autonomy/planner/request) are checked on the event
-// loop; good ones go into a FIFO queue that one worker thread plans from, one request at a time
-// (a second request while one runs waits its turn; beyond max_queue waiting ones it is answered
-// `busy` at once and may be sent again). The worker's termination condition carries the
-// request's budget and its cancellation (autonomy/planner/cancel), so a cancelled or timed-out
-// search ends with the best plan so far. The worker never touches a DDS writer: it hands its
+// loop; good ones go into a FIFO queue that `workers` threads plan from, one request each
+// (beyond max_queue waiting ones a request is answered `busy` at once and may be sent again).
+// A request's budget counts from its arrival: its deadline holds in the queue too (a request
+// still waiting at its deadline is answered out_of_time by the loop's watchdog), and a running
+// one not answered by deadline + margin is answered out_of_time by the watchdog, so one request
+// never holds up another beyond its own budget. The worker's termination condition carries the
+// deadline and the cancellation (autonomy/planner/cancel), so a cancelled or timed-out search
+// ends with the best plan so far. The worker never touches a DDS writer: it hands its
 // progress events and replies to the loop through a mutex-guarded outbox and a guard condition;
 // no lock is held across a DDS call. Every request gets exactly one reply; a repeated request_id
 // gets the remembered reply again (one still queued or running is answered once, when done).
@@ -12,10 +15,12 @@
 // running search is cancelled and answered (best plan so far), waiting requests are rejected
 // (`stopping`).
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <deque>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <set>
 #include <string>
@@ -35,8 +40,12 @@ namespace autonomy::planner {
 struct PlannerNodeOptions {
   std::int64_t default_budget_ms = 10000;  // for requests with budget_ms 0
   RequestLimits limits;
-  std::size_t max_queue = 8;              // waiting requests besides the running one
+  std::size_t max_queue = 8;              // waiting requests besides the running ones
   std::size_t remembered_replies = 1000;  // for repeated request ids
+  std::size_t workers = 2;                // searches at once, each on its own thread
+  // A running request not answered by its deadline plus this is answered out_of_time by the
+  // loop (its search is cancelled; a late result is dropped).
+  std::int64_t margin_ms = 500;
 };
 
 class PlannerNode {
@@ -54,8 +63,22 @@ class PlannerNode {
   void on_worker_output();
   // Loop thread: writes the reply (and the latest plan); remember: answer a repeat with it.
   void answer(const msg::PlanningReply& reply, bool remember);
-  void work();  // the worker thread
-  msg::PlanningReply plan_one(const msg::PlanningRequest& request);
+  using Clock = std::chrono::steady_clock;
+  struct Queued {
+    msg::PlanningRequest request;
+    Clock::time_point received, deadline;
+  };
+  struct Worker {
+    std::thread thread;
+    std::string running;  // request id, empty when idle (under mutex_)
+    Clock::time_point deadline;
+    std::atomic<bool> cancel{false};
+  };
+  void work(Worker& self);  // a worker thread
+  msg::PlanningReply plan_one(const Queued& request, Worker& self);
+  // Loop thread: answers what waited or ran past its deadline (see the class comment).
+  void enforce_deadlines();
+  msg::PlanningReply out_of_time_reply(const msg::PlanningRequest& q, const std::string& detail);
   void post(Outgoing item);  // worker -> loop
 
   PlannerNodeOptions options_;
@@ -81,13 +104,11 @@ class PlannerNode {
   // the search's termination condition).
   std::mutex mutex_;
   std::condition_variable wake_;
-  std::deque<msg::PlanningRequest> queue_;
-  std::string running_;
+  std::deque<Queued> queue_;
   std::vector<Outgoing> outbox_;
-  std::atomic<bool> cancel_{false};
   std::atomic<bool> stopping_{false};
 
-  std::thread worker_;  // last: starts when everything above exists
+  std::vector<std::unique_ptr<Worker>> workers_;  // last: start when everything above exists
 };
 
 }  // namespace autonomy::planner
