@@ -3,12 +3,17 @@
 // start/goal pairs, all measured in the same run. Per planner: success rate, planning time, path
 // length (and its ratio to the grid path of the same pair), smoothness.
 //
-//   path_bench [--pairs 20] [--budget 0.05] [--seed 1] [--out docs]
+//   path_bench [--pairs 20] [--budget 0.05] [--seed 1] [--recon-resolution 0.1] [--out docs]
+//
+// Also per map: the goal field each query needs, computed with the grid converted to a raster per
+// field (as before 2026-12-03) against the raster kept with the grid (now), in the same run.
 //
 // Writes OMPL's benchmark log format per map (OUT/ompl-paths-<map>.log:
 // ompl_benchmark_statistics.py and Planner Arena read it) and a Markdown summary
 // (OUT/ompl-paths.md). Nothing passes or fails on time; the exit status is 1 only when a returned
 // path fails the map's collision test.
+#include "common/grid/cost_to_go.hpp"
+#include "services/behavior/core/cost_to_go_field.hpp"
 #include "services/behavior/core/path/grid_path_planner.hpp"
 #include "services/behavior/core/path/ompl_path_planner.hpp"
 #include "simulator/scenario/scenario_loader.hpp"
@@ -19,6 +24,7 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <random>
 #include <sstream>
 
@@ -30,7 +36,24 @@ namespace {
 struct Config {
   std::string label;
   OmplPlannerSettings settings;
+  bool field_given = false;  // the goal's field computed before the query, as the behavior does
 };
+
+// The field as CostToGoField computed it before the grid kept its raster: the grid converted to a
+// raster cell by cell for every field. The baseline of the raster kept with the grid.
+grid::CostField field_converting_the_grid(const OccupancyGrid& g, const geometry::Vec2& goal) {
+  const auto& geo = g.geometry();
+  grid::OccupancyRaster r(geo.cols(), geo.rows(), geo.resolution_m());
+  for (int row = 0; row < geo.rows(); ++row)
+    for (int col = 0; col < geo.cols(); ++col)
+      if (g.blocked({col, row})) r.set_blocked({col, row}, true);
+  const auto cell = geo.cell_at(goal);
+  return grid::compute_cost_to_go(r, cell ? grid::Cell{cell->col, cell->row} : grid::Cell{-1, -1}).field;
+}
+
+double ms_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
 
 struct Stats {
   std::vector<double> time_ms, ratio, smooth;
@@ -52,6 +75,7 @@ int main(int argc, char** argv) {
   unsigned seed = 1;
   std::string out = "docs";
   double office_resolution = 0.1;
+  double recon_resolution = 0.1;
   app.add_option("--pairs", pairs, "Start/goal pairs per map")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
@@ -62,6 +86,9 @@ int main(int argc, char** argv) {
   app.add_option("--office-resolution", office_resolution, "Office grid resolution in m")
       ->check(CLI::Range(0.02, 0.5))
       ->capture_default_str();
+  app.add_option("--recon-resolution", recon_resolution, "Recon grid resolution in m (0.1: the behavior's)")
+      ->check(CLI::Range(0.05, 0.5))
+      ->capture_default_str();
   bool verbose = false;
   app.add_flag("--verbose", verbose, "Print every query an OMPL planner did not solve, with the reason");
   app.add_option("--out", out, "Directory for the logs and the summary")->capture_default_str();
@@ -69,7 +96,8 @@ int main(int argc, char** argv) {
   seed_ompl(seed);
 
   std::vector<Config> configs;
-  const auto add = [&](CurveModel c, const std::string& planner, bool guide = true, bool spin = false) {
+  const auto add = [&](CurveModel c, const std::string& planner, bool guide = true, bool spin = false,
+                       bool field_given = false) {
     OmplPlannerSettings s;
     s.curve = c;
     s.planner = planner;
@@ -77,8 +105,8 @@ int main(int argc, char** argv) {
     s.route_guide = guide;
     s.turn_in_place_at_start = spin;
     configs.push_back({std::string(to_string(c)) + "/" + planner + (guide ? "" : " (no route guide)") +
-                           (spin ? " (turn in place first)" : ""),
-                       s});
+                           (spin ? " (turn in place first)" : "") + (field_given ? " (goal field given)" : ""),
+                       s, field_given});
   };
   // The baseline of the route guide: the same planners sampling from the start.
   add(CurveModel::ReedsShepp, "RRTConnect", false);
@@ -86,13 +114,15 @@ int main(int argc, char** argv) {
   add(CurveModel::Holonomic, "RRTConnect", false);
   add(CurveModel::ReedsShepp, "RRTConnect");
   add(CurveModel::ReedsShepp, "RRTConnect", true, true);
+  add(CurveModel::ReedsShepp, "RRTConnect", true, true, true);  // the behavior's unicycle query
   add(CurveModel::ReedsShepp, "RRTstar");
   add(CurveModel::ReedsShepp, "BITstar");
   add(CurveModel::Holonomic, "RRTConnect");
   add(CurveModel::Holonomic, "PRMstar");
-  // Dubins is left out: OMPL 1.5.2's DubinsStateSpace aborts on a numeric assertion (dubinsRSR,
-  // Debian builds keep asserts) for some state pairs within 20 office pairs. See
-  // docs/ompl-paths.md.
+  // Dubins through the guarded space (OMPL 1.5.2's own aborted on its assertions within 20 office
+  // pairs before 2026-12-03; docs/ompl-paths.md). RRT: one tree grown forward suits Dubins.
+  add(CurveModel::Dubins, "RRTConnect");
+  add(CurveModel::Dubins, "RRT");
 
   std::ostringstream md;
   // The usage section is written here with the figures, so that regenerating keeps them together.
@@ -109,9 +139,9 @@ stays the advice for the motor schemas and the reference the OMPL paths are meas
         [--ompl-budget-ms 50] [--turning-radius 0.5] [--ompl-route-guide true] \
         [--ompl-turn-in-place true]
 
-- `--ompl-space`: `reeds-shepp` (forward and reverse curves, the default), `dubins` (forward only;
-  OMPL 1.5.2's Dubins space can abort the process on an internal assertion, `dubinsRSR`, for some
-  state pairs: use it for experiments only), `se2` (straight lines, for holonomic robots).
+- `--ompl-space`: `reeds-shepp` (forward and reverse curves, the default), `dubins` (forward only,
+  never a turn in place at the start; see "Dubins curves and OMPL's assertions" below), `se2`
+  (straight lines, for holonomic robots).
 - `--ompl-planner`: RRTConnect, RRT, RRTstar, InformedRRTstar, PRMstar, BITstar, KPIECE1
   (LazyPRMstar is not offered: OMPL 1.5.2 leaks in its solve()).
 - The office courier: `deploy/courier-demo.sh --path-planner ompl` (service set
@@ -159,13 +189,14 @@ Generated by `build/bin/path_bench --pairs )"
         "queries the guide solved without sampling. Times are wall-clock on a shared 2-core "
         "machine: compare rows, not runs.\n";
   int collisions = 0;
+  int field_mismatches = 0;  // fields before and now that differ (must stay 0)
 
   struct MapCase {
     std::string name, file;
     double resolution;
   };
   for (const MapCase& mc : {MapCase{"office", "deploy/scenarios/office.pbtxt", office_resolution},
-                            MapCase{"recon", "deploy/scenarios/recon.pbtxt", 0.25}}) {
+                            MapCase{"recon", "deploy/scenarios/recon.pbtxt", recon_resolution}}) {
     const auto loaded = sim::load_scenario_file(std::string(AUTONOMY_SOURCE_DIR) + "/" + mc.file);
     if (!loaded.ok()) {
       std::fprintf(stderr, "%s\n", loaded.error_text().c_str());
@@ -235,7 +266,13 @@ Generated by `build/bin/path_bench --pairs )"
       Stats st;
       BenchmarkLog::Planner lp{cfg.label, {}};
       for (const auto& c : cases) {
-        const auto r = planner.plan(c.q);
+        std::optional<CostToGoField> given;
+        PathRequest q = c.q;
+        if (cfg.field_given) {
+          given.emplace(*grid, q.goal);
+          q.field = &*given;
+        }
+        const auto r = planner.plan(q);
         ++st.runs;
         const double ms = r.planning_s * 1000.0;
         st.time_ms.push_back(ms);
@@ -273,16 +310,39 @@ Generated by `build/bin/path_bench --pairs )"
       return 2;
     }
 
+    // The goal field each query needs: before (grid converted per field) and now (raster kept with
+    // the grid), same goals, same run; both must give the same costs.
+    Stats before, after;
+    for (const auto& c : cases) {
+      auto t0 = std::chrono::steady_clock::now();
+      const grid::CostField old_field = field_converting_the_grid(*grid, c.q.goal);
+      before.time_ms.push_back(ms_since(t0));
+      t0 = std::chrono::steady_clock::now();
+      const CostToGoField new_field(*grid, c.q.goal);
+      after.time_ms.push_back(ms_since(t0));
+      if (old_field.costs() != new_field.costs()) ++field_mismatches;
+    }
+    char field_line[512];
+    std::snprintf(field_line, sizeof field_line,
+                  "\nGoal field per query (%d x %d cells): grid converted per field (before) median %.1f ms, "
+                  "max %.1f ms; raster kept with the grid (now) median %.1f ms, max %.1f ms (%.2fx less "
+                  "median).\n",
+                  grid->geometry().cols(), grid->geometry().rows(), quantile(before.time_ms, 0.5),
+                  quantile(before.time_ms, 1.0), quantile(after.time_ms, 0.5), quantile(after.time_ms, 1.0),
+                  quantile(before.time_ms, 0.5) / std::max(1e-9, quantile(after.time_ms, 0.5)));
+    std::printf("%s%s", mc.name.c_str(), field_line);
+
     md << "\n### " << mc.name << " (" << w.width << " x " << w.height << " m, grid " << mc.resolution
        << " m, " << pairs << " pairs; log `" << log_path << "`)\n\n"
-       << "| planner | solved | time median / p95 (ms) | length ratio median / max | smoothness "
+       << "| planner | solved | time median / p95 / max (ms) | length ratio median / max | smoothness "
           "median | "
           "<= 1.1x in < 50 ms | by the route guide |\n|---|---|---|---|---|---|---|\n";
     for (const auto& [name, st] : table) {
       char line[512];
       std::snprintf(
-          line, sizeof line, "| %s | %d/%d | %.1f / %.1f | %.3f / %.3f | %.3f | %d%% | %d |\n",
+          line, sizeof line, "| %s | %d/%d | %.1f / %.1f / %.1f | %.3f / %.3f | %.3f | %d%% | %d |\n",
           name.c_str(), st.solved, st.runs, quantile(st.time_ms, 0.5), quantile(st.time_ms, 0.95),
+          quantile(st.time_ms, 1.0),
           quantile(st.ratio, 0.5),
           st.ratio.empty() ? 0.0 : *std::max_element(st.ratio.begin(), st.ratio.end()),
           quantile(st.smooth, 0.5),
@@ -291,6 +351,7 @@ Generated by `build/bin/path_bench --pairs )"
       md << line;
       std::printf("%s %s", mc.name.c_str(), line);
     }
+    md << field_line;
   }
   md << "\nPaths failing the map's collision test after planning: " << collisions << ".\n\n"
      << "Notes. Ratios below 1 are expected: a continuous path cuts the 8-connected grid's "
@@ -300,8 +361,7 @@ Generated by `build/bin/path_bench --pairs )"
         "3 ms recon), which every OMPL query does first (unreachability proof, goal heading, "
         "heuristic, "
         "route-biased sampling). Reeds-Shepp smoothness is dominated by cusps (direction changes). "
-        "Dubins is not benchmarked: OMPL 1.5.2's DubinsStateSpace aborts on an internal assertion "
-        "(dubinsRSR) for some state pairs. Logs: `ompl_benchmark_statistics.py "
+        "Dubins rows go through the guarded space (below). Logs: `ompl_benchmark_statistics.py "
      << out << "/ompl-paths-office.log -d paths.db` (ompl-demos package) for Planner Arena.\n\n"
      << "The office pair that the Reeds-Shepp rows without a turn in place miss (seed 1) starts "
         "under the A-116 desk, in a 0.2 m slot between the desk's margin and the wall's, facing "
@@ -317,5 +377,6 @@ Generated by `build/bin/path_bench --pairs )"
         "OMPL without turning in place: 09:01:36 and 09:02:07); every path came from the route "
         "guide in 3 to 6 ms, with no replan for straying.\n";
   std::ofstream(out + "/ompl-paths.md") << md.str();
-  return collisions == 0 ? 0 : 1;
+  if (field_mismatches != 0) std::fprintf(stderr, "path_bench: %d goal fields differ before/now\n", field_mismatches);
+  return collisions == 0 && field_mismatches == 0 ? 0 : 1;
 }

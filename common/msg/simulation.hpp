@@ -50,13 +50,15 @@ struct MapRaster {
   std::vector<uint8_t> blocked;
 };
 
-// A doorway: `width` m centred at (x, y) along `heading` (rad, hinge to latch).
+// A doorway: `width` m centred at (x, y) along `heading` (rad, hinge to latch); its leaf, when
+// open, turned `open_angle` (rad, signed, + counter-clockwise) about the hinge (0: not said).
 struct MapDoor {
   std::string id;
   double x = 0.0;
   double y = 0.0;
   double width = 0.0;
   double heading = 0.0;
+  double open_angle = 0.0;
 };
 
 struct WorldMap {

@@ -24,7 +24,15 @@ msg::WorldMap map_message(const WorldSpec& spec) {
     }
     m.rasters.push_back(std::move(out));
   }
-  for (const DoorSpec& d : spec.doors) m.doors.push_back({d.id, d.position.x(), d.position.y(), d.width, d.heading});
+  for (const DoorSpec& d : spec.doors) {
+    // Where the leaf stands open: the angle a random door opens to, else the start angle of a
+    // door that starts open, else its widest. Signed so that readers need not know DoorSwing.
+    const double open = d.schedule.kind == DoorScheduleSpec::Kind::Random ? d.schedule.random.open_angle
+                        : d.angle > 0.0                                    ? d.angle
+                                                                           : d.max_angle;
+    const double turn = d.swing == DoorSwing::CounterClockwise ? open : -open;
+    m.doors.push_back({d.id, d.position.x(), d.position.y(), d.width, d.heading, turn});
+  }
   return m;
 }
 

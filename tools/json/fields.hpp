@@ -271,6 +271,7 @@ struct Fields<msg::MapDoor> {
     v.field("y", m.y);
     v.field("width", m.width);
     v.field("heading", m.heading);
+    v.field("open_angle", m.open_angle);
   }
 };
 

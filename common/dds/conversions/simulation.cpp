@@ -114,7 +114,7 @@ void DdsType<msg::WorldMap>::to_c(const msg::WorldMap& v, C& out, Arena& arena) 
   auto* doors = arena.allocate<autonomy_MapDoor>(nd);
   for (uint32_t i = 0; i < nd; ++i) {
     const auto& d = v.doors[i];
-    doors[i] = {c_str(d.id), d.x, d.y, d.width, d.heading};
+    doors[i] = {c_str(d.id), d.x, d.y, d.width, d.heading, d.open_angle};
   }
   out.doors = {nd, nd, doors, false};
 }
@@ -158,7 +158,7 @@ msg::WorldMap DdsType<msg::WorldMap>::from_c(const C& in) {
   }
   for (uint32_t i = 0; i < in.doors._length; ++i) {
     const auto& d = in.doors._buffer[i];
-    v.doors.push_back({from_c_str(d.id), d.x, d.y, d.width, d.heading});
+    v.doors.push_back({from_c_str(d.id), d.x, d.y, d.width, d.heading, d.open_angle});
   }
   return v;
 }

@@ -15,23 +15,11 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 
 grid::Cell to_grid(GridCell c) { return {c.col, c.row}; }
 
-// The behavior grid as a planning raster: same cells, same rows (row 0 = lowest y).
-grid::OccupancyRaster raster_of(const OccupancyGrid& g) {
-  const auto& geo = g.geometry();
-  grid::OccupancyRaster r(geo.cols(), geo.rows(), geo.resolution_m());
-  for (int row = 0; row < geo.rows(); ++row) {
-    for (int col = 0; col < geo.cols(); ++col) {
-      if (g.blocked({col, row})) r.set_blocked({col, row}, true);
-    }
-  }
-  return r;
-}
-
 }  // namespace
 
 CostToGoField::CostToGoField(const OccupancyGrid& grid, const geometry::Vec2& goal)
     : geometry_(grid.geometry()), goal_(goal), goal_cell_(geometry_.cell_at(goal)) {
-  const auto raster = raster_of(grid);
+  const grid::OccupancyRaster& raster = grid.raster();  // made once with the grid
   // Outside or blocked goals come back as a reasoned result with an all-+inf field, which is
   // exactly "no route anywhere" here.
   auto result =

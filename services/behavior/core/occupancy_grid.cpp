@@ -103,6 +103,17 @@ OccupancyGrid::OccupancyGrid(const WorldMap& world, double resolution_m, double 
       }
     }
   }
+  make_raster();
+}
+
+void OccupancyGrid::make_raster() {
+  auto raster = std::make_shared<grid::OccupancyRaster>(geometry_.cols(), geometry_.rows(), geometry_.resolution_m());
+  for (int row = 0; row < geometry_.rows(); ++row) {
+    const std::uint8_t* cells = blocked_.data() + geometry_.index({0, row});
+    for (int col = 0; col < geometry_.cols(); ++col)
+      if (cells[col] != 0) raster->set_blocked({col, row}, true);
+  }
+  raster_ = std::move(raster);
 }
 
 OccupancyGrid OccupancyGrid::with_areas(const std::vector<geometry::Rect>& areas) const {
@@ -115,6 +126,7 @@ OccupancyGrid OccupancyGrid::with_areas(const std::vector<geometry::Rect>& areas
     }
     out.block_cells_near(o.inflated(r), [&](const geometry::Vec2& c) { return geometry::distance(o, c) <= r; });
   }
+  out.make_raster();
   return out;
 }
 
@@ -157,6 +169,7 @@ OccupancyGrid OccupancyGrid::from_picture(const std::vector<std::string>& rows_t
       if (line[static_cast<std::size_t>(col)] == '#') grid.blocked_[grid.geometry_.index({col, row})] = 1;
     }
   }
+  grid.make_raster();
   return grid;
 }
 

@@ -14,13 +14,16 @@
 
 namespace autonomy::behavior {
 
-// A doorway: `width` m centred at `centre` along `heading` (rad). Not an obstacle by itself:
-// whether it blocks depends on what the robot knows of the door (door_knowledge.hpp).
+// A doorway: `width` m centred at `centre` along `heading` (rad, hinge to latch); its leaf, when
+// open, turned `open_angle` (rad, signed, + counter-clockwise; 0: the map does not say) about the
+// hinge. Not an obstacle by itself: what blocks depends on what the robot knows of the door
+// (door_knowledge.hpp: a closed door's doorway, an open door's leaf).
 struct Doorway {
   std::string id;
   geometry::Vec2 centre;
   double width_m = 0.0;
   double heading = 0.0;
+  double open_angle = 0.0;
 };
 
 struct WorldMap {

@@ -238,7 +238,8 @@ void BehaviorNode::become_ready_when_possible() {
     control_pending_tick();
     return;
   }
-  OccupancyGrid grid(world, options_.grid_resolution_m, inflation);
+  // Open doors' leaves where the map says they stand (no door is known closed yet).
+  OccupancyGrid grid(doors_.apply(world), options_.grid_resolution_m, inflation);
   tracker_.emplace(std::move(grid), options_.tracker);
   controller_.emplace(st.kinematics == msg::Kinematics::Holonomic ? Kinematics::Holonomic : Kinematics::Unicycle,
                       MotionLimits{st.max_speed, st.max_omega}, options_.go_to);

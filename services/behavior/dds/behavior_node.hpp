@@ -128,7 +128,7 @@ class BehaviorNode {
   void plan_path(const char* why);
   // The command of a planned path, or nullopt when the grid controller should drive this tick.
   std::optional<VelocityCommand> follow_path(const geometry::Pose2& pose, double now_s);
-  std::shared_ptr<const OccupancyGrid> path_grid(std::string* error) const;
+  std::shared_ptr<const OccupancyGrid> path_grid(std::string* error);
   // The range rays that hit something the map does not have (map_obstacles_ filters).
   std::vector<RangeRay> range_rays() const;
   void update_map_obstacles();
@@ -179,6 +179,9 @@ class BehaviorNode {
   // The map's obstacles (doors believed closed included) grown by a few centimetres: range hits
   // there are the map's own, already planned around; the avoid schema sees only the others.
   std::optional<OccupancyGrid> map_obstacles_;
+  // The tracker's grid as the OMPL planner holds it, copied once per grid (a copy per plan cost
+  // milliseconds on the recon map): a new grid has a new raster.
+  std::shared_ptr<const OccupancyGrid> path_grid_;
   // The tracker's grid as the OMPL planner holds it, copied once per grid (a copy per plan cost
   // milliseconds on the recon map): a new grid has a new raster.
   std::shared_ptr<const OccupancyGrid> path_grid_;

@@ -22,20 +22,18 @@ constexpr double kMapHitResolution = 0.05;
 }  // namespace
 
 void BehaviorNode::update_map_obstacles() {
-  WorldMap known = doors_.apply(world_);
-  // An open door's leaf stands somewhere within its width of the doorway: hits there are the
-  // door's, not something in the way (the map gives doorways, not leaves or swings).
-  for (const Doorway& d : world_.doors) {
-    known.obstacles.push_back({d.centre.x() - d.width_m, d.centre.y() - d.width_m, d.centre.x() + d.width_m,
-                               d.centre.y() + d.width_m});
-  }
-  map_obstacles_.emplace(known, kMapHitResolution, kMapHitMargin);
+  // Closed doors' slabs and open doors' leaves where the robot believes them: hits there are the
+  // map's; a leaf anywhere else (a door swinging, a map that says nothing of its leaf) is in the
+  // way like anything else the scan sees.
+  map_obstacles_.emplace(doors_.apply(world_), kMapHitResolution, kMapHitMargin);
 }
 
-std::shared_ptr<const OccupancyGrid> BehaviorNode::path_grid(std::string* error) const {
+std::shared_ptr<const OccupancyGrid> BehaviorNode::path_grid(std::string* error) {
   const OccupancyGrid& grid = tracker_->grid();  // the obstacles and the doors known closed
-  if (!pursued_constraints_ || pursued_constraints_->layers.empty())
-    return std::make_shared<const OccupancyGrid>(grid);
+  if (!pursued_constraints_ || pursued_constraints_->layers.empty()) {
+    if (!path_grid_ || &path_grid_->raster() != &grid.raster()) path_grid_ = std::make_shared<const OccupancyGrid>(grid);
+    return path_grid_;
+  }
   const auto world =
       apply_constraints(doors_.apply(world_), *pursued_constraints_, options_.layers, error);
   if (!world) return nullptr;
@@ -60,6 +58,10 @@ void BehaviorNode::plan_path(const char* why) {
   request.start = {state_->x, state_->y, state_->theta};
   request.goal = target->goal;
   request.budget_s = options_.path.budget_s;
+  // The tracker's field for this goal, computed on the same cells (the tracker's grid, or the
+  // constrained grid field_for and path_grid both build): not computed twice. A stored plan's field
+  // was computed elsewhere (plan_tool, without door leaves): the planner computes its own then.
+  if (!options_.plans) request.field = tracker_->field();
   PathResult result;
   try {
     OmplPathPlanner planner(grid, options_.path.ompl);

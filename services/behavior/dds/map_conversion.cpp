@@ -48,12 +48,12 @@ WorldMap world_of(const msg::WorldMap& m) {
   }
   for (const auto& d : m.doors) {
     if (d.id.empty() || !std::isfinite(d.x) || !std::isfinite(d.y) || !std::isfinite(d.width) || d.width <= 0.0 ||
-        !std::isfinite(d.heading)) {
-      spdlog::warn("map '{}': door '{}' ignored: doorway ({}, {}) width {} heading {}", m.name, d.id, d.x, d.y, d.width,
-                   d.heading);
+        !std::isfinite(d.heading) || !std::isfinite(d.open_angle) || std::fabs(d.open_angle) > M_PI) {
+      spdlog::warn("map '{}': door '{}' ignored: doorway ({}, {}) width {} heading {} open angle {}", m.name, d.id, d.x,
+                   d.y, d.width, d.heading, d.open_angle);
       continue;
     }
-    w.doors.push_back({d.id, geometry::Vec2(d.x, d.y), d.width, d.heading});
+    w.doors.push_back({d.id, geometry::Vec2(d.x, d.y), d.width, d.heading, d.open_angle});
   }
   return w;
 }

@@ -87,6 +87,13 @@ class OmplPathPlanner final : public PathPlanner {
   std::unique_ptr<Impl> impl_;
 };
 
+// The planner's Dubins curves (OMPL's, guarded against OMPL 1.5.2's assertions on near-coincident
+// pose pairs, which abort the process): length from a to b, and the pose at fraction t in [0, 1].
+// Headings in radians, any range. For tests and tools.
+double dubins_distance(const geometry::Pose2& a, const geometry::Pose2& b, double turning_radius_m);
+geometry::Pose2 dubins_interpolate(const geometry::Pose2& a, const geometry::Pose2& b, double t,
+                                   double turning_radius_m);
+
 // One experiment in OMPL's benchmark log format (read by ompl_benchmark_statistics.py and Planner
 // Arena). Property names carry their type as OMPL expects: "time REAL", "solved BOOLEAN", ...
 struct BenchmarkLog {

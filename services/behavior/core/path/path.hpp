@@ -11,6 +11,8 @@
 
 namespace autonomy::behavior {
 
+class CostToGoField;
+
 enum class PathStatus {
   Found,           // poses lead from the start to the goal, clear of the map
   InvalidRequest,  // non-finite pose, non-positive budget
@@ -27,6 +29,12 @@ struct PathRequest {
   // Heading at the goal; without it the planner picks the heading the grid's route arrives with.
   std::optional<double> goal_heading;
   double budget_s = 0.05;  // > 0: planning time the caller grants
+  // The goal's cost-to-go field on the planner's grid when the caller has it already (the
+  // behavior's goal tracker computes it on accepting the goal): used instead of computing the same
+  // field again, the largest part of a plan on a big map (docs/fields.md). Used only when its cell
+  // geometry and goal cell are the grid's and the goal's; the caller vouches that it was computed on
+  // the same blocked cells. Not owned; must outlive plan().
+  const CostToGoField* field = nullptr;
 };
 
 struct PathResult {

@@ -87,6 +87,66 @@ TEST(DoorKnowledge, ClosedDoorsBlockTheirDoorwayInPlans) {
   EXPECT_THROW(DoorKnowledge({0.0, 0.6, 1.0, 1.0}), std::invalid_argument);
 }
 
+// d1's leaf (1.6 m, the doorway's width) hinged at (5, 1.2), opening counter-clockwise by `open`
+// into the west room: open at a right angle it lies along y = 1.2 from x = 5 to x = 3.4.
+WorldMap leaf_door(double open) {
+  WorldMap w = two_doors();
+  w.doors[0].open_angle = open;
+  return w;
+}
+
+// A robot on one side of the open leaf plans around its tip to a goal on the other side, for any
+// pair of points beside the leaf; a map that does not say where the leaf stands plans through it.
+TEST(DoorKnowledge, AnOpenLeafIsAnObstacleInPlans) {
+  DoorKnowledge k;
+  const WorldMap with = leaf_door(M_PI / 2), without = leaf_door(0.0);
+  ASSERT_EQ(k.apply(with).polygons.size(), 1u);
+  EXPECT_EQ(k.apply(with).polygons[0].name, "door d1 leaf");
+  EXPECT_TRUE(k.apply(without).polygons.empty());
+  for (const double x : {4.3, 4.5}) {
+    for (const double below : {0.6, 0.75}) {
+      const Vec2 south(x, below), north(x, 2.4 - below);
+      const float straight = cost_from(k.apply(without), south, north);
+      const float around = cost_from(k.apply(with), south, north);
+      EXPECT_LT(straight, 1.5) << x << " " << below;
+      // Out past the tip (x = 3.4, less the 0.1 margin and the 0.35 inflation) and back: at least
+      // 2 x 1 m further (x >= 4.3), less the diagonal steps' savings.
+      EXPECT_GT(around, straight + 1.5) << x << " " << below;
+      EXPECT_TRUE(std::isfinite(around)) << x << " " << below;
+    }
+  }
+}
+
+TEST(DoorKnowledge, AClosedDoorHasItsSlabAndNoLeaf) {
+  DoorKnowledge k;
+  const WorldMap w = leaf_door(M_PI / 2);
+  EXPECT_TRUE(k.update({{"d1", 0.0}}, 0.0, w));
+  const WorldMap applied = k.apply(w);
+  ASSERT_EQ(applied.polygons.size(), 1u);
+  EXPECT_EQ(applied.polygons[0].name, "door d1");
+}
+
+// The leaf stands where the robot last saw it open once that is farther than leaf_moved_rad from
+// the belief; sighting noise below that changes nothing (no replan).
+TEST(DoorKnowledge, TheLeafMovesToWhereItWasSeen) {
+  DoorKnowledge k;  // leaf_moved_rad 0.3
+  const WorldMap w = leaf_door(-M_PI / 2);  // clockwise: into the east room along y = 1.2
+  EXPECT_DOUBLE_EQ(k.open_leaf_angle(w.doors[0]), M_PI / 2);
+  EXPECT_FALSE(k.update({{"d1", 1.45}}, 0.0, w));
+  EXPECT_TRUE(k.update({{"d1", 1.0}}, 0.1, w));
+  EXPECT_DOUBLE_EQ(k.open_leaf_angle(w.doors[0]), 1.0);
+  const auto leaf = k.apply(w).polygons.at(0).vertices;
+  // Hinge (5, 1.2), the slab's end 1.6 m (the leaf) + 0.1 m (leaf_tip_margin_m) along heading
+  // pi/2 - 1.0 rad.
+  const Vec2 tip = 0.5 * (leaf[1] + leaf[2]);
+  EXPECT_NEAR(tip.x(), 5.0 + 1.7 * std::cos(M_PI / 2 - 1.0), 1e-9);
+  EXPECT_NEAR(tip.y(), 1.2 + 1.7 * std::sin(M_PI / 2 - 1.0), 1e-9);
+  EXPECT_FALSE(k.update({{"d1", 1.1}}, 0.2, w));
+  EXPECT_THROW(DoorKnowledge({0.35, 0.6, 120.0, 0.2, 0.0}), std::invalid_argument);
+  EXPECT_THROW(DoorKnowledge({0.35, 0.6, 120.0, 0.2, 0.05, -1.0}), std::invalid_argument);
+  EXPECT_THROW(DoorKnowledge({0.35, 0.6, 120.0, 0.2, 0.05, 0.1, -0.1}), std::invalid_argument);
+}
+
 TEST(GoalTrackerReplan, DetourKeepsTheGoalAndNoRouteBlocksItWithTheReason) {
   const WorldMap w = two_doors();
   GoalTracker tracker(OccupancyGrid(w, 0.1, 0.35));
