@@ -14,6 +14,16 @@ case ${1:-} in
 esac
 
 bash "$repo/deploy/install-deps.sh"
+# Test-only: the independent MCAP readers of the recording test (npm's @mcap/core and
+# @foxglove/omgidl-serialization, pinned by tests/node/package-lock.json), never in the runtime
+# install. Without node the recording test says so and skips that part.
+if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends nodejs npm ||
+    echo "test: nodejs/npm could not be installed; the MCAP validation by independent readers will be skipped" >&2
+fi
+if command -v npm >/dev/null 2>&1; then
+  npm ci --prefix "$repo/tests/node" --no-audit --no-fund --loglevel=error
+fi
 for c in "${configs[@]}"; do
   if [ "$c" = sanitize ]; then
     echo "== ASan + UBSan build and tests"

@@ -1,0 +1,200 @@
+// Recordings of real runs (issue 26): `autonomy record` beside the simulator and a behavior in
+// lockstep, read back by the project's reader and by independent readers (npm's @mcap/core and
+// @foxglove/omgidl-serialization, tests/node/validate_recording.js), and a recorder killed with -9.
+//
+//   domain  test
+//   ------  -----------------------------------------------
+//    197    RecordingTest.ALockstepRunIsReadByIndependentReaders
+//    198    RecordingTest.ARecorderKilledLeavesItsChunksReadable
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "common/mcap/reader.hpp"
+#include "tests/support/goal_statuses.hpp"
+#include "tests/support/process_test.hpp"
+#include "tools/recording/raw_topic.hpp"
+
+namespace autonomy::test {
+namespace {
+
+using namespace std::chrono_literals;
+
+constexpr int kDomainIndependentReaders = 197;
+constexpr int kDomainKilled = 198;
+
+// What a recording holds, read with the project's reader.
+struct Contents {
+  mcap::ReadReport report;
+  std::map<std::string, std::vector<mcap::Message>> by_topic;
+  std::map<std::string, mcap::Channel> channels;
+  std::map<std::string, std::string> schema_of;
+};
+
+Contents read_recording(const std::string& path) {
+  Contents c;
+  mcap::Reader reader(path);
+  c.report = reader.read([&](const mcap::Channel& ch, const mcap::Schema* s, const mcap::Message& m) {
+    c.by_topic[ch.topic].push_back(m);
+    c.channels[ch.topic] = ch;
+    c.schema_of[ch.topic] = s ? s->name : "";
+  });
+  return c;
+}
+
+template <typename T>
+std::vector<T> decode_all(const std::vector<mcap::Message>& messages, const std::string& topic) {
+  const auto* t = recording::find_recordable(topic);
+  std::vector<T> out;
+  for (const auto& m : messages) {
+    recording::DecodedSample d(t->descriptor, m.data);
+    out.push_back(dds::DdsType<T>::from_c(*static_cast<const typename dds::DdsType<T>::C*>(d.get())));
+  }
+  return out;
+}
+
+bool log_says(const ChildProcess& child, const std::string& text) {
+  std::ifstream in(child.log_file());
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str().find(text) != std::string::npos;
+}
+
+std::string find_node() {
+  const char* path = std::getenv("PATH");
+  std::stringstream dirs(path ? path : "/usr/bin:/usr/local/bin");
+  std::string dir;
+  while (std::getline(dirs, dir, ':'))
+    if (!dir.empty() && ::access((dir + "/node").c_str(), X_OK) == 0) return dir + "/node";
+  return "";
+}
+
+class RecordingTest : public ProcessTest {
+ protected:
+  ChildProcess& start_recorder(const std::string& file, std::vector<std::string> extra = {}) {
+    std::vector<std::string> args = {"record", "-a", "-o", file, "--domain", std::to_string(domain_), "--chunk", "0.2"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return start("recorder", AUTONOMY_AUTONOMY_BIN, args, false);
+  }
+};
+
+TEST_F(RecordingTest, ALockstepRunIsReadByIndependentReaders) {
+  join(kDomainIndependentReaders);
+  Recorder<msg::Heartbeat> beats(participant(), dds::topics::heartbeat);
+  Recorder<msg::GoalStatus> goals(participant(), dds::topics::goal_status);
+  dds::Topic<msg::NavGoal> goal_topic(participant(), dds::topics::nav_goal);
+  dds::Writer<msg::NavGoal> goal_writer(participant(), goal_topic);
+
+  start_simulator({"--wait-for", "behavior/r1"});
+  auto& behavior = start_behavior("r1");
+  ASSERT_TRUE(await_ready(beats, behavior));
+  // Started once the world runs: its map (transient-local, published once) must still be captured.
+  const std::string file = dir().file("run.mcap");
+  auto& recorder = start_recorder(file);
+  ASSERT_TRUE(await("the recorder's readers", [&] { return log_says(recorder, "Ctrl-C stops"); }));
+  ASSERT_TRUE(goal_writer.wait_for_readers(2, kDeadline)) << "behavior and recorder did not both match the goal";
+  const msg::NavGoal goal{"r1", "rec-goal-1", 18.0, 2.0, 0.0, ""};
+  goal_writer.write(goal);
+  ASSERT_TRUE(await("goal rec-goal-1 reached", [&] {
+    goals.poll();
+    for (const auto& s : goals.all())
+      if (s.goal_id == goal.goal_id && s.state == msg::GoalState::Reached) return true;
+    return false;
+  }, 60s)) << states_text(goals.all());
+  std::this_thread::sleep_for(500ms);  // the recorder takes the last statuses
+  recorder.signal(SIGINT);
+  const auto ended = recorder.wait_for_exit(10s);
+  ASSERT_TRUE(ended && ended->exited && ended->code == 0) << (ended ? ended->describe() : "still running");
+
+  // The project's reader: complete, every CRC checked, the map captured, the goal and its statuses.
+  const auto c = read_recording(file);
+  EXPECT_TRUE(c.report.complete) << c.report.note;
+  EXPECT_TRUE(c.report.data_crc_checked);
+  EXPECT_TRUE(c.report.summary_crc_checked);
+  EXPECT_EQ(c.report.compressions, std::set<std::string>{"zstd"});
+  ASSERT_EQ(c.by_topic.count("autonomy/map"), 1u) << "transient-local state present at start not captured";
+  EXPECT_EQ(c.schema_of.at("autonomy/map"), "autonomy::WorldMap");
+  EXPECT_EQ(c.channels.at("autonomy/map").metadata.at("durability"), "transient-local");
+  EXPECT_EQ(c.channels.at("autonomy/nav/goal").metadata.at("durability"), "volatile");
+  const auto goals_recorded = decode_all<msg::NavGoal>(c.by_topic.at("autonomy/nav/goal"), "autonomy/nav/goal");
+  ASSERT_EQ(goals_recorded.size(), 1u);
+  EXPECT_EQ(goals_recorded[0].goal_id, goal.goal_id);
+  EXPECT_EQ(goals_recorded[0].x, goal.x);
+  std::vector<msg::GoalState> observed, recorded;
+  for (const auto& s : goals.all())
+    if (s.goal_id == goal.goal_id) observed.push_back(s.state);
+  for (const auto& s : decode_all<msg::GoalStatus>(c.by_topic.at("autonomy/nav/goal_status"), "autonomy/nav/goal_status"))
+    if (s.goal_id == goal.goal_id) recorded.push_back(s.state);
+  EXPECT_EQ(recorded, observed);
+  for (const auto& [topic, messages] : c.by_topic)
+    for (const auto& m : messages) {
+      EXPECT_GT(m.publish_time, 0u) << topic;
+      EXPECT_LE(m.publish_time, m.log_time + 1'000'000'000ull) << topic << ": published after it was received";
+    }
+  const auto robot_states = c.by_topic.at("autonomy/robot/state").size();
+  EXPECT_GT(robot_states, 10u);
+
+  // The independent readers: the same counts and values from the embedded schemas.
+  const std::string node = find_node();
+  if (node.empty())
+    GTEST_SKIP() << "node is not installed: the MCAP validation by independent readers (tests/node) was skipped; "
+                    "install nodejs and run deploy/test.sh";
+  const std::string modules = std::string(AUTONOMY_SOURCE_DIR) + "/tests/node/node_modules/@mcap/core";
+  struct stat st{};
+  ASSERT_EQ(::stat(modules.c_str(), &st), 0) << "the npm packages are missing: npm ci --prefix "
+                                             << AUTONOMY_SOURCE_DIR << "/tests/node (deploy/test.sh does this)";
+  std::ostringstream expect;
+  expect << R"({"counts":{"autonomy/nav/goal":1,"autonomy/map":1,"autonomy/robot/state":)" << robot_states << "},"
+         << R"("values":[{"topic":"autonomy/nav/goal","match":{"goal_id":"rec-goal-1"},"expect":{"robot_id":"r1","x":18,"y":2}}],)"
+         << R"("sequences":[{"topic":"autonomy/nav/goal_status","match":{"goal_id":"rec-goal-1"},"field":"state","values":[)";
+  for (size_t i = 0; i < observed.size(); ++i) expect << (i ? "," : "") << static_cast<int>(observed[i]);
+  expect << "]}]}";
+  const std::string expect_file = dir().file("expect.json");
+  write_file(expect_file, expect.str());
+  auto& validator = start("validate_recording", node,
+                          {std::string(AUTONOMY_SOURCE_DIR) + "/tests/node/validate_recording.js", file, expect_file}, false);
+  const auto v = validator.wait_for_exit(120s);
+  ASSERT_TRUE(v.has_value()) << "validate_recording.js did not finish";
+  EXPECT_TRUE(v->exited && v->code == 0) << v->describe() << "\n" << validator.log_tail();
+  std::fprintf(stderr, "%s\n", validator.log_tail(600).c_str());
+}
+
+TEST_F(RecordingTest, ARecorderKilledLeavesItsChunksReadable) {
+  join(kDomainKilled);
+  Recorder<msg::Heartbeat> beats(participant(), dds::topics::heartbeat);
+  start_simulator({"--wait-for", "behavior/r1"});
+  auto& behavior = start_behavior("r1");
+  ASSERT_TRUE(await_ready(beats, behavior));
+  const std::string file = dir().file("killed.mcap");
+  auto& recorder = start_recorder(file);
+  // At least three chunks on disk (robot states, clocks and heartbeats keep coming), then kill -9.
+  ASSERT_TRUE(await("three chunks in the file", [&] {
+    try {
+      return read_recording(file).report.chunks >= 3;
+    } catch (const mcap::McapError&) {
+      return false;  // not even the header yet
+    }
+  }));
+  recorder.kill_and_wait();
+
+  const auto c = read_recording(file);
+  EXPECT_FALSE(c.report.complete);
+  EXPECT_TRUE(c.report.truncated);
+  EXPECT_GE(c.report.chunks, 3u);
+  EXPECT_FALSE(c.report.note.empty());
+  ASSERT_GT(c.by_topic.count("autonomy/heartbeat"), 0u);
+  // Every message of the complete chunks decodes with its type.
+  EXPECT_GT(decode_all<msg::Heartbeat>(c.by_topic.at("autonomy/heartbeat"), "autonomy/heartbeat").size(), 0u);
+  if (c.by_topic.count("autonomy/robot/state"))
+    for (const auto& s : decode_all<msg::RobotState>(c.by_topic.at("autonomy/robot/state"), "autonomy/robot/state"))
+      EXPECT_EQ(s.robot_id, "r1");
+}
+
+}  // namespace
+}  // namespace autonomy::test
