@@ -71,6 +71,15 @@ struct WorldMap {
   std::vector<MapDoor> doors;
 };
 
+// A lockstep participant dropped (no ack within the timeout) or rejoined (idl/simulation.idl).
+struct LockstepChange {
+  uint64_t number = 0;
+  int64_t tick = 0;
+  std::string participant;
+  bool dropped = false;
+  std::string reason;
+};
+
 struct SimulatorStatus {
   int64_t tick = 0;
   int64_t sim_time_ns = 0;
@@ -84,6 +93,8 @@ struct SimulatorStatus {
   uint64_t team_messages_dropped_no_route = 0;
   uint64_t team_messages_dropped_lost = 0;
   uint64_t team_messages_dropped_invalid = 0;
+  std::vector<std::string> lockstep_dropped;
+  std::vector<LockstepChange> lockstep_changes;
 };
 
 struct DoorCommand {

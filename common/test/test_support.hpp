@@ -167,6 +167,11 @@ inline msg::SimulatorStatus make_sim_status(Variant v) {
   m.team_messages_dropped_no_route = 14;
   m.team_messages_dropped_lost = 15;
   m.team_messages_dropped_invalid = 16;
+  if (v == Variant::Full) {
+    m.lockstep_dropped = {"behavior/r2", kUtf8B};
+    m.lockstep_changes = {{1, 40, "behavior/r2", true, "did not acknowledge tick 40 within 2 s"},
+                          {2, 77, kUtf8A, false, ""}};
+  }
   return m;
 }
 
@@ -478,10 +483,12 @@ inline auto fields(const msg::WorldMap& m) {
   return std::make_tuple(m.name, m.width, m.height, rects, polygons, rasters, doors);
 }
 inline auto fields(const msg::SimulatorStatus& m) {
+  std::vector<std::tuple<uint64_t, int64_t, std::string, bool, std::string>> changes;
+  for (const auto& c : m.lockstep_changes) changes.emplace_back(c.number, c.tick, c.participant, c.dropped, c.reason);
   return std::make_tuple(m.tick, m.sim_time_ns, m.robots, m.lockstep_participants, m.commands_applied,
                          m.commands_rejected, m.participants_dropped, m.mean_step_us, m.team_messages_delivered,
                          m.team_messages_dropped_no_route, m.team_messages_dropped_lost,
-                         m.team_messages_dropped_invalid);
+                         m.team_messages_dropped_invalid, m.lockstep_dropped, changes);
 }
 inline auto fields(const msg::NavGoal& m) {
   return std::make_tuple(m.robot_id, m.goal_id, m.x, m.y, m.tolerance, m.constraint_set);

@@ -21,6 +21,8 @@ namespace {
 
 constexpr auto kHousekeepingPeriod = std::chrono::milliseconds(10);
 constexpr auto kStatusPeriod = std::chrono::milliseconds(200);
+// The status carries the last this many lockstep drops and rejoins.
+constexpr size_t kLockstepChangesKept = 32;
 // Readers of what others send the simulator (commands, acks, requests, team messages) keep all
 // samples: the history kept on this side never drops one (docs/topics.md, "What can drop").
 constexpr auto kInputQos = dds::QosClass::Queue;
@@ -272,8 +274,10 @@ void SimulatorNode::on_acks(std::vector<dds::Sample<msg::TickAck>> samples) {
     if (!s.valid) continue;
     if (spacecraft_) spacecraft_->on_ack(s.value.participant);  // the commander's sign of life
     if (barrier_.on_ack(s.value.participant, s.value.tick, s.value.commands_sent, s.value.quiet_until_tick) ==
-        LockstepBarrier::AckOutcome::Rejoined)
+        LockstepBarrier::AckOutcome::Rejoined) {
       spdlog::info("participant {} answered again at tick {} and rejoined lockstep", s.value.participant, s.value.tick);
+      lockstep_changed(s.value.participant, false, "it acknowledged tick " + std::to_string(s.value.tick) + " again");
+    }
   }
   advance_while_complete();
 }
@@ -290,10 +294,14 @@ void SimulatorNode::on_registrations(std::vector<dds::Sample<msg::LockstepRegist
       // holds a tick for its first plan must be waited for at the very first one.
       const bool before_start = holding_start();
       registered_once_.insert(name);
+      registration_ended_.erase(name);
+      const bool was_dropped = barrier_.is_dropped(name);
       if (barrier_.add(name, before_start))
         spdlog::info("participant {} joined lockstep at tick {}{}", name, tick_, before_start ? " (from this tick)" : "");
+      if (was_dropped) lockstep_changed(name, false, "it registered again");
     } else if (s.valid && !s.value.active) {
       barrier_.remove(name);  // it said so (a leaving LockstepClient writes active=false first)
+      registration_ended_.erase(name);
       // Left before this simulator read its registration (a test releasing the world while the
       // simulator still listened for another world): it was there, and holds the start no more.
       registered_once_.insert(name);
@@ -304,6 +312,7 @@ void SimulatorNode::on_registrations(std::vector<dds::Sample<msg::LockstepRegist
       // the world holds for a respawned or continued process, until the ack timeout drops it (a
       // later ack rejoins it).
       barrier_.silent(name);
+      registration_ended_.insert(name);
       spdlog::warn("participant {} is silent at tick {} (its registration ended without leaving): waited for up to {} s",
                    name, tick_, options_.settings.ack_timeout_s);
     }
@@ -345,8 +354,14 @@ void SimulatorNode::on_timer() {
     // A quiet tick waits for nobody's ack.
     for (const auto& p : quiet_ ? std::vector<std::string>{} : barrier_.expire(tick_, now_s, options_.settings.ack_timeout_s)) {
       ++participants_dropped_;
-      spdlog::warn("participant {} did not acknowledge tick {} within {} s: dropped from lockstep", p, tick_,
-                   options_.settings.ack_timeout_s);
+      lockstep_changed(p, true,
+                       fmt::format("it did not acknowledge tick {} within the ack timeout ({} s); {}", tick_,
+                                   options_.settings.ack_timeout_s,
+                                   registration_ended_.count(p)
+                                       ? "its registration had ended without leaving (DDS lease expired: the "
+                                         "process died, is stopped or is cut off)"
+                                       : "it is still registered (slow, stopped for less than its lease, or its "
+                                         "acks are lost)"));
     }
     if (!quiet_ && barrier_.current_tick() == tick_ && !barrier_.complete(tick_) &&
         now - clock_written_ >= std::chrono::seconds(1)) {
@@ -532,6 +547,14 @@ void SimulatorNode::write_picture() const {
   spdlog::info("picture of the run written to {}", options_.picture_svg);
 }
 
+void SimulatorNode::lockstep_changed(const std::string& participant, bool dropped, const std::string& reason) {
+  if (dropped)
+    spdlog::warn("participant {} dropped from lockstep at tick {}: {}", participant, tick_, reason);
+  lockstep_changes_.push_back({++lockstep_changes_count_, tick_, participant, dropped, reason});
+  while (lockstep_changes_.size() > kLockstepChangesKept) lockstep_changes_.pop_front();
+  publish_status();
+}
+
 void SimulatorNode::publish_status() {
   msg::SimulatorStatus s;
   s.tick = tick_;
@@ -546,6 +569,8 @@ void SimulatorNode::publish_status() {
   s.team_messages_dropped_no_route = messages_no_route_;
   s.team_messages_dropped_lost = messages_lost_;
   s.team_messages_dropped_invalid = messages_invalid_;
+  s.lockstep_dropped = barrier_.dropped();
+  s.lockstep_changes.assign(lockstep_changes_.begin(), lockstep_changes_.end());
   status_writer_.write(s);
 }
 

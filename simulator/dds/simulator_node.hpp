@@ -33,6 +33,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <deque>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -119,6 +120,9 @@ class SimulatorNode {
   void publish_status();
   void write_picture() const;
   void reject(const msg::VelocityCommand& command, const std::string& reason);
+  // A participant dropped from lockstep or taken back: logged, kept in the status's list of
+  // changes, and the status written at once (docs/topics.md, autonomy/sim/status).
+  void lockstep_changed(const std::string& participant, bool dropped, const std::string& reason);
 
   service::Service& service_;
   Scenario scenario_;
@@ -141,6 +145,11 @@ class SimulatorNode {
   uint64_t commands_applied_ = 0;
   uint64_t commands_rejected_ = 0;
   uint64_t participants_dropped_ = 0;
+  std::deque<msg::LockstepChange> lockstep_changes_;  // the last kLockstepChangesKept
+  uint64_t lockstep_changes_count_ = 0;
+  // Participants whose registration ended without leaving (lease expired) and that have not
+  // registered again: a drop says so.
+  std::set<std::string> registration_ended_;
   double step_compute_us_total_ = 0.0;
   std::ofstream trajectory_;
   TrajectoryRecorder paths_;

@@ -425,7 +425,9 @@ TEST_F(SystemTest, LockstepKilledBehaviorDoesNotHangSimulator) {
 
 // A behavior frozen (SIGSTOP) past the ack timeout is dropped; once it runs again its next ack
 // rejoins it and it stays in step. Its command for the rejoining tick may arrive before that ack
-// (this once left the barrier owing a command: dropped again every tick, one tick per 2 s).
+// (this once left the barrier owing a command: dropped again every tick, one tick per 2 s). The
+// drop and the rejoin are published (autonomy/sim/status: the dropped list and the numbered
+// changes, naming the participant and why) and `autonomy node watch` prints them.
 TEST_F(SystemTest, LockstepStalledBehaviorRejoinsAndStaysInStep) {
   join(kDomainStalledBehavior);
   Recorder<msg::Heartbeat> beats(participant(), dds::topics::heartbeat);
@@ -447,23 +449,48 @@ TEST_F(SystemTest, LockstepStalledBehaviorRejoinsAndStaysInStep) {
     scenario.replace(scenario.find(from), from.size(), "ack_timeout_s: 0.5");
     write_file(dir().file("scenario.pbtxt"), scenario);
   }
+  const bool with_tool = !std::string(AUTONOMY_CLI_BIN).empty();
+  if (with_tool)
+    start("autonomy-watch", AUTONOMY_CLI_BIN,
+          {"node", "watch", "--domain", std::to_string(kDomainStalledBehavior), "--no-relay", "behavior/r1"});
   start_simulator({"--config", dir().file("scenario.pbtxt"), "--wait-for", "behavior/r1"});
   auto& behavior = start_behavior("r1", {"--mission", dir().file("wander.pbtxt")});
   ASSERT_TRUE(await_ready(beats, behavior));
+  // With a 0.5 s ack timeout the behavior's start (spawn, map, mission) may already cost it a
+  // drop and a rejoin at tick 0 or 1: the freeze's drop is the one after what the status says now.
+  std::optional<msg::SimulatorStatus> before;
   ASSERT_TRUE(await("lockstep running with behavior/r1", [&] {
     poll_all();
-    return last_tick(clock) > 20;
+    before = last_status(sim_status);
+    return last_tick(clock) > 20 && before && contains(before->lockstep_participants, "behavior/r1") &&
+           before->lockstep_dropped.empty();
   }));
+  const uint64_t drops_before = before->participants_dropped;
+  const uint64_t changes_before = before->lockstep_changes.empty() ? 0 : before->lockstep_changes.back().number;
 
   behavior.signal(SIGSTOP);
   // Woken as soon as the simulator has dropped it, well inside the DDS lease.
+  std::optional<msg::SimulatorStatus> at_drop;
   const bool dropped = static_cast<bool>(await("the simulator to drop the frozen behavior/r1", [&] {
     poll_all();
-    const auto s = last_status(sim_status);
-    return s && s->participants_dropped >= 1;
+    at_drop = last_status(sim_status);
+    return at_drop && at_drop->participants_dropped > drops_before;
   }));
   behavior.signal(SIGCONT);
   ASSERT_TRUE(dropped);
+  // The status written at the drop names it, as dropped now and as the run's first change, why.
+  EXPECT_EQ(at_drop->lockstep_dropped, std::vector<std::string>{"behavior/r1"});
+  ASSERT_FALSE(at_drop->lockstep_changes.empty());
+  const msg::LockstepChange drop = at_drop->lockstep_changes.back();
+  EXPECT_EQ(drop.number, changes_before + 1);
+  EXPECT_EQ(drop.participant, "behavior/r1");
+  EXPECT_TRUE(drop.dropped);
+  EXPECT_NE(drop.reason.find("did not acknowledge tick " + std::to_string(drop.tick) + " within the ack timeout (0.5 s)"),
+            std::string::npos)
+      << drop.reason;
+  // Stopped for less than its lease: still registered, and the reason says so.
+  EXPECT_NE(drop.reason.find("still registered"), std::string::npos) << drop.reason;
+  EXPECT_FALSE(contains(at_drop->lockstep_participants, "behavior/r1"));
   ASSERT_TRUE(await("behavior/r1 rejoined", [&] {
     poll_all();
     const auto s = last_status(sim_status);
@@ -479,6 +506,26 @@ TEST_F(SystemTest, LockstepStalledBehaviorRejoinsAndStaysInStep) {
   ASSERT_TRUE(s.has_value());
   EXPECT_EQ(s->participants_dropped, drops_at_rejoin) << "dropped again after rejoining";
   EXPECT_TRUE(contains(s->lockstep_participants, "behavior/r1"));
+  // The rejoin is the change after the drop, and the last; nobody is dropped now.
+  EXPECT_TRUE(s->lockstep_dropped.empty());
+  ASSERT_FALSE(s->lockstep_changes.empty());
+  const msg::LockstepChange& back = s->lockstep_changes.back();
+  EXPECT_EQ(back.number, drop.number + 1);
+  EXPECT_EQ(back.participant, "behavior/r1");
+  EXPECT_FALSE(back.dropped);
+  EXPECT_GE(back.tick, drop.tick);
+  EXPECT_EQ(back.reason, "it acknowledged tick " + std::to_string(back.tick) + " again");
+  if (with_tool) {
+    // The tool prints both, in order, with the tick and the reason.
+    const std::string watched = read_file(dir().file("autonomy-watch.out"));
+    const auto dropped_line = watched.find("lockstep_dropped behavior/r1 at tick " + std::to_string(drop.tick) + ": " +
+                                           drop.reason);
+    ASSERT_NE(dropped_line, std::string::npos) << watched;
+    EXPECT_NE(watched.find("lockstep_rejoined behavior/r1 at tick " + std::to_string(back.tick) + ": " + back.reason,
+                           dropped_line),
+              std::string::npos)
+        << watched;
+  }
 }
 
 // 6. Bad velocity commands are rejected with a reason and counted; the robot does not move.

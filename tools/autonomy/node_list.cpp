@@ -4,6 +4,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 
 #include "common/dds/topics.hpp"
 #include "tools/autonomy/commands.hpp"
@@ -32,15 +33,19 @@ struct Listed {
 // processes of one name both show, and the watcher's silent processes.
 bool listen(const Interrupt& interrupt, const dds::Participant& participant, std::chrono::nanoseconds wait,
             const dds::Reader<msg::Heartbeat>& beats, const dds::Reader<msg::Heartbeat>& silent,
-            ProcessTable& heard, ProcessTable& remembered) {
+            const dds::Reader<msg::SimulatorStatus>& sim_status, ProcessTable& heard, ProcessTable& remembered,
+            std::optional<msg::SimulatorStatus>& status) {
   dds::WaitSet ws(participant);
   ws.attach(beats.data_condition(), 1);
   ws.attach(silent.data_condition(), 2);
   ws.attach(interrupt.condition(), 3);
+  ws.attach(sim_status.data_condition(), 4);
   const auto deadline = std::chrono::steady_clock::now() + wait;
   for (;;) {
     heard.update(beats.take());
     remembered.update(silent.take());
+    for (auto& st : sim_status.take())
+      if (st.valid) status = std::move(st.value);
     if (interrupt.requested()) return false;
     const auto left = deadline - std::chrono::steady_clock::now();
     if (left <= std::chrono::nanoseconds::zero()) return true;
@@ -56,9 +61,22 @@ int run(const Options& o, Context& ctx) {
   dds::Topic<msg::Heartbeat> silent_topic(participant, silent_heartbeat);
   dds::Reader<msg::Heartbeat> silent_reader(participant, silent_topic);
 
+  // The simulator's status says which lockstep participants it dropped (not waited for now).
+  dds::Topic<msg::SimulatorStatus> status_topic(participant, dds::topics::sim_status);
+  dds::Reader<msg::SimulatorStatus> status_reader(participant, status_topic);
+
   ProcessTable heard, remembered;
-  if (!listen(interrupt, participant, seconds(o.wait_s), reader, silent_reader, heard, remembered))
+  std::optional<msg::SimulatorStatus> sim_status;
+  if (!listen(interrupt, participant, seconds(o.wait_s), reader, silent_reader, status_reader, heard, remembered,
+              sim_status))
     return kExitInterrupted;
+  // name -> the tick it was dropped at (the latest drop of the status's list; -1 when not listed).
+  std::map<std::string, int64_t> lockstep_dropped;
+  if (sim_status) {
+    for (const auto& name : sim_status->lockstep_dropped) lockstep_dropped[name] = -1;
+    for (const auto& c : sim_status->lockstep_changes)
+      if (c.dropped && lockstep_dropped.count(c.participant)) lockstep_dropped[c.participant] = c.tick;
+  }
   const dds_time_t now = dds_time();
   auto age_of = [now](const ProcessView& r) { return static_cast<double>(now - r.source_timestamp) / 1e9; };
 
@@ -109,6 +127,7 @@ int run(const Options& o, Context& ctx) {
                      {"period_ms", b.period_ms},
                      {"from_watcher", l.from_watcher},
                      {"duplicate", duplicate(key, l)},
+                     {"lockstep_dropped", lockstep_dropped.count(key.name()) > 0},
                      {"world_id", b.world_id},
                      {"clock_samples_ignored", b.clock_samples_ignored},
                      {"detail", b.detail}});
@@ -132,6 +151,8 @@ int run(const Options& o, Context& ctx) {
     if (l.state == "stale") note = std::string("  last heard ") + (l.from_watcher ? "by a watcher, " : "") + "as " +
                                    msg::to_string(l.row->last.state);
     if (duplicate(key, l)) note += "  DUPLICATE";
+    if (const auto d = lockstep_dropped.find(key.name()); d != lockstep_dropped.end())
+      note += "  dropped from lockstep" + (d->second >= 0 ? " at tick " + std::to_string(d->second) : std::string());
     if (per_world.size() > 1 && l.row->last.world_id != 0) note += "  world " + std::to_string(l.row->last.world_id);
     if (l.row->last.clock_samples_ignored > 0)
       note += "  ignored " + std::to_string(l.row->last.clock_samples_ignored) + " clock samples";
@@ -161,14 +182,16 @@ Command add_node_list(CLI::App& node) {
       "the process has not been heard for 3 heartbeat periods (at least 1 s) or its DDS lease expired: hung, "
       "stopped (SIGSTOP), killed or cut off. A process that went silent before this command started is listed "
       "when a watcher remembers it (autonomy/heartbeat/silent: deploy/launch.sh runs `autonomy node watch`). "
-      "Cleanly stopped processes are not listed.");
+      "Cleanly stopped processes are not listed. A lockstep participant the simulator dropped (it did not "
+      "acknowledge a tick within the ack timeout; autonomy/sim/status) is noted \"dropped from lockstep at tick T\" "
+      "until it is back.");
   add_domain_option(cmd, o->domain);
   cmd->add_option("--wait", o->wait_s, "Seconds to listen before printing")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   cmd->add_flag("--json", o->json,
                 "Print one JSON array of {service, instance, host, pid, state, last_state, age_s, uptime_s, "
-                "period_ms, from_watcher}");
+                "period_ms, from_watcher, duplicate, lockstep_dropped, world_id, clock_samples_ignored, detail}");
   cmd->add_flag("-a,--all", o->all, "Also processes that stopped cleanly while this command listened (\"stopped\")");
   cmd->footer("Exit codes: 0 listed (also when none); 1 DDS error; 2 bad arguments; 130 Ctrl-C.");
   return {cmd, [o](Context& ctx) { return run(*o, ctx); }};

@@ -1,6 +1,6 @@
 // autonomy node watch: follow the heartbeats of our processes and say, one line each as it
 // happens, when one goes silent, is heard again, is hung (silent for its limit), stops or is
-// gone. deploy/launch.sh runs one per set to notice hung processes. While a process is silent,
+// gone; and when the simulator drops a lockstep participant or takes it back (autonomy/sim/status). deploy/launch.sh runs one per set to notice hung processes. While a process is silent,
 // its last heartbeat is republished on autonomy/heartbeat/silent so that `node list` started
 // later still shows it (stale) instead of dropping it.
 #include <signal.h>
@@ -12,6 +12,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 
 #include "common/dds/message_types.hpp"
 #include "common/dds/topics.hpp"
@@ -19,6 +20,7 @@
 #include "common/service/heartbeat.hpp"
 #include "tools/autonomy/commands.hpp"
 #include "tools/autonomy/liveliness.hpp"
+#include "tools/autonomy/lockstep_feed.hpp"
 #include "tools/autonomy/processes.hpp"
 #include "tools/json/msg_json.hpp"
 
@@ -32,6 +34,7 @@ struct WatchOptions {
   double hang_after_s = 10.0;
   bool json = false;
   bool relay = true;
+  bool lockstep = true;
 };
 
 int64_t monotonic_ns() {
@@ -81,6 +84,11 @@ json::Json to_json(const LivelinessEvent& e) {
   return {{"event", to_string(e.kind)},     {"service", e.process.service}, {"instance", e.process.instance},
           {"host", e.process.host},         {"pid", e.process.pid},         {"silent_s", e.silent_s},
           {"limit_s", e.limit_s},           {"last_state", msg::to_string(e.last.state)}};
+}
+
+json::Json to_json(const msg::LockstepChange& c) {
+  return {{"event", event_name(c)}, {"participant", c.participant}, {"tick", c.tick},
+          {"number", c.number},     {"reason", c.reason}};
 }
 
 // The silent processes on autonomy/heartbeat/silent: per name, the newest silent one's last
@@ -157,6 +165,14 @@ int run_watch(const WatchOptions& o, Context& ctx) {
   dds::WaitSet waitset(participant);
   waitset.attach(reader.data_condition(), 1);
   waitset.attach(interrupt.condition(), 2);
+  std::optional<dds::Topic<msg::SimulatorStatus>> status_topic;
+  std::optional<dds::Reader<msg::SimulatorStatus>> status_reader;
+  if (o.lockstep) {
+    status_topic.emplace(participant, dds::topics::sim_status);
+    status_reader.emplace(participant, *status_topic);
+    waitset.attach(status_reader->data_condition(), 3);
+  }
+  LockstepFeed lockstep;
 
   std::fprintf(stderr, "autonomy node watch: watching %s on domain %d; hung after %g s without a heartbeat%s\n",
                rules.only.empty() ? "every process" : (std::to_string(rules.only.size()) + " processes").c_str(),
@@ -170,6 +186,18 @@ int run_watch(const WatchOptions& o, Context& ctx) {
     for (const auto& e : monitor.check(table, monotonic_ns(), is_gone)) {
       print_line(o.json ? to_json(e).dump(-1, ' ', false, json::Json::error_handler_t::replace) : describe(e));
     }
+    if (status_reader)
+      for (const auto& st : status_reader->take()) {
+        if (!st.valid) continue;
+        uint64_t missed = 0;
+        for (const auto& c : lockstep.take(st.value, &missed)) {
+          if (missed > 0 && !o.json)
+            std::fprintf(stderr, "autonomy node watch: %llu lockstep changes were missed\n",
+                         static_cast<unsigned long long>(missed));
+          missed = 0;
+          print_line(o.json ? to_json(c).dump(-1, ' ', false, json::Json::error_handler_t::replace) : tools::describe(c));
+        }
+      }
     if (relay) relay->publish(monitor.silent(table));
     waitset.wait(std::chrono::milliseconds(100));
   }
@@ -185,7 +213,9 @@ Command add_node_watch(CLI::App& node) {
       "Follow the heartbeats and print one line per change, until Ctrl-C: EVENT SERVICE/INSTANCE pid PID on HOST: "
       "DETAIL, where EVENT is heard (for the first time), silent (not heard for 3 heartbeat periods, at least 1 s, or its DDS lease expired), "
       "heard_again, hung (silent for the limit), stopped (a clean stop) or gone (a process of this host that no "
-      "longer runs). While a process is silent its last heartbeat is republished on autonomy/heartbeat/silent, so "
+      "longer runs). Lockstep changes the simulator reports (autonomy/sim/status) are lines too: lockstep_dropped "
+      "PARTICIPANT at tick T: REASON (it did not acknowledge a tick within the ack timeout) and lockstep_rejoined "
+      "PARTICIPANT at tick T: REASON. While a process is silent its last heartbeat is republished on autonomy/heartbeat/silent, so "
       "that `autonomy node list` shows it as stale. deploy/launch.sh runs one for its set.");
   add_domain_option(cmd, o->domain);
   cmd->add_option("process", o->targets,
@@ -195,8 +225,10 @@ Command add_node_watch(CLI::App& node) {
       ->check(CLI::Range(0.0, 1e6))
       ->capture_default_str();
   cmd->add_flag("--json", o->json,
-                "One JSON object per line: {event, service, instance, host, pid, silent_s, limit_s, last_state}");
+                "One JSON object per line: {event, service, instance, host, pid, silent_s, limit_s, last_state}; "
+                "lockstep changes: {event, participant, tick, number, reason}");
   cmd->add_flag("!--no-relay", o->relay, "Do not republish silent processes on autonomy/heartbeat/silent");
+  cmd->add_flag("!--no-lockstep", o->lockstep, "Do not print the simulator's lockstep drops and rejoins");
   cmd->footer("Exit codes: 0 after Ctrl-C or SIGTERM; 1 DDS error; 2 bad arguments.");
   return {cmd, [o](Context& ctx) { return run_watch(*o, ctx); }};
 }

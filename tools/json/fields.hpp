@@ -291,6 +291,19 @@ struct Fields<msg::WorldMap> {
 };
 
 template <>
+struct Fields<msg::LockstepChange> {
+  static constexpr const char* name = "LockstepChange";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.field("number", m.number);
+    v.field("tick", m.tick);
+    v.field("participant", m.participant);
+    v.field("dropped", m.dropped);
+    v.field("reason", m.reason);
+  }
+};
+
+template <>
 struct Fields<msg::SimulatorStatus> {
   static constexpr const char* name = "SimulatorStatus";
   template <typename V, typename M>
@@ -307,6 +320,8 @@ struct Fields<msg::SimulatorStatus> {
     v.field("team_messages_dropped_no_route", m.team_messages_dropped_no_route);
     v.field("team_messages_dropped_lost", m.team_messages_dropped_lost);
     v.field("team_messages_dropped_invalid", m.team_messages_dropped_invalid);
+    v.field("lockstep_dropped", m.lockstep_dropped);
+    v.field("lockstep_changes", m.lockstep_changes);
   }
 };
 

@@ -176,6 +176,14 @@ void DdsType<msg::SimulatorStatus>::to_c(const msg::SimulatorStatus& v, C& out, 
   out.team_messages_dropped_no_route = v.team_messages_dropped_no_route;
   out.team_messages_dropped_lost = v.team_messages_dropped_lost;
   out.team_messages_dropped_invalid = v.team_messages_dropped_invalid;
+  out.lockstep_dropped = to_c_strings(v.lockstep_dropped, arena);
+  const auto nc = static_cast<uint32_t>(v.lockstep_changes.size());
+  auto* changes = arena.allocate<autonomy_LockstepChange>(nc);
+  for (uint32_t i = 0; i < nc; ++i) {
+    const msg::LockstepChange& c = v.lockstep_changes[i];
+    changes[i] = {c.number, c.tick, c_str(c.participant), c.dropped, c_str(c.reason)};
+  }
+  out.lockstep_changes = {nc, nc, changes, false};
 }
 
 msg::SimulatorStatus DdsType<msg::SimulatorStatus>::from_c(const C& in) {
@@ -192,6 +200,11 @@ msg::SimulatorStatus DdsType<msg::SimulatorStatus>::from_c(const C& in) {
   v.team_messages_dropped_no_route = in.team_messages_dropped_no_route;
   v.team_messages_dropped_lost = in.team_messages_dropped_lost;
   v.team_messages_dropped_invalid = in.team_messages_dropped_invalid;
+  v.lockstep_dropped = from_c_strings(in.lockstep_dropped);
+  for (uint32_t i = 0; i < in.lockstep_changes._length; ++i) {
+    const auto& c = in.lockstep_changes._buffer[i];
+    v.lockstep_changes.push_back({c.number, c.tick, from_c_str(c.participant), c.dropped, from_c_str(c.reason)});
+  }
   return v;
 }
 

@@ -1,6 +1,7 @@
-// ProcessTable and LivelinessMonitor without DDS: heartbeats folded into one row per process,
+// ProcessTable, LivelinessMonitor and LockstepFeed without DDS: heartbeats folded into one row per process,
 // and the silent / heard again / hung / stopped / gone judgement on a clock the test drives.
 #include "tools/autonomy/liveliness.hpp"
+#include "tools/autonomy/lockstep_feed.hpp"
 
 #include <gtest/gtest.h>
 
@@ -181,6 +182,42 @@ TEST(LivelinessMonitorTest, WatchesOnlyTheNamedProcesses) {
   // Not yet hung: the default is 10 s.
   ASSERT_EQ(kinds(events), (std::vector<Kind>{Kind::Heard, Kind::Silent}));
   EXPECT_EQ(events[1].process.instance, "r1");
+}
+
+msg::SimulatorStatus status_with(std::vector<msg::LockstepChange> changes) {
+  msg::SimulatorStatus s;
+  s.lockstep_changes = std::move(changes);
+  return s;
+}
+
+std::vector<uint64_t> numbers(const std::vector<msg::LockstepChange>& changes) {
+  std::vector<uint64_t> out;
+  for (const auto& c : changes) out.push_back(c.number);
+  return out;
+}
+
+// Each change once, in order, whichever status samples arrive; a gap beyond the status's list is
+// counted; a new simulator run (numbers from 1 again) starts afresh.
+TEST(LockstepFeedTest, EachChangeOnceInOrderWithGapsCountedAndNewRunsAfresh) {
+  LockstepFeed feed;
+  const msg::LockstepChange d1{1, 40, "behavior/r2", true, "it did not acknowledge tick 40"};
+  const msg::LockstepChange r2{2, 90, "behavior/r2", false, "it acknowledged tick 90 again"};
+  const msg::LockstepChange d3{3, 95, "courier", true, "it did not acknowledge tick 95"};
+  uint64_t missed = 99;
+  EXPECT_TRUE(feed.take(status_with({}), &missed).empty());
+  EXPECT_EQ(missed, 0u);
+  EXPECT_EQ(numbers(feed.take(status_with({d1}), &missed)), std::vector<uint64_t>{1});
+  EXPECT_TRUE(feed.take(status_with({d1}), &missed).empty());  // the same status again: nothing new
+  EXPECT_EQ(numbers(feed.take(status_with({d1, r2, d3}), &missed)), (std::vector<uint64_t>{2, 3}));
+  EXPECT_EQ(missed, 0u);
+  // 4..9 fell out of the list before this reader saw them.
+  const msg::LockstepChange d10{10, 500, "behavior/r1", true, "x"};
+  EXPECT_EQ(numbers(feed.take(status_with({d10}), &missed)), std::vector<uint64_t>{10});
+  EXPECT_EQ(missed, 6u);
+  // A new simulator run.
+  EXPECT_EQ(numbers(feed.take(status_with({d1, r2}), &missed)), (std::vector<uint64_t>{1, 2}));
+  EXPECT_EQ(describe(d1), "lockstep_dropped behavior/r2 at tick 40: it did not acknowledge tick 40");
+  EXPECT_EQ(describe(r2), "lockstep_rejoined behavior/r2 at tick 90: it acknowledged tick 90 again");
 }
 
 }  // namespace
