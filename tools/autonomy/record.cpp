@@ -75,7 +75,7 @@ void print_progress(std::ostream& out, const std::map<std::string, Recorded>& re
   lines_drawn = lines;
 }
 
-enum Tag : dds_attach_t { kInterrupt = 1, kData = 2 };
+enum RecordTag : dds_attach_t { kRecordInterrupt = 1, kRecordData = 2 };
 
 int run(const RecordOptions& o, Context& ctx) {
   const auto& catalogue = recording::recordable_topics();
@@ -125,12 +125,12 @@ int run(const RecordOptions& o, Context& ctx) {
   Interrupt interrupt(ctx.signals, participant);
   Discovery discovery(participant);
   dds::WaitSet waitset(participant);
-  waitset.attach(interrupt.condition(), kInterrupt);
+  waitset.attach(interrupt.condition(), kRecordInterrupt);
   std::map<std::string, Recorded> recorded;
   for (const auto* t : selected) {
     auto& r = recorded[t->name];
     r.reader = std::make_unique<recording::RawReader>(participant, *t);
-    waitset.attach(r.reader->data_condition(), kData);
+    waitset.attach(r.reader->data_condition(), kRecordData);
   }
   std::map<std::string, uint16_t> schema_ids;
   std::set<std::string> foreign_reported;
