@@ -186,9 +186,15 @@ std::variant<PreparedRun, msg::PlanningReply> prepare_run(const msg::PlanningReq
 
 std::vector<std::string> conflicting_statements(const std::string& explanation) {
   static const std::string kTemporal = "temporal conflict between: ";
-  if (explanation.rfind(kTemporal, 0) != 0) return {explanation};
+  static const std::string kGoals = "search exhausted: no plan achieves together: ";
+  std::size_t at = 0;
+  if (explanation.rfind(kTemporal, 0) == 0)
+    at = kTemporal.size();
+  else if (explanation.rfind(kGoals, 0) == 0)
+    at = kGoals.size();
+  else
+    return {explanation};
   std::vector<std::string> out;
-  std::size_t at = kTemporal.size();
   while (at <= explanation.size()) {
     const std::size_t next = explanation.find("; ", at);
     out.push_back(

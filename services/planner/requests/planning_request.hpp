@@ -53,7 +53,8 @@ struct RunControl {
 msg::PlanningReply run_planning(const msg::PlanningRequest& request, const PreparedRun& run,
                                 const RunControl& control);
 
-// "temporal conflict between: a; b; c" -> {a, b, c}; any other explanation as one statement.
+// "temporal conflict between: a; b; c" (or "search exhausted: no plan achieves together: a;
+// b") -> {a, b, c}; any other explanation as one statement.
 std::vector<std::string> conflicting_statements(const std::string& explanation);
 
 }  // namespace autonomy::planner

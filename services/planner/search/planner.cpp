@@ -1,5 +1,7 @@
 #include "planner.hpp"
 
+#include <algorithm>
+
 namespace autonomy::planner {
 
 const char* to_string(PlanStatus status) {
@@ -19,6 +21,61 @@ const char* to_string(PlanStatus status) {
 }
 
 namespace {
+
+// The problem with only the goals in `keep` (initial values stay); relations that name a goal
+// left out go with it.
+PlanningProblem with_goals(const PlanningProblem& p, const std::vector<bool>& keep) {
+  PlanningProblem out = p;
+  out.facts.clear();
+  out.relations.clear();
+  out.objective = pb::Problem::NONE;  // feasibility only
+  std::vector<int> index(p.facts.size(), -1);
+  for (std::size_t f = 0; f < p.facts.size(); ++f) {
+    if (!p.facts[f].initial && !keep[f]) continue;
+    index[f] = int(out.facts.size());
+    out.facts.push_back(p.facts[f]);
+  }
+  for (const FactRelationDef& r : p.relations) {
+    if (index[r.from] < 0 || index[r.to] < 0) continue;
+    FactRelationDef copy = r;
+    copy.from = index[r.from];
+    copy.to = index[r.to];
+    out.relations.push_back(copy);
+  }
+  return out;
+}
+
+// Deletion filtering over the goals: each goal left out in turn stays out when the others are
+// still proved infeasible (exhausted search); an undecided test (budget) keeps it. What stays
+// cannot all hold together; it is minimal when every test was decided.
+std::string explain_exhausted(const DomainModel& model, const PlanningProblem& problem,
+                              const PlanningOptions& options) {
+  std::vector<bool> keep(problem.facts.size(), true);
+  std::size_t goals = 0, left = options.explanation_decisions;
+  for (const FactDef& f : problem.facts) goals += !f.initial;
+  if (goals < 2 || left == 0) return {};
+  PlanningOptions inner = options;
+  inner.on_improvement = nullptr;
+  inner.explanation_decisions = 0;
+  for (std::size_t f = 0; f < problem.facts.size() && left > 0; ++f) {
+    if (problem.facts[f].initial) continue;
+    if (options.termination.stop && options.termination.stop()) break;
+    keep[f] = false;
+    inner.termination.max_decisions = std::min(left, options.termination.max_decisions);
+    const PlanResult r = make_plan(model, with_goals(problem, keep), inner);
+    left -= std::min(left, r.statistics.decisions + 1);
+    if (r.status != PlanStatus::kInfeasible) keep[f] = true;
+  }
+  std::string text;
+  for (std::size_t f = 0; f < problem.facts.size(); ++f) {
+    if (problem.facts[f].initial || !keep[f]) continue;
+    text += (text.empty() ? "" : "; ") + std::string("goal ") +
+            (problem.facts[f].label.empty() ? std::to_string(f) : problem.facts[f].label) + " (" +
+            problem.facts[f].where + ")";
+  }
+  return text;
+}
+
 void add(SearchStatistics& total, const SearchStatistics& s) {
   total.decisions += s.decisions;
   total.backtracks += s.backtracks;
@@ -63,8 +120,12 @@ PlanResult make_plan(const DomainModel& model, const PlanningProblem& problem,
       if (!result.plan) {
         result.status = out.status == SearchStatus::kExhausted ? PlanStatus::kInfeasible
                                                                : PlanStatus::kOutOfBudget;
-        if (result.status == PlanStatus::kInfeasible)
+        if (result.status == PlanStatus::kInfeasible) {
           result.explanation = "every choice of slots, merges and values fails (search exhausted)";
+          const std::string goals = explain_exhausted(model, problem, options);
+          if (!goals.empty())
+            result.explanation = "search exhausted: no plan achieves together: " + goals;
+        }
       } else {
         result.status =
             out.status == SearchStatus::kExhausted ? PlanStatus::kOptimal : PlanStatus::kPlanFound;

@@ -16,6 +16,10 @@ struct PlanningOptions {
   EngineOptions engine_options;
   Termination termination;
   std::function<void(const FlexiblePlan&)> on_improvement;
+  // An exhausted search names a small set of goals that cannot all hold (deletion filtering:
+  // each goal left out in turn, kept out while the rest stays infeasible), within this many
+  // decisions in all and the termination's stop condition; 0: no explanation.
+  std::size_t explanation_decisions = 20000;
 };
 
 enum class PlanStatus {

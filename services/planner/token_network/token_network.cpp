@@ -576,16 +576,34 @@ bool TokenNetwork::exclusion_propagation() {
                      tokens_[id].min_duration});
         members.push_back(id);
       }
-      std::vector<Window> by_lct = w;
+      std::vector<std::size_t> by_lct(w.size());
+      for (std::size_t k = 0; k < w.size(); ++k) by_lct[k] = k;
       std::sort(by_lct.begin(), by_lct.end(),
-                [](const Window& a, const Window& b) { return a.lct < b.lct; });
-      for (const Window& from : by_lct) {
+                [&](std::size_t a, std::size_t b) { return w[a].lct < w[b].lct; });
+      for (std::size_t f : by_lct) {
+        const Window& from = w[f];
         Time load = 0;
-        for (const Window& x : by_lct) {
+        std::vector<std::size_t> within;  // the tokens that must fit in [from.est, x.lct]
+        for (std::size_t k : by_lct) {
+          const Window& x = w[k];
           if (x.est < from.est) continue;
           load += x.d;
+          within.push_back(k);
           if (from.est + load > x.lct) {
-            conflict_ = "overload on " + timelines_[&ids - &by_timeline[0]].name;
+            // Name the tokens that cannot all fit, each with its statement (issue 29).
+            conflict_ = "overload on " + timelines_[&ids - &by_timeline[0]].name + " in [" +
+                        std::to_string(from.est) + ", " + std::to_string(x.lct) +
+                        "]: the durations of ";
+            for (std::size_t i = 0; i < within.size(); ++i) {
+              const Token& t = tokens_[members[within[i]]];
+              conflict_ += (i ? "; " : "") + token_text(members[within[i]]);
+              if (t.fact >= 0) {
+                const FactDef& fact = problem_.facts[std::size_t(t.fact)];
+                conflict_ += " (" + (fact.initial ? std::string("initial value") : "goal " + fact.label) +
+                             ", " + fact.where + ")";
+              }
+            }
+            conflict_ += " add up to " + std::to_string(load) + ", more than the window holds";
             return false;
           }
         }

@@ -189,6 +189,9 @@ TEST(PlanningRequest, ConflictExplanationsSplitIntoStatements) {
             (std::vector<std::string>{"a:1: x", "b:2: y"}));
   EXPECT_EQ(conflicting_statements("overload on s.camera"),
             (std::vector<std::string>{"overload on s.camera"}));
+  EXPECT_EQ(conflicting_statements(
+                "search exhausted: no plan achieves together: goal a (p:5); goal b (p:6)"),
+            (std::vector<std::string>{"goal a (p:5)", "goal b (p:6)"}));
 }
 
 }  // namespace

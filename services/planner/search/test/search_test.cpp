@@ -90,6 +90,22 @@ TEST(Search, TwoPicturesAtOnceExhaustTheSearch) {
   PlanResult r = make_plan(c.model, c.problem, options);
   EXPECT_EQ(r.status, PlanStatus::kInfeasible) << to_string(r.status);
   EXPECT_GT(r.statistics.backtracks, 0u);
+  // Deletion filtering names the two goals (each with its line), not the initial value.
+  EXPECT_EQ(r.explanation,
+            "search exhausted: no plan achieves together: goal a (test.problem:5); goal b "
+            "(test.problem:6)");
+  // A third goal that fits with either is left out of the explanation.
+  Loaded three = load(kCameraModel,
+                      "problem p\nhorizon 100\nobject s : Spacecraft\n"
+                      "initial s.attitude == pointAt(comet)\n"
+                      "goal z: s.camera == picture(comet) start [80, 90]\n"
+                      "goal a: s.camera == picture(comet) start [30, 30]\n"
+                      "goal b: s.camera == picture(comet) start [32, 32] duration [9, 9]\n");
+  PlanResult t = make_plan(three.model, three.problem, options);
+  EXPECT_EQ(t.status, PlanStatus::kInfeasible) << to_string(t.status);
+  EXPECT_EQ(t.explanation,
+            "search exhausted: no plan achieves together: goal a (test.problem:6); goal b "
+            "(test.problem:7)");
 }
 
 Loaded load_text(const std::string& model_text, const std::string& problem_text) {
@@ -226,6 +242,20 @@ TEST(Search, TheDecisionBudgetStopsTheRun) {
   options.termination.stop = [&] { return stopped = true; };
   EXPECT_EQ(make_plan(c.model, c.problem, options).status, PlanStatus::kOutOfBudget);
   EXPECT_TRUE(stopped);
+}
+
+// Tokens that cannot all fit on their timeline from the start are named with their statements.
+TEST(Search, AnOverloadNamesTheGoalsThatCannotFit) {
+  Loaded c = load_text(
+      "model m\npredicate busy(j: int[0, 9]) duration [10, 10]\nclass M { attribute x = busy }\n",
+      "problem p\nhorizon 100\nobject o : M\ngoal a: o.x == busy(1) end [0, 15]\n"
+      "goal z: o.x == busy(3) start [40, 90]\ngoal b: o.x == busy(2) end [0, 15]\n");
+  PlanResult r = make_plan(c.model, c.problem, {});
+  EXPECT_EQ(r.status, PlanStatus::kInfeasible);
+  EXPECT_EQ(r.explanation,
+            "overload on o.x in [0, 15]: the durations of o.x == busy(1) (goal a, "
+            "test.problem:4); o.x == busy(2) (goal b, test.problem:6) add up to 20, more than "
+            "the window holds");
 }
 
 // Parameter propagation before any search (issue 29): `where a < b, b < a` on a range of 2^52
