@@ -199,6 +199,8 @@ std::optional<VelocityCommand> BehaviorNode::traffic_step(const geometry::Pose2&
       holding_.reset();
       return std::nullopt;
     case traffic::TrafficAction::Wait: {
+      // The grant delay with nobody ahead: a pause of a few ticks, not worth a status.
+      if (d.blocker.empty() && !tracker_->waiting()) return VelocityCommand{};
       if (!tracker_->waiting()) spdlog::info("robot {}: {}", options_.robot_id, d.reason);
       publish(tracker_->wait(d.reason, now_s));
       if (!holding_ || holding_->blocker != d.blocker) {

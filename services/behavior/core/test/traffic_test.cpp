@@ -63,16 +63,28 @@ TEST(PassageTest, OnlyDoorwaysTooNarrowForTwoAreReserved) {
   EXPECT_THROW(narrow_passages(two_rooms(), {0.0, 0.4, 0.1}), std::invalid_argument);
 }
 
-TEST(TrafficRuleTest, AlonePassageIsGrantedAfterTheGrantDelay) {
+TEST(TrafficRuleTest, ALoneRobotIsGrantedAtOnce) {
   TrafficRule rule(passages(), "r1");
-  auto d = rule.decide(Vec2(5, 2.0), north_path(), {}, 10.0);
+  auto far = robot("r9", Vec2(5, 14.0));  // 8.3 m from the box
+  const auto d = rule.decide(Vec2(5, 3.6), north_path(), {far}, 10.0);
+  EXPECT_EQ(d.action, TrafficAction::Drive);
+  EXPECT_EQ(d.claim.state, ClaimState::Holding);
+}
+
+TEST(TrafficRuleTest, WithARobotNearThePassageIsGrantedAfterTheGrantDelay) {
+  TrafficRule rule(passages(), "r1");
+  const std::vector<OtherRobot> near{robot("r9", Vec2(8, 8))};  // near, but not claiming it
+  auto d = rule.decide(Vec2(5, 2.0), north_path(), near, 10.0);
   EXPECT_EQ(d.action, TrafficAction::Drive);  // far from the box: approaches while requesting
   EXPECT_EQ(d.claim.state, ClaimState::Waiting);
   EXPECT_EQ(d.claim.request_time_s, 10.0);
-  d = rule.decide(Vec2(5, 2.6), north_path(), {}, 10.6);
+  d = rule.decide(Vec2(5, 3.6), north_path(), near, 10.3);
+  EXPECT_EQ(d.action, TrafficAction::Wait);  // close, the delay not over: stops, nobody named
+  EXPECT_EQ(d.blocker, "");
+  d = rule.decide(Vec2(5, 3.6), north_path(), near, 10.6);
   EXPECT_EQ(d.claim.state, ClaimState::Holding);
   EXPECT_EQ(d.claim.request_time_s, 10.0);  // the request keeps its time
-  d = rule.decide(Vec2(5, 8.0), {}, {}, 20.0);
+  d = rule.decide(Vec2(5, 8.0), {}, near, 20.0);
   EXPECT_EQ(d.claim.state, ClaimState::None);  // through: released
 }
 

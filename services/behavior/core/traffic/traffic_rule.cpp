@@ -39,7 +39,8 @@ TrafficRule::TrafficRule(std::vector<Passage> passages, std::string robot_id, Tr
     : passages_(std::move(passages)), robot_id_(std::move(robot_id)), settings_(settings) {
   if (robot_id_.empty()) throw std::invalid_argument("traffic rule: empty robot id");
   if (!positive_finite(settings.lookahead_m) || !positive_finite(settings.approach_m) ||
-      !std::isfinite(settings.grant_delay_s) || settings.grant_delay_s < 0.0 ||
+      !std::isfinite(settings.grant_delay_s) || settings.grant_delay_s < 0.0 || !std::isfinite(settings.quiet_radius_m) ||
+      settings.quiet_radius_m < 0.0 ||
       !positive_finite(settings.itinerary_expiry_s) || !positive_finite(settings.max_wait_s))
     throw std::invalid_argument("traffic rule settings must be positive and finite (grant delay >= 0)");
 }
@@ -121,7 +122,13 @@ TrafficDecision TrafficRule::decide(const geometry::Vec2& me, const std::vector<
     }
   }
   const bool ahead_of_me = first && first_key < mine;
-  if (in_it || (!ahead_of_me && now_s - claim_.request_time_s >= settings_.grant_delay_s)) {
+  // The grant delay lets a request made at the same moment arrive; with no other robot near
+  // the passage, none can ask in time to matter, so a lone robot does not stop at every door.
+  bool anyone_near = false;
+  for (const OtherRobot& o : others)
+    anyone_near |= o.id != robot_id_ && target->distance(o.position) <= settings_.quiet_radius_m;
+  const bool delay_over = !anyone_near || now_s - claim_.request_time_s >= settings_.grant_delay_s;
+  if (in_it || (!ahead_of_me && delay_over)) {
     claim_.state = ClaimState::Holding;
     waiting_since_s_.reset();
     d.claim = claim_;

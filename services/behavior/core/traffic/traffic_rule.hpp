@@ -11,7 +11,8 @@
 // A robot waits only outside every passage box (the wait starts `approach_m` before the box), so
 // it never holds one passage while waiting for another. A request is granted once it has stood
 // `grant_delay_s` with nobody ahead of it, so that two robots asking at the same moment see each
-// other's requests before either drives in (the itineraries carry the requests).
+// other's requests before either drives in (the itineraries carry the requests); at once when no
+// other robot is within `quiet_radius_m` of the passage (none could ask in time).
 // A robot inside the box whose itinerary is missing or older than `itinerary_expiry_s` (its
 // behavior died, or it never had one), or whose itinerary says it is parked there (no path, no
 // claim), holds nothing: the passage is an obstacle, and the node plans around it or ends the
@@ -52,7 +53,8 @@ struct OtherRobot {
 struct TrafficSettings {
   double lookahead_m = 4.0;         // passages on the path within this are claimed
   double approach_m = 1.5;          // a robot not granted stops to wait this far from the box
-  double grant_delay_s = 0.5;       // a request stands this long before it is granted
+  double grant_delay_s = 0.5;       // a request stands this long before it is granted...
+  double quiet_radius_m = 8.0;      // ...unless no other robot is this close to the passage
   double itinerary_expiry_s = 2.0;  // an older itinerary holds nothing
   double max_wait_s = 90.0;         // a longer wait ends the goal with the reason
 };
