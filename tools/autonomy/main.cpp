@@ -5,6 +5,48 @@
 #include "common/dds/error.hpp"
 #include "common/service/shutdown.hpp"
 #include "tools/autonomy/commands.hpp"
+#include "tools/autonomy/suggest.hpp"
+
+namespace {
+
+// Checks the command words (`autonomy topic echo ...`) before CLI11 parses: a wrong word gets
+// its name and the nearest command instead of CLI11's "A subcommand is required". Only levels
+// that take no options of their own are walked, so every word there must be a command.
+int check_command_words(const CLI::App& app, int argc, char** argv) {
+  const CLI::App* at = &app;
+  std::string path = "autonomy";
+  for (int i = 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    const auto subs = at->get_subcommands([](const CLI::App*) { return true; });
+    if (subs.empty() || word.empty() || word[0] == '-') return 0;
+    std::vector<std::string> names;
+    const CLI::App* next = nullptr;
+    for (const auto* s : subs) {
+      names.push_back(s->get_name());
+      if (s->get_name() == word) next = s;
+    }
+    if (!next) {
+      const auto hint = autonomy::tools::did_you_mean(word, names, 2);
+      std::string all;
+      for (size_t k = 0; k < names.size(); ++k) all += (k ? ", " : "") + names[k];
+      std::cerr << path << ": unknown command \"" << word << "\"" << (hint.empty() ? "" : "; " + hint)
+                << " (commands: " << all << "; " << path << " --help)\n";
+      return autonomy::tools::kExitUsage;
+    }
+    at = next;
+    path += " " + word;
+  }
+  const auto subs = at->get_subcommands([](const CLI::App*) { return true; });
+  if (!subs.empty() && at->get_require_subcommand_min() > 0) {
+    std::string all;
+    for (size_t k = 0; k < subs.size(); ++k) all += (k ? ", " : "") + subs[k]->get_name();
+    std::cerr << path << ": a command is needed after \"" << path << "\": " << all << " (" << path << " --help)\n";
+    return autonomy::tools::kExitUsage;
+  }
+  return 0;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace autonomy::tools;
@@ -35,6 +77,7 @@ int main(int argc, char** argv) {
                                          add_courier_send(*courier), add_courier_jobs(*courier),
                                          add_courier_cancel(*courier), add_courier_knowledge(*courier),
                                          add_plan(app), add_record(app), add_play(app), add_bag_info(*bag)};
+  if (const int bad = check_command_words(app, argc, argv); bad != 0) return bad;
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -9,6 +9,7 @@
 #include "common/dds/topics.hpp"
 #include "tools/autonomy/commands.hpp"
 #include "tools/autonomy/processes.hpp"
+#include "tools/autonomy/text.hpp"
 #include "tools/json/msg_json.hpp"
 
 namespace autonomy::tools {
@@ -166,7 +167,8 @@ int run(const Options& o, Context& ctx) {
   if (per_world.size() > 1)
     std::cerr << "autonomy node list: processes follow " << per_world.size() << " worlds on domain " << o.domain
               << " (one world per domain: a second simulator or a forged clock)\n";
-  if (listed.empty()) std::cerr << "no autonomy processes seen on domain " << o.domain << "\n";
+  if (listed.empty())
+    std::cerr << "no autonomy processes seen on domain " << o.domain << ": " << where_we_looked(o.domain) << "\n";
   return kExitOk;
 }
 

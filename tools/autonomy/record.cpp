@@ -194,6 +194,7 @@ int run(const RecordOptions& o, Context& ctx) {
   for (const auto& [name, r] : recorded) total += r.messages;
   print_line("recorded " + std::to_string(total) + " messages on " + std::to_string(writer.statistics().channel_count) +
              " topic(s) into " + o.output + " (" + human_bytes(writer.bytes_written()) + ")");
+  if (total == 0) std::cerr << "autonomy record: nothing received; " << where_we_looked(o.domain) << "\n";
   for (const auto& [name, r] : recorded)
     if (r.messages > 0) print_line("  " + name + ": " + std::to_string(r.messages) + " msgs, " + human_bytes(r.bytes));
   return kExitOk;

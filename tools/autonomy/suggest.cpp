@@ -67,7 +67,7 @@ namespace autonomy::tools {
 std::string unknown_topic_message(const std::string& who, const std::string& name,
                                   const std::vector<std::string>& topics) {
   const auto hint = did_you_mean(name, topics);
-  return who + ": unknown topic \"" + name + "\"; " + (hint.empty() ? "" : hint + " ") + "(`autonomy topic list` shows " +
+  return who + ": unknown topic \"" + name + "\"" + (hint.empty() ? "" : "; " + hint) + " (`autonomy topic list` shows " +
          std::to_string(topics.size()) + " topics)";
 }
 

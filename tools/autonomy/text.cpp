@@ -30,3 +30,21 @@ std::string utc_time(uint64_t ns) {
 }
 
 }  // namespace autonomy::tools
+
+#include <cstdlib>
+
+namespace autonomy::tools {
+
+std::string where_we_looked(int domain) {
+  const char* uri = std::getenv("CYCLONEDDS_URI");
+  std::string s = "looked on DDS domain " + std::to_string(domain) + " (--domain or AUTONOMY_DOMAIN) with ";
+  if (uri && *uri)
+    s += "CYCLONEDDS_URI=" + std::string(uri);
+  else
+    s += "CYCLONEDDS_URI unset (Cyclone's default: the first multicast interface, not the project's loopback profile)";
+  s += "; the processes must use the same two: e.g. export CYCLONEDDS_URI=file://$PWD/deploy/dds/loopback.xml "
+       "AUTONOMY_DOMAIN=" + std::to_string(domain) + " (as in README, 'Running things yourself')";
+  return s;
+}
+
+}  // namespace autonomy::tools

@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "tools/autonomy/commands.hpp"
+#include "tools/autonomy/suggest.hpp"
 #include "tools/autonomy/discovery.hpp"
 
 namespace autonomy::tools {
@@ -26,7 +27,7 @@ int run_echo(const EchoOptions& o, Context& ctx) {
   const auto registry = TopicRegistry::catalogue();
   const TopicEntry* topic = registry.find(o.topic);
   if (!topic) {
-    std::cerr << "autonomy topic echo: unknown topic \"" << o.topic << "\"; known topics: " << registry.names() << "\n";
+    std::cerr << unknown_topic_message("autonomy topic echo", o.topic, registry.name_list()) << "\n";
     return kExitUsage;
   }
   const auto start = std::chrono::steady_clock::now();

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "tools/autonomy/commands.hpp"
+#include "tools/autonomy/suggest.hpp"
 #include "tools/autonomy/discovery.hpp"
 
 namespace autonomy::tools {
@@ -66,7 +67,7 @@ int run_hz(const HzOptions& o, Context& ctx) {
   const auto registry = TopicRegistry::catalogue();
   const TopicEntry* topic = registry.find(o.topic);
   if (!topic) {
-    std::cerr << "autonomy topic hz: unknown topic \"" << o.topic << "\"; known topics: " << registry.names() << "\n";
+    std::cerr << unknown_topic_message("autonomy topic hz", o.topic, registry.name_list()) << "\n";
     return kExitUsage;
   }
   const auto start = Clock::now();

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "tools/autonomy/commands.hpp"
+#include "tools/autonomy/text.hpp"
 #include "tools/autonomy/discovery.hpp"
 
 namespace autonomy::tools {
@@ -59,7 +60,8 @@ int run_topic_list(const TopicListOptions& o, Context& ctx) {
     (e.writer ? row.writers : row.readers).push_back(std::move(e));
   }
   if (topics.empty()) {
-    std::cerr << "no topics seen on domain " << o.domain << " within " << o.wait_s << " s\n";
+    std::cerr << "no topics seen on domain " << o.domain << " within " << o.wait_s << " s: " << where_we_looked(o.domain)
+              << "\n";
     return kExitOk;
   }
 

@@ -4,6 +4,7 @@
 
 #include "common/dds/error.hpp"
 #include "tools/autonomy/commands.hpp"
+#include "tools/autonomy/suggest.hpp"
 #include "tools/autonomy/processes.hpp"
 #include "tools/autonomy/topic_registry.hpp"
 
@@ -66,7 +67,7 @@ int run_pub(const PubOptions& o, Context& ctx) {
   const auto registry = TopicRegistry::catalogue();
   const TopicEntry* topic = registry.find(o.topic);
   if (!topic) {
-    std::cerr << "autonomy topic pub: unknown topic \"" << o.topic << "\"; known topics: " << registry.names() << "\n";
+    std::cerr << unknown_topic_message("autonomy topic pub", o.topic, registry.name_list()) << "\n";
     return kExitUsage;
   }
   json::Json message;

@@ -93,4 +93,10 @@ std::string TopicRegistry::names() const {
   return out;
 }
 
+std::vector<std::string> TopicRegistry::name_list() const {
+  std::vector<std::string> out;
+  for (const auto& e : entries_) out.push_back(e.name);
+  return out;
+}
+
 }  // namespace autonomy::tools

@@ -64,8 +64,9 @@ class TopicRegistry {
 
   const TopicEntry* find(std::string_view name) const;
   const std::vector<TopicEntry>& entries() const { return entries_; }
-  // "a, b, c": for error messages.
+  // "a, b, c": for help texts.
   std::string names() const;
+  std::vector<std::string> name_list() const;
 
  private:
   std::vector<TopicEntry> entries_;

@@ -11,6 +11,7 @@
 #include "common/dds/reader.hpp"
 #include "common/dds/topics.hpp"
 #include "common/dds/writer.hpp"
+#include "tools/autonomy/suggest.hpp"
 #include "tools/recording/idl_text.hpp"
 #include "tools/recording/raw_topic.hpp"
 
@@ -122,6 +123,22 @@ TEST(RawTopic, TakenCdrDecodesAndRepublishesUnchanged) {
   EXPECT_EQ(received.front().robot_id, "r1");
   EXPECT_EQ(received.front().x, 18.5);
   EXPECT_EQ(received.front().tolerance, 0.3);
+}
+
+// The CLI's "did you mean" for recorded and catalogue topics and command words.
+TEST(Suggest, NamesTheNearestTopicsAndCommands) {
+  using tools::nearest;
+  std::vector<std::string> topics;
+  for (const auto& t : recordable_topics()) topics.push_back(t.name);
+  EXPECT_EQ(nearest("autonomy/robot/stat", topics, 1), std::vector<std::string>{"autonomy/robot/state"});
+  const auto goal = nearest("goal", topics, 2);
+  ASSERT_EQ(goal.size(), 2u);
+  EXPECT_EQ(goal[0], "autonomy/nav/goal");
+  EXPECT_EQ(nearest("lst", {"list", "echo", "hz", "pub"}), std::vector<std::string>{"list"});
+  EXPECT_TRUE(nearest("xyzzy", topics).empty());
+  const auto text = tools::unknown_topic_message("autonomy topic echo", "autonomy/nav/gaol", topics);
+  EXPECT_NE(text.find("did you mean autonomy/nav/goal"), std::string::npos) << text;
+  EXPECT_EQ(text.find("autonomy/heartbeat"), std::string::npos) << "lists far names: " << text;
 }
 
 }  // namespace
