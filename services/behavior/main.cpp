@@ -44,6 +44,9 @@ int main(int argc, char** argv) {
                        "Plan resource file (plan_tool build): stored plans used when goal and constraint set match");
         app.add_option("--layers", layers_file,
                        "Mission file whose constraint layers goals may name in constraint_set");
+        app.add_flag("--traffic,!--no-traffic", options.traffic,
+                     "Fleet traffic (docs/traffic.md): publish an itinerary, reserve narrow passages, plan around "
+                     "robots that hold nothing (goal mode; default on)");
         app.add_option("--door-memory", options.doors.memory_s,
                        "Seconds a door seen closed is planned around without being seen again")
             ->check(CLI::PositiveNumber)
