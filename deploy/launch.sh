@@ -60,6 +60,8 @@ publishes every --heartbeat-period, 0.5 s by default):
     after an exit (same count and back-off); stop kills it and stops the set (exit code 1);
     ignore only reports it.
 When a respawned process is ready, the launcher says "launch: set 'SET' ready again".
+The watcher also reports the simulator's lockstep drops ("launch: the simulator dropped NAME from
+lockstep at tick T: REASON") and rejoins ("launch: NAME is back in lockstep at tick T: REASON").
 While a process is silent, 'autonomy node list' shows it as stale (the watcher republishes its
 last heartbeat), also in a listing started after it went silent.
 
@@ -81,7 +83,11 @@ Options:
                     which its heartbeat reports), a line without @HOST on this machine (on the
                     bridge). The profile defaults to hosts (deploy/dds/hosts.xml, every host's
                     address a unicast peer); RUN_DIR/dds.env has the settings for tools such as
-                    autonomy node list (docs/hosts.md)
+                    autonomy node list (docs/hosts.md). The processes of a host are supervised
+                    from that host: their readiness check and their liveliness watcher run in
+                    its namespace (RUN_DIR/launch.watch.HOST), so a host cut off from this
+                    machine longer than the hang limit is not respawned (its processes still
+                    answer there); this machine's watcher only reports what it cannot hear
   -h, --help        this text
 
 A set file has one process per line:
@@ -399,11 +405,17 @@ set_ready=0
 stop_request=""
 stopped=0
 for i in "${!names[@]}"; do index_of_name[${names[$i]}]=$i; killed_hung[$i]=0; done
-# The liveliness watcher (autonomy node watch) appends its events to watch_file; the loop reads
-# them every tick (a short sleep child, so that 'wait -n' also wakes for them).
-watch_file="$run_dir/launch.watch"
-watch_pid="" watch_restart="" tick=""
-watch_rest=""  # an unfinished last line of watch_file
+# The liveliness watchers (autonomy node watch) append their events to their files; the loop reads
+# them every tick (a short sleep child, so that 'wait -n' also wakes for them). One watcher runs on
+# this machine (group "-": RUN_DIR/launch.watch) and, with --hosts, one inside each host's
+# namespace for the processes of that host (group HOST: RUN_DIR/launch.watch.HOST). A process is
+# judged (ready, silent, hung) by the watcher of its own host only: a host cut off from this
+# machine (a partition) does not make its processes hung, its own watcher still hears them. The
+# machine's watcher also reports what this machine does not hear and the simulator's lockstep drops.
+declare -A watch_file_of=() watch_fd_of=() watch_rest_of=() watch_pid_of=()  # group -> ...
+declare -A watch_group_of_pid=() watch_restart_of_pid=()  # watcher (or its restart timer) pid -> group
+watch_groups=(-)
+tick=""
 this_host=$(uname -n)
 
 # start_process I [respawn]: starts process I in its own session (SIGTERM reaches it when this
@@ -432,7 +444,8 @@ start_process() {
   echo "launch: started ${names[$i]}${hosts[$i]:+ on ${hosts[$i]}} (pid $pid): ${programs[$i]} ${args[*]}"
   # --pid: only this child's heartbeat counts, not a process of the same name from another set.
   # The heartbeat awaited names the process's host; node wait compares it with its own.
-  AUTONOMY_HOST=${hosts[$i]:-${AUTONOMY_HOST:-}} CYCLONEDDS_URI=$(with_identity operator) "$bin/autonomy" node wait --domain "$domain" --timeout "$timeout" --pid "$pid" "${names[$i]}" &
+  # On a host, it waits there: a host cut off from this machine still hears its own processes.
+  AUTONOMY_HOST=${hosts[$i]:-${AUTONOMY_HOST:-}} CYCLONEDDS_URI=$(with_identity operator) "${on_host[@]}" "$bin/autonomy" node wait --domain "$domain" --timeout "$timeout" --pid "$pid" "${names[$i]}" &
   ready_check[$!]=$i
 }
 
@@ -442,7 +455,7 @@ stop_set() {
   stopped=1
   set_state stopping
   local pid
-  for pid in "${!respawn_timer[@]}" "${!ready_check[@]}" $watch_pid $watch_restart $tick; do
+  for pid in "${!respawn_timer[@]}" "${!ready_check[@]}" "${!watch_group_of_pid[@]}" "${!watch_restart_of_pid[@]}" $tick; do
     kill -TERM "$pid" 2>/dev/null || true
   done
   stop_processes "$run_dir"
@@ -551,39 +564,64 @@ check_set_ready_again() {
   echo "launch: set '$set_name' ready again (${names[$1]} respawned as pid ${pid_of[$1]})"
 }
 
-# ---- Liveliness: the watcher, its events, hung processes.
+# ---- Liveliness: the watchers, their events, hung processes.
+# start_watch GROUP: the watcher of this machine (-: every process of the set, the silent relay,
+# lockstep drops) or of host GROUP (its processes only, inside its namespace).
 start_watch() {
-  local i targets=()
+  local g=$1 i targets=() on_host=() extra=()
   for i in "${!names[@]}"; do
+    [ "$g" = - ] || [ "${hosts[$i]}" = "$g" ] || continue
     if [ "${hang_afters[$i]}" = "$hang_after" ]; then targets+=("${names[$i]}"); else targets+=("${names[$i]}=${hang_afters[$i]}"); fi
   done
-  CYCLONEDDS_URI=$(with_identity operator) setpriv --pdeathsig TERM "$bin/autonomy" node watch --domain "$domain" --hang-after "$hang_after" "${targets[@]}" \
-    >>"$watch_file" 2>&1 </dev/null &
-  watch_pid=$!
+  if [ "$g" != - ]; then
+    on_host=(ip netns exec "$hosts_net-$g" env AUTONOMY_HOST="$g" AUTONOMY_DDS_INTERFACE=hnet0)
+    extra=(--no-relay --no-lockstep)
+  fi
+  CYCLONEDDS_URI=$(with_identity operator) setpriv --pdeathsig TERM "${on_host[@]}" "$bin/autonomy" node watch --domain "$domain" --hang-after "$hang_after" "${extra[@]}" "${targets[@]}" \
+    >>"${watch_file_of[$g]}" 2>&1 </dev/null &
+  watch_pid_of[$g]=$!
+  watch_group_of_pid[$!]=$g
 }
 
 start_tick() { sleep 0.25 & tick=$!; }
 
-# read_watch: handles the events appended to watch_file since the last call.
+# read_watch: handles the events each watcher appended to its file since the last call.
 read_watch() {
-  local line
-  while IFS= read -r -u "$watch_fd" line; do
-    handle_watch_event "$watch_rest$line"
-    watch_rest=""
+  local line g
+  for g in "${watch_groups[@]}"; do
+    while IFS= read -r -u "${watch_fd_of[$g]}" line; do
+      handle_watch_event "$g" "${watch_rest_of[$g]}$line"
+      watch_rest_of[$g]=""
+    done
+    watch_rest_of[$g]+=$line
   done
-  watch_rest+=$line
 }
 
-# handle_watch_event LINE: "EVENT NAME pid PID on HOST: DETAIL" from autonomy node watch, about
-# one of the set's processes as it runs now (events about an earlier pid are history).
+# handle_watch_event GROUP LINE: "EVENT NAME pid PID on HOST: DETAIL" from the watcher of GROUP,
+# about one of the set's processes as it runs now (events about an earlier pid are history), or
+# "lockstep_dropped|lockstep_rejoined PARTICIPANT at tick T: REASON" from this machine's watcher.
 handle_watch_event() {
-  local event name pid host detail i
-  read -r event name _ pid _ host detail <<<"$1" || true
+  local g=$1 event name pid host detail i
+  read -r event name _ pid _ host detail <<<"$2" || true
+  case $event in
+    lockstep_dropped) echo "launch: the simulator dropped $name from lockstep${2#lockstep_dropped $name}"; return 0 ;;
+    lockstep_rejoined) echo "launch: $name is back in lockstep${2#lockstep_rejoined $name}"; return 0 ;;
+  esac
   host=${host%:}
   [ -n "$name" ] && [ -n "$pid" ] || return 0
   i=${index_of_name[$name]:-}
   [ -n "$i" ] && [ "$host" = "${hosts[$i]:-$this_host}" ] && [ "$pid" = "${pid_of[$i]:-}" ] || return 0
   [ -n "${index_of_pid[$pid]:-}" ] || return 0
+  if [ "$g" != "${hosts[$i]:--}" ]; then
+    # This machine's watcher about a process of another host: what this machine hears, for the
+    # record; its host's watcher decides.
+    case $event in
+      silent) echo "launch: $name (pid $pid) on $host is not heard on this machine: $detail; its host's watcher supervises it" ;;
+      heard_again) echo "launch: $name (pid $pid) on $host is $detail on this machine" ;;
+      hung) echo "launch: $name (pid $pid) on $host has not been heard on this machine for its hang limit (${detail#hung: }); its host's watcher hears it, so it is not hung: left running" ;;
+    esac
+    return 0
+  fi
   case $event in
     heard) watched[$i]=1; became_ready "$i" ;;
     silent)
@@ -620,9 +658,17 @@ trap 'stop_request=SIGINT' INT
 trap 'stop_request=SIGTERM' TERM
 trap 'stop_request=SIGHUP' HUP  # the terminal closed
 
-: >"$watch_file"
-exec {watch_fd}<"$watch_file"
-start_watch
+for i in "${!names[@]}"; do
+  [ -z "${hosts[$i]}" ] || [[ " ${watch_groups[*]} " == *" ${hosts[$i]} "* ]] || watch_groups+=("${hosts[$i]}")
+done
+for g in "${watch_groups[@]}"; do
+  watch_file_of[$g]=$run_dir/launch.watch
+  [ "$g" = - ] || watch_file_of[$g]=$run_dir/launch.watch.$g
+  : >"${watch_file_of[$g]}"
+  exec {fd}<"${watch_file_of[$g]}"
+  watch_fd_of[$g]=$fd watch_rest_of[$g]=""
+  start_watch "$g"
+done
 for i in "${!names[@]}"; do start_process "$i"; done
 start_tick
 
@@ -652,16 +698,17 @@ while :; do
       echo "launch: no process of the set is left"
       stop_set; exit 0
     fi
-  elif [ "$who" = "$watch_pid" ]; then
+  elif [ -n "${watch_group_of_pid[$who]:-}" ]; then
+    g=${watch_group_of_pid[$who]}; unset "watch_group_of_pid[$who]"
     read_watch
-    echo "launch: the liveliness watcher (autonomy node watch, pid $who) ended: $(describe_exit "$status"); starting it again in 1 s"
-    tail -n 3 "$watch_file" | sed 's/^/  | /'
-    watch_pid=""
+    of_host=""; [ "$g" = - ] || of_host=" of host $g"
+    echo "launch: the liveliness watcher$of_host (autonomy node watch, pid $who) ended: $(describe_exit "$status"); starting it again in 1 s"
+    tail -n 3 "${watch_file_of[$g]}" | sed 's/^/  | /'
     sleep 1 &
-    watch_restart=$!
-  elif [ "$who" = "$watch_restart" ]; then
-    watch_restart=""
-    start_watch
+    watch_restart_of_pid[$!]=$g
+  elif [ -n "${watch_restart_of_pid[$who]:-}" ]; then
+    g=${watch_restart_of_pid[$who]}; unset "watch_restart_of_pid[$who]"
+    start_watch "$g"
   elif [ -n "${respawn_timer[$who]:-}" ]; then
     i=${respawn_timer[$who]}; unset "respawn_timer[$who]"
     start_process "$i" respawn

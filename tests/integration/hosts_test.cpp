@@ -12,6 +12,7 @@
 //    99     h99 / 99          HostsTeamTest.ThreeRobotsOnThreeHostsFinishTheirMissions
 //   100     h100 / 100        HostsTeamTest.ARobotHostCutOffForTenSecondsRejoinsAndTheMissionCompletes
 //   101     h101 / 101        HostsLaunchTest.AServiceKilledOnARemoteHostIsRespawnedAndTheMissionCompletes
+//   102     h102 / 102        HostsTeamTest.APacedWorldAcrossHostsAtTwentyPercentLossFinishesTheMissions
 // (ctest names them integration.<suite>.<test>.)
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -179,15 +180,30 @@ TEST_F(HostsExecutiveTest, TheDs1DayOnThreeHostsAtTwentyPercentLoss) {
 // robot's behavior on its own, in lockstep until every mission finished.
 class HostsTeamTest : public OnHosts<ProcessTest> {
  protected:
-  void start_team() {
+  // Lockstep, or paced: the world ticks on wall time (10 times faster than real time), whoever
+  // hears it.
+  void start_team(bool paced = false) {
     for (const char* h : {"r1", "r2", "r3"}) place("behavior-" + std::string(h), network().ns(h), h);
     place("simulator", network().ns("world"), "world");
     const std::string repo = AUTONOMY_SOURCE_DIR;
-    simulator_ = &start_simulator({"--config", repo + "/deploy/scenarios/recon.pbtxt", "--without-robots", "--mode",
-                                   "lockstep", "--stop-when-finished", "--max-ticks", "200000", "--metrics",
-                                   dir().file("metrics"), "--wait-for", "behavior/r1", "--wait-for", "behavior/r2",
-                                   "--wait-for", "behavior/r3"},
-                                  false);
+    std::vector<std::string> args = {"--config", repo + "/deploy/scenarios/recon.pbtxt", "--without-robots",
+                                     "--mode", "lockstep", "--stop-when-finished", "--max-ticks", "200000",
+                                     "--metrics", dir().file("metrics"), "--wait-for", "behavior/r1",
+                                     "--wait-for", "behavior/r2", "--wait-for", "behavior/r3"};
+    if (paced) {
+      std::string scenario = read_file(repo + "/deploy/scenarios/recon.pbtxt");
+      const std::string from = "mode: LOCKSTEP\n  step_s: 0.1\n";
+      EXPECT_NE(scenario.find(from), std::string::npos);
+      scenario.replace(scenario.find(from), from.size(), "mode: PACED\n  step_s: 0.1\n  warp: 10\n");
+      // The copy lives in the test's folder: its map file by its full path.
+      const std::string map = "yaml: \"recon/";
+      EXPECT_NE(scenario.find(map), std::string::npos);
+      scenario.replace(scenario.find(map), map.size(), "yaml: \"" + repo + "/deploy/scenarios/recon/");
+      write_file(dir().file("recon-paced.pbtxt"), scenario);
+      args = {"--config", dir().file("recon-paced.pbtxt"), "--without-robots", "--stop-when-finished",
+              "--max-ticks", "200000", "--metrics", dir().file("metrics")};
+    }
+    simulator_ = &start_simulator(args, false);
     for (const auto& [robot, x] : std::vector<std::pair<std::string, std::string>>{{"r1", "40"}, {"r2", "125"},
                                                                                      {"r3", "210"}})
       start_behavior(robot, {"--mission", repo + "/deploy/missions/comm_parallel_" + robot + ".pbtxt", "--start", x,
@@ -227,10 +243,29 @@ TEST_F(HostsTeamTest, ARobotHostCutOffForTenSecondsRejoinsAndTheMissionCompletes
       if (c.tick >= 300) return true;
     return false;
   }, 120s));
+  Recorder<msg::SimulatorStatus> sim_status(participant(), dds::topics::sim_status);
   ASSERT_TRUE(network().partition("r2"));
   std::this_thread::sleep_for(10s);
   ASSERT_TRUE(network().heal("r2"));
   expect_all_finished();
+  // The drop and the return are published in the world's status, naming r2 and why: its
+  // registration ended (the lease ran out: cut off 10 s, lease 3 s) before or after the ack
+  // timeout (2 s) dropped it.
+  sim_status.poll();
+  ASSERT_FALSE(sim_status.all().empty());
+  const auto& changes = sim_status.all().back().lockstep_changes;
+  const auto drop = std::find_if(changes.begin(), changes.end(),
+                                 [](const auto& c) { return c.participant == "behavior/r2" && c.dropped; });
+  ASSERT_NE(drop, changes.end()) << sim_status.all().back().lockstep_changes.size() << " changes";
+  EXPECT_NE(drop->reason.find("did not acknowledge tick " + std::to_string(drop->tick)), std::string::npos)
+      << drop->reason;
+  const auto rejoin = std::find_if(drop, changes.end(),
+                                   [](const auto& c) { return c.participant == "behavior/r2" && !c.dropped; });
+  ASSERT_NE(rejoin, changes.end());
+  EXPECT_TRUE(rejoin->reason == "it registered again" ||
+              rejoin->reason == "it acknowledged tick " + std::to_string(rejoin->tick) + " again")
+      << rejoin->reason;
+  EXPECT_TRUE(sim_status.all().back().lockstep_dropped.empty());
   const std::string log = read_file(dir().file("simulator.out"));
   // Cut off longer than the ack timeout (2 s) and the lease (3 s): dropped, named, then back.
   const auto dropped = log.find("participant behavior/r2 is silent");
@@ -242,10 +277,26 @@ TEST_F(HostsTeamTest, ARobotHostCutOffForTenSecondsRejoinsAndTheMissionCompletes
   EXPECT_TRUE(back) << log;
 }
 
+// A paced world (ticks on wall time, 10 times faster than real time, nobody waited for) on one
+// host and the three robots on theirs, at 20 % loss on every packet between hosts: clock samples,
+// robot states and velocity commands are lost and retransmitted (or replaced by newer ones), and
+// every mission still finishes.
+TEST_F(HostsTeamTest, APacedWorldAcrossHostsAtTwentyPercentLossFinishesTheMissions) {
+  NEED_ROOT();
+  make_hosts("h102", 102, {"world", "r1", "r2", "r3"});
+  for (const char* h : {"world", "r1", "r2", "r3"}) ASSERT_TRUE(network().loss(h, 20));
+  join(102);
+  start_team(true);
+  expect_all_finished();
+}
+
 // 5. deploy/launch.sh --hosts with the recon-parallel set's behaviors (respawn, journal) each on
-// its own robot host and the world in lockstep on a fourth: r2's behavior is killed (-9) on its
-// host mid-mission, the launcher respawns it there by the set's policy, it takes its robot back
-// and every mission completes.
+// its own robot host and the world in lockstep on a fourth. First r3's host is cut off for longer
+// than the launcher's hang limit (4 s here): its behavior is alive there, so it is not respawned
+// (its host's watcher hears it; this machine's only reports it cannot), and the world's drop of
+// r3 from lockstep shows in the launcher's report. Then r2's behavior is killed (-9) on its host
+// mid-mission, the launcher respawns it there by the set's policy, it takes its robot back and
+// every mission completes.
 class HostsLaunchTest : public OnHosts<ProcessTest> {
  protected:
   // The launched set, stopped whatever happens (before the network goes: a member of this class
@@ -262,6 +313,10 @@ class HostsLaunchTest : public OnHosts<ProcessTest> {
 };
 
 TEST_F(HostsLaunchTest, AServiceKilledOnARemoteHostIsRespawnedAndTheMissionCompletes) {
+  const auto trimmed = [](std::string t) {
+    while (!t.empty() && (t.back() == '\n' || t.back() == ' ')) t.pop_back();
+    return t;
+  };
   NEED_ROOT();
   make_hosts("h101", 101, {"world", "r1", "r2", "r3"});
   join(101);
@@ -288,7 +343,7 @@ TEST_F(HostsLaunchTest, AServiceKilledOnARemoteHostIsRespawnedAndTheMissionCompl
   registration.write({"test/hold", true});
   launched_.emplace(Launched{run});
   const std::string launch = "bash " + std::string(AUTONOMY_SOURCE_DIR) + "/deploy/launch.sh --hosts h101 --domain 101 "
-                             "--run-dir " + run + " --bin " + bin + " --detach " + dir().file("recon-hosts.set") +
+                             "--hang-after 4 --run-dir " + run + " --bin " + bin + " --detach " + dir().file("recon-hosts.set") +
                              " >" + dir().file("launch.out") + " 2>&1";
   ASSERT_EQ(std::system(launch.c_str()), 0) << read_file(dir().file("launch.out"));
   // The test acknowledges every tick it sees (the world waits for it like for any participant).
@@ -301,6 +356,32 @@ TEST_F(HostsLaunchTest, AServiceKilledOnARemoteHostIsRespawnedAndTheMissionCompl
     step();
     return latest >= 300;
   }, 120s));
+  // r3's host cut off for 7 s: longer than the hang limit (4 s) and the lease (3 s).
+  const std::string r3_pid = read_file(run + "/behavior-r3.pid");
+  ASSERT_TRUE(network().partition("r3"));
+  const auto cut_until = std::chrono::steady_clock::now() + 7s;
+  while (std::chrono::steady_clock::now() < cut_until) {
+    step();
+    std::this_thread::sleep_for(20ms);
+  }
+  ASSERT_TRUE(network().heal("r3"));
+  const std::string r3_hung_here = "launch: behavior/r3 (pid " + trimmed(r3_pid) + ") on r3 has not been heard on this "
+                                   "machine for its hang limit";
+  ASSERT_TRUE(await("the launcher to report r3 unheard here and r3 back in lockstep", [&] {
+    step();
+    const std::string log = read_file(run + "/launch.log");
+    return log.find(r3_hung_here) != std::string::npos &&
+           log.find("launch: behavior/r3 is back in lockstep at tick") != std::string::npos;
+  }, 60s)) << read_file(run + "/launch.log");
+  {
+    const std::string log = read_file(run + "/launch.log");
+    EXPECT_NE(log.find("launch: the simulator dropped behavior/r3 from lockstep at tick"), std::string::npos) << log;
+    EXPECT_EQ(log.find("behavior/r3 (pid " + trimmed(r3_pid) + ") is hung"), std::string::npos) << log;
+    EXPECT_EQ(log.find("behavior/r3: on-exit=respawn"), std::string::npos) << log;
+    EXPECT_EQ(log.find("respawning"), std::string::npos) << log;
+    EXPECT_EQ(read_file(run + "/behavior-r3.pid"), r3_pid) << "r3's behavior was replaced";
+    EXPECT_EQ(::kill(std::stoi(r3_pid), 0), 0) << "r3's behavior no longer runs";
+  }
   const std::string pid_file = run + "/behavior-r2.pid";
   const pid_t killed = std::stoi(read_file(pid_file));
   ASSERT_EQ(::kill(killed, SIGKILL), 0);
