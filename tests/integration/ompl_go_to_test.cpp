@@ -11,14 +11,19 @@
 //    183    OmplGoToTest.CourierDeliversThePapersTwoJobsOnOmplPaths
 //     77    OmplGoToTest.GoalsBesideOpenDoorLeavesAreReachedOnOmplPaths
 //     78    OmplGoToTest.GoalsBesideOpenDoorLeavesAreReachedOnTheGridField
+//     80    OmplGoToTest.TwentyRandomOfficeGoalsAreReachedOnTheGridFieldSeed2
+//    117    OmplGoToTest.TwentyRandomOfficeGoalsAreReachedOnOmplPathsSeed3
+//    118    OmplGoToTest.TwentyRandomOfficeGoalsAreReachedOnTheGridFieldSeed3
 #include "tests/support/goal_statuses.hpp"
 #include "tests/support/process_test.hpp"
 
+#include "common/geometry/shapes.hpp"
 #include "simulator/scenario/scenario_loader.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <sstream>
 
 namespace autonomy::test {
@@ -84,6 +89,9 @@ class OmplGoToTest : public ProcessTest {
   // Goals beside open door leaves, one after another: each is reached, and rhino never touches a
   // leaf or wall on the way (the simulator's ground truth).
   void reach_goals_beside_open_leaves();
+  // Twenty random goals where rhino's disc fits (0.55 m from every wall, desk and open leaf), every
+  // door held open: all reached, in order.
+  void reach_random_goals(unsigned seed);
 
   bool grid_planner_ = false;  // start_office: rhino's behavior on the grid field, not OMPL
   std::string scenario_;
@@ -308,6 +316,76 @@ void OmplGoToTest::reach_goals_beside_open_leaves() {
     EXPECT_FALSE(s.in_collision) << "tick " << s.tick << " at (" << s.x << ", " << s.y << ")";
   }
   EXPECT_GT(seen, 100u);
+}
+
+// The scenario text without its door schedules (script and random blocks): every door stays as it
+// starts, open.
+void hold_doors_open(std::string& text) {
+  for (const std::string opening : {"script {", "random {"}) {
+    for (std::size_t at = text.find(opening); at != std::string::npos; at = text.find(opening, at)) {
+      std::size_t end = at + opening.size();
+      for (int depth = 1; depth > 0 && end < text.size(); ++end) depth += text[end] == '{' ? 1 : text[end] == '}' ? -1 : 0;
+      text.erase(at, end - at);
+    }
+  }
+}
+
+// The class behind "18 of 20 random office goals reached" (issue 25): random goals landed beside
+// open door leaves, which neither planner had on its map. Seeds 2 and 3 on the grid field, seed 3
+// on OMPL paths. OMPL seed 2 reaches 19 (measured 2026-12-03, not a leaf): rhino ends goal 9 at
+// (6.98, 2.20), 0.30 m from a library bookshelf's corner, inside the grid's margin, and on the
+// next goal's path (planned from there) makes no progress for 10 s; the follower's recovery from
+// the margin is open (issue 25).
+void OmplGoToTest::reach_random_goals(unsigned seed) {
+  start_office(hold_doors_open);
+  const auto loaded = sim::load_scenario_file(scenario_);
+  ASSERT_TRUE(loaded.ok()) << loaded.error_text();
+  const auto& world = loaded.scenario->world;
+  ASSERT_FALSE(world.doors.empty());
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> ux(0.0, world.width), uy(0.0, world.height);
+  constexpr double kClear = 0.55;  // radius 0.3 + grid margin 0.1 + half a cell diagonal + leaf
+  std::vector<geometry::Vec2> goals;
+  while (goals.size() < 20) {
+    const geometry::Vec2 p(ux(rng), uy(rng));
+    bool fits = p.x() > kClear && p.y() > kClear && p.x() < world.width - kClear && p.y() < world.height - kClear;
+    for (const auto& o : world.obstacles) fits = fits && geometry::distance(o, p) >= kClear;
+    for (const auto& d : world.doors) {
+      const auto leaf = d.leaf(d.angle);
+      fits = fits && geometry::segment_distance(p, leaf.hinge, leaf.tip) >= kClear;
+    }
+    if (fits) goals.push_back(p);
+  }
+  int reached = 0;
+  std::string failures;
+  for (std::size_t i = 0; i < goals.size(); ++i) {
+    const std::string id = "random-" + std::to_string(i);
+    goal_writer_->write({"rhino", id, goals[i].x(), goals[i].y(), 0.0, ""});
+    ASSERT_TRUE(await_end(id)) << states_text(goals_->all());
+    if (of_goal(id).back().state == GoalState::Reached)
+      ++reached;
+    else
+      failures += " (" + std::to_string(goals[i].x()) + ", " + std::to_string(goals[i].y()) + "): " +
+                  states_text(of_goal(id)) + ";";
+  }
+  EXPECT_EQ(reached, 20) << failures;
+}
+
+TEST_F(OmplGoToTest, TwentyRandomOfficeGoalsAreReachedOnTheGridFieldSeed2) {
+  join(80);
+  grid_planner_ = true;
+  reach_random_goals(2);
+}
+
+TEST_F(OmplGoToTest, TwentyRandomOfficeGoalsAreReachedOnOmplPathsSeed3) {
+  join(117);
+  reach_random_goals(3);
+}
+
+TEST_F(OmplGoToTest, TwentyRandomOfficeGoalsAreReachedOnTheGridFieldSeed3) {
+  join(118);
+  grid_planner_ = true;
+  reach_random_goals(3);
 }
 
 TEST_F(OmplGoToTest, GoalsBesideOpenDoorLeavesAreReachedOnOmplPaths) {
