@@ -149,7 +149,8 @@ stays the advice for the motor schemas and the reference the OMPL paths are meas
   `deploy/sets/courier-ompl.set`).
 
 On a goal the behavior plans on the robot's grid (the map message's obstacles, polygons, rasters,
-the doors it believes closed, the goal's constraint layers; the robot's radius plus one cell),
+the doors it believes closed, open doors' leaves, the goal's constraint layers; the robot's radius
+plus one cell),
 checks the result against the grid again, and follows it with pure pursuit
 (`services/behavior/core/path/path_follower.hpp`) within the robot's speed and turn limits, with
 the avoid-obstacles schema on the range scan beside it (what the map does not have: people,
