@@ -176,7 +176,7 @@ TEST(ReaderFuzz, MutatedModelsAreReadOrRefusedWithTheirLocation) {
     Diagnostics problem_errors;
     const auto pbp = parse_problem(problem_text, p.problem, &problem_errors);
     ASSERT_TRUE(pbp) << to_string(problem_errors);
-    for (const auto& [m, what] : mutations(text, seed++, 400)) {
+    for (const auto& [m, what] : mutations(text, seed++, 300)) {
       ++cases;
       Diagnostics errors;
       auto pbm = parse_model(m, p.model, &errors);
