@@ -27,7 +27,7 @@ std::string qos_of(const mcap::Channel& c) {
   return s;
 }
 
-int run(const std::string& path) {
+int run_bag_info(const std::string& path) {
   mcap::Reader reader(path);
   std::map<uint16_t, PerChannel> per;
   uint64_t first = 0, last = 0, count = 0;
@@ -92,7 +92,7 @@ Command add_bag_info(CLI::App& bag) {
   cmd->add_option("file", *path, "MCAP file")->required()->check(CLI::ExistingFile);
   return {cmd, [path](Context&) {
             try {
-              return run(*path);
+              return run_bag_info(*path);
             } catch (const mcap::McapError& e) {
               std::cerr << "autonomy bag info: " << e.what() << "\n";
               return static_cast<int>(kExitFailed);

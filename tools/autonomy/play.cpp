@@ -25,7 +25,7 @@ struct PlayOptions {
 
 struct Stopped {};  // thrown out of the reader's callback on Ctrl-C
 
-int run(const PlayOptions& o, Context& ctx) {
+int run_play(const PlayOptions& o, Context& ctx) {
   // First pass: the channels, and where the recording starts.
   std::map<uint16_t, mcap::Channel> channels;
   std::map<uint16_t, std::string> schema_names;
@@ -130,7 +130,7 @@ Command add_play(CLI::App& app) {
       ->capture_default_str();
   return {cmd, [o](Context& ctx) {
             try {
-              return run(*o, ctx);
+              return run_play(*o, ctx);
             } catch (const mcap::McapError& e) {
               std::cerr << "autonomy play: " << e.what() << "\n";
               return static_cast<int>(kExitFailed);

@@ -77,7 +77,7 @@ void print_progress(std::ostream& out, const std::map<std::string, Recorded>& re
 
 enum RecordTag : dds_attach_t { kRecordInterrupt = 1, kRecordData = 2 };
 
-int run(const RecordOptions& o, Context& ctx) {
+int run_record(const RecordOptions& o, Context& ctx) {
   const auto& catalogue = recording::recordable_topics();
   std::vector<std::string> names;
   for (const auto& t : catalogue) names.push_back(t.name);
@@ -229,7 +229,7 @@ Command add_record(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--progress", o->progress, "Print progress every chunk even when stderr is not a terminal");
   cmd->add_flag("--no-progress", o->no_progress, "No progress on a terminal");
-  return {cmd, [o](Context& ctx) { return run(*o, ctx); }};
+  return {cmd, [o](Context& ctx) { return run_record(*o, ctx); }};
 }
 
 }  // namespace autonomy::tools
