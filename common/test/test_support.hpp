@@ -206,11 +206,6 @@ inline msg::MissionStatus make_mission_status(Variant v) {
   return m;
 }
 
-inline msg::GoalStatus make_goal_status(Variant v) {
-  msg::GoalStatus m;
-  m.robot_id = s(v, kUtf8A);
-  m.goal_id = s(v, kUtf8B);
-  m.state = msg::GoalState::Preempted;
 inline msg::Itinerary make_itinerary(Variant v) {
   msg::Itinerary m;
   m.robot_id = s(v, kUtf8A);
@@ -227,6 +222,11 @@ inline msg::Itinerary make_itinerary(Variant v) {
   return m;
 }
 
+inline msg::GoalStatus make_goal_status(Variant v) {
+  msg::GoalStatus m;
+  m.robot_id = s(v, kUtf8A);
+  m.goal_id = s(v, kUtf8B);
+  m.state = msg::GoalState::Preempted;
   m.reason = s(v, kUtf8C);
   m.tick = 707;
   m.distance_to_goal = 6.125;
@@ -497,18 +497,18 @@ inline auto fields(const msg::NavCancel& m) { return std::make_tuple(m.robot_id,
 inline auto fields(const msg::MissionStatus& m) {
   return std::make_tuple(m.robot_id, m.mission, m.state, m.event, m.reason, m.finished, m.tick);
 }
+inline auto fields(const msg::Itinerary& m) {
+  std::vector<std::tuple<double, double, int64_t>> path;
+  for (const auto& p : m.path) path.emplace_back(p.x, p.y, p.t_ns);
+  return std::make_tuple(m.robot_id, m.tick, m.sim_time_ns, m.radius, m.x, m.y, path, m.passage, m.claim,
+                         m.request_time_ns, m.waiting_for);
+}
 inline auto fields(const msg::GoalStatus& m) {
   return std::make_tuple(m.robot_id, m.goal_id, static_cast<int>(m.state), m.reason, m.tick, m.distance_to_goal);
 }
 
 inline auto fields(const msg::RangeScan& m) {
   return std::make_tuple(m.robot_id, m.tick, m.angle_min, m.angle_increment, m.max_range, m.ranges);
-}
-inline auto fields(const msg::Itinerary& m) {
-  std::vector<std::tuple<double, double, int64_t>> path;
-  for (const auto& p : m.path) path.emplace_back(p.x, p.y, p.t_ns);
-  return std::make_tuple(m.robot_id, m.tick, m.sim_time_ns, m.radius, m.x, m.y, path, m.passage, m.claim,
-                         m.request_time_ns, m.waiting_for);
 }
 inline auto fields(const msg::PoseEstimate& m) { return std::make_tuple(m.robot_id, m.tick, m.x, m.y, m.theta); }
 inline auto fields(const msg::DoorObservation& m) {

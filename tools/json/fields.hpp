@@ -366,22 +366,6 @@ struct Fields<msg::MissionStatus> {
 };
 
 template <>
-struct Fields<msg::GoalStatus> {
-  static constexpr const char* name = "GoalStatus";
-  template <typename V, typename M>
-  static void visit(V& v, M& m) {
-    v.key("robot_id", m.robot_id);
-    v.field("goal_id", m.goal_id);
-    v.field("state", m.state);
-    v.field("reason", m.reason);
-    v.field("tick", m.tick);
-    v.field("distance_to_goal", m.distance_to_goal);
-  }
-};
-
-// --- Simulator world v2: perception, ground truth, radio, team messages, door commands ---------
-
-template <>
 struct Fields<msg::ItineraryPoint> {
   static constexpr const char* name = "ItineraryPoint";
   template <typename V, typename M>
@@ -410,6 +394,22 @@ struct Fields<msg::Itinerary> {
     v.field("waiting_for", m.waiting_for);
   }
 };
+
+template <>
+struct Fields<msg::GoalStatus> {
+  static constexpr const char* name = "GoalStatus";
+  template <typename V, typename M>
+  static void visit(V& v, M& m) {
+    v.key("robot_id", m.robot_id);
+    v.field("goal_id", m.goal_id);
+    v.field("state", m.state);
+    v.field("reason", m.reason);
+    v.field("tick", m.tick);
+    v.field("distance_to_goal", m.distance_to_goal);
+  }
+};
+
+// --- Simulator world v2: perception, ground truth, radio, team messages, door commands ---------
 
 template <>
 struct Fields<msg::RangeScan> {

@@ -253,8 +253,8 @@ void BehaviorNode::become_ready_when_possible() {
                  options_.path.ompl.turning_radius_m, options_.path.budget_s * 1e3,
                  options_.path.ompl.turn_in_place_at_start ? ", turning in place at the start" : "");
   }
-  spdlog::info("robot {} ready at ({:.2f}, {:.2f}) on map '{}'", options_.robot_id, st.x, st.y, map_->name);
   if (options_.traffic) start_traffic(st.radius);
+  spdlog::info("robot {} ready at ({:.2f}, {:.2f}) on map '{}'", options_.robot_id, st.x, st.y, map_->name);
   service_.set_ready();
   // A journal with goals: the --goal was taken by an earlier run (respawned with the same flags).
   // A goal from the journal starts at the next tick (control_pending_tick).

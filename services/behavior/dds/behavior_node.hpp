@@ -182,9 +182,6 @@ class BehaviorNode {
   // The tracker's grid as the OMPL planner holds it, copied once per grid (a copy per plan cost
   // milliseconds on the recon map): a new grid has a new raster.
   std::shared_ptr<const OccupancyGrid> path_grid_;
-  // The tracker's grid as the OMPL planner holds it, copied once per grid (a copy per plan cost
-  // milliseconds on the recon map): a new grid has a new raster.
-  std::shared_ptr<const OccupancyGrid> path_grid_;
 
   // Fleet traffic (goal mode, options_.traffic).
   std::optional<traffic::TrafficRule> traffic_;
