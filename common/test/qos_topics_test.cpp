@@ -100,7 +100,7 @@ std::vector<CatalogueEntry> catalogue() {
 }
 
 TEST(TopicsTest, ForEachTopicVisitsEveryTopic) {
-  EXPECT_EQ(catalogue().size(), 45u);  // + 9 of the simulator world v2, + 3 of the office, + 5 of the courier, + 6 of the spacecraft, + 5 of the planner, + 2 of the executive
+  EXPECT_EQ(catalogue().size(), 46u);  // + 1 of fleet traffic (itinerary), + 9 of the simulator world v2, + 3 of the office, + 5 of the courier, + 6 of the spacecraft, + 5 of the planner, + 2 of the executive
 }
 
 TEST(TopicsTest, NamesAreUniqueAndPrefixed) {

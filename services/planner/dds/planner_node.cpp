@@ -190,6 +190,8 @@ void PlannerNode::enforce_deadlines() {
   const auto now = Clock::now();
   const auto margin = std::chrono::milliseconds(options_.margin_ms);
   std::vector<msg::PlanningReply> late;
+  if (last_watch_ != Clock::time_point{} && now - last_watch_ > margin) running_grace_until_ = now + margin;
+  last_watch_ = now;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     for (auto it = queue_.begin(); it != queue_.end();) {
@@ -205,7 +207,8 @@ void PlannerNode::enforce_deadlines() {
       it = queue_.erase(it);
     }
     for (auto& w : workers_) {
-      if (w->running.empty() || now < w->deadline + margin || !pending_.count(w->running))
+      if (w->running.empty() || now < std::max(w->deadline + margin, running_grace_until_) ||
+          !pending_.count(w->running))
         continue;
       // A stage that did not honour the budget: the requester is answered now, the search is
       // told to stop, and what it returns later is dropped.

@@ -78,6 +78,11 @@ class PlannerNode {
   msg::PlanningReply plan_one(const Queued& request, Worker& self);
   // Loop thread: answers what waited or ran past its deadline (see the class comment).
   void enforce_deadlines();
+  // When the watchdog last ran, and until when running searches get their margin again: a gap
+  // above the margin means this process did not run (SIGSTOP, starved), not that a search ignored
+  // its budget; the search answers with its best plan once it runs again.
+  Clock::time_point last_watch_{};
+  Clock::time_point running_grace_until_{};
   msg::PlanningReply out_of_time_reply(const msg::PlanningRequest& q, const std::string& detail);
   void post(Outgoing item);  // worker -> loop
 
