@@ -225,6 +225,9 @@ TEST(BrakeTest, NoDrivingIntoARobotCloserThanTheGap) {
   // Behind, or far enough: the command stands.
   EXPECT_EQ(brake_for_robots(east, Kinematics::Unicycle, 0.3, forward, {{Vec2(-0.7, 0.0), 0.3}}).vx, 0.9);
   EXPECT_EQ(brake_for_robots(east, Kinematics::Unicycle, 0.3, forward, {{Vec2(1.0, 0.0), 0.3}}).vx, 0.9);
+  // Passing beside it, 0.7 m between the centres' lines (more than the discs and 5 cm): no brake.
+  EXPECT_EQ(brake_for_robots(east, Kinematics::Unicycle, 0.3, forward, {{Vec2(0.3, 0.7), 0.3}}).vx, 0.9);
+  EXPECT_EQ(brake_for_robots(east, Kinematics::Unicycle, 0.3, forward, {{Vec2(0.3, 0.6), 0.3}}).vx, 0.0);
   // Holonomic: the world-frame velocity counts, not the heading.
   EXPECT_EQ(brake_for_robots(east, Kinematics::Holonomic, 0.3, {0.0, 0.5, 0.0}, {{Vec2(0.0, 0.7), 0.3}}).vy, 0.0);
   EXPECT_EQ(brake_for_robots(east, Kinematics::Holonomic, 0.3, {0.0, -0.5, 0.0}, {{Vec2(0.0, 0.7), 0.3}}).vy, -0.5);

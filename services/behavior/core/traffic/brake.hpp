@@ -3,8 +3,9 @@
 // towards another robot closer than `gap_m` between their discs loses its translation (a
 // unicycle may still turn in place). The passage rule and the holding points keep robots apart
 // where it matters; this keeps a robot from running into one it follows, or one standing where it
-// waits, whatever the planner chose. Two robots braking for each other head-on stand still: the
-// goal's stall rule then ends it with a reason (docs/traffic.md, "What is not solved").
+// waits, whatever the planner chose. Driving past a robot is not driving into it: the command
+// keeps its translation when the straight line it drives passes the other disc with more than
+// `pass_m` between them (a robot overtaking or meeting one that stands aside, docs/traffic.md).
 #include "common/geometry/geometry.hpp"
 #include "services/behavior/core/velocity_command.hpp"
 
@@ -18,6 +19,7 @@ struct Disc {
 };
 
 VelocityCommand brake_for_robots(const geometry::Pose2& pose, Kinematics kinematics, double radius_m,
-                                 const VelocityCommand& command, const std::vector<Disc>& others, double gap_m = 0.2);
+                                 const VelocityCommand& command, const std::vector<Disc>& others, double gap_m = 0.2,
+                                 double pass_m = 0.05);
 
 }  // namespace autonomy::behavior::traffic

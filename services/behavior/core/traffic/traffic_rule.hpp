@@ -47,6 +47,7 @@ struct OtherRobot {
   bool has_itinerary = false;
   double itinerary_age_s = 0.0;  // now - the itinerary's time
   bool has_path = false;         // the itinerary has points: the robot means to move
+  std::vector<geometry::Vec2> path;  // the itinerary's points (give_way.hpp compares paths)
   Claim claim;
 };
 
