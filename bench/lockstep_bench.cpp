@@ -8,9 +8,13 @@
 // Baselines in the same run: the raw Cyclone round trip on RobotState (ticks/s cannot exceed
 // about 1/RTT: every tick is at least one simulator -> behavior -> simulator round trip), and the
 // same lockstep run with one robot.
+// Every run publishes every tick (the simulator's --every-tick): a robot between two goals declares
+// itself quiet, and a world of quiet participants steps ticks without a round trip (2 million a
+// second when idle), which made the one-robot baseline count free ticks. --quiet-ticks measures
+// with them, to see what they save.
 //
 // Usage: lockstep_bench [--domain 161] [--ticks 20000] [--warmup-ticks 300] [--robots 1,3]
-//                       [--dds-extra file.xml] [--quick]
+//                       [--dds-extra file.xml] [--quiet-ticks] [--quick]
 //   --dds-extra appends a Cyclone config snippet (e.g. bench/cyclone-lockstep.xml) to
 //   CYCLONEDDS_URI for the lockstep processes, and runs the same cases without it first, for
 //   comparison.
@@ -49,6 +53,7 @@ struct Options {
   std::vector<int> robot_counts = {1, 3};
   std::string dds_extra;
   std::string secure_dir;
+  bool quiet_ticks = false;
   int rtt_count = 3000;
 };
 
@@ -157,7 +162,9 @@ RunResult run_lockstep(const Options& o, int robots, int domain, const std::stri
   ws.attach(goal_status_reader.data_condition(), 2);
 
   std::vector<std::string> sim_args = {bin + "/simulator", "--domain", dom, "--max-ticks", std::to_string(o.ticks),
-                                       "--log-level", "warn", "--log-dir", log_dir, "--wait-for"};
+                                       "--log-level", "warn", "--log-dir", log_dir};
+  if (!o.quiet_ticks) sim_args.push_back("--every-tick");
+  sim_args.push_back("--wait-for");
   for (int i = 0; i < robots; ++i) sim_args.push_back(std::string("behavior/") + kRobots[i].id);
   use_identity(secure_dir, base, "simulator-main");
   ChildProcess sim(sim_args, false, log_dir + "/simulator.out");
@@ -294,6 +301,9 @@ Options parse(int argc, char** argv) {
   app.add_option("--dds-extra", o.dds_extra, "A Cyclone config snippet to compare against the default");
   app.add_option("--secure", o.secure_dir,
                  "Also run with DDS Security: identities in this folder (security.sh set DIR demo-lockstep.set)");
+  app.add_flag("--quiet-ticks", o.quiet_ticks,
+               "Let the world step ticks every participant declared quiet without a round trip (not comparable"
+               " with the 1/RTT bound)");
   app.add_flag("--quick", quick, "Short runs, for a smoke test");
   try {
     app.parse(argc, argv);
@@ -382,8 +392,9 @@ int main(int argc, char** argv) {
     }
     setenv("CYCLONEDDS_URI", base_uri.c_str(), 1);
 
-    std::printf("\n== lockstep_bench: simulator + behavior processes, demo scenario, %lld ticks, warm-up %lld ==\n",
-                static_cast<long long>(o.ticks), static_cast<long long>(o.warmup_ticks));
+    std::printf("\n== lockstep_bench: simulator + behavior processes, demo scenario, %lld ticks, warm-up %lld, %s ==\n",
+                static_cast<long long>(o.ticks), static_cast<long long>(o.warmup_ticks),
+                o.quiet_ticks ? "quiet ticks stepped without a round trip" : "every tick published");
     std::printf("baseline: raw Cyclone RTT (RobotState, 2 processes) p50 %.1f us, p99 %.1f us -> bound %.0f ticks/s\n",
                 rtt_p50, percentile(rtt, 99), 1e6 / rtt_p50);
     if (!o.dds_extra.empty()) std::printf("extra Cyclone config: %s\n", o.dds_extra.c_str());
@@ -400,7 +411,7 @@ int main(int argc, char** argv) {
       std::printf("  %-9s %d robots: %.0f ticks/s = %.2f x the 1/RTT bound", name.c_str(), r.robots, r.ticks_per_s,
                   r.ticks_per_s * rtt_p50 / 1e6);
       if (one > 0 && r.robots != 1) std::printf(", %.2f x the 1-robot rate", r.ticks_per_s / one);
-      if (r.robots == 3) std::printf("  (goal: at least 2000 ticks/s with 3 robots)");
+      if (r.robots == 3) std::printf("  (goal: at least 10000 ticks/s with 3 robots)");
       std::printf("\n");
     }
     for (const auto& [name, r] : results) {
