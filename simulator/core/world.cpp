@@ -23,6 +23,9 @@ constexpr double kTimeTolerance = 1e-9;
 constexpr double kMaxSampleSpacing = 0.02;  // m
 // Precision of the contact point found by bisection.
 constexpr double kContactPrecision = 0.5e-3;  // m
+// Cells of the robot grid: a few robot diameters, so a collision test touches 1 to 4 cells and a
+// 15 m scan about 8 x 8.
+constexpr double kRobotGridCellM = 4.0;
 
 std::string point_text(const geometry::Vec2& p) {
   return "(" + format_number(p.x()) + ", " + format_number(p.y()) + ")";
@@ -51,6 +54,7 @@ World::World(WorldSpec spec) : spec_(std::move(spec)) {
     throw std::invalid_argument("world size must be positive");
   }
   map_ = ObstacleMap(spec_.width, spec_.height, spec_.obstacles, spec_.polygons, spec_.rasters);
+  rebuild_robot_grid();
   for (std::size_t i = 0; i < spec_.doors.size(); ++i) {
     const DoorSpec& d = spec_.doors[i];
     if (const auto problem = door_problem(d)) throw std::invalid_argument("door " + d.id + ": " + *problem);
@@ -76,6 +80,25 @@ World::World(WorldSpec spec) : spec_(std::move(spec)) {
   }
 }
 
+World::World(const World& other)
+    : spec_(other.spec_), map_(other.map_), doors_(other.doors_), robots_(other.robots_),
+      max_robot_radius_(other.max_robot_radius_), all_pairs_(other.all_pairs_), time_s_(other.time_s_) {
+  rebuild_robot_grid();
+}
+
+World& World::operator=(const World& other) {
+  if (this != &other) {
+    World copy(other);
+    *this = std::move(copy);
+  }
+  return *this;
+}
+
+void World::rebuild_robot_grid() {
+  robot_grid_ = UniformGrid<const Robot*>(spec_.width, spec_.height, kRobotGridCellM);
+  for (const auto& [id, robot] : robots_) robot_grid_.insert(&robot, robot.status.pose.position());
+}
+
 const RobotSpec* World::configured(const std::string& id) const {
   for (const auto* list : {&spec_.robots_at_start, &spec_.known_robots}) {
     for (const RobotSpec& r : *list) {
@@ -96,12 +119,27 @@ std::optional<std::string> World::placement_problem(const std::string& self,
   for (std::size_t i = 0; i < doors_.size(); ++i) {
     if (disc_overlaps_leaf(doors_[i].leaf, center, radius)) return "overlaps door " + spec_.doors[i].id;
   }
-  for (const auto& [id, other] : robots_) {
-    if (id != self &&
-        discs_overlap(center, radius, other.status.pose.position(), other.status.radius)) {
-      return "overlaps robot " + id;
+  if (all_pairs_) {
+    for (const auto& [id, other] : robots_) {
+      if (id != self &&
+          discs_overlap(center, radius, other.status.pose.position(), other.status.radius)) {
+        return "overlaps robot " + id;
+      }
     }
+    return std::nullopt;
   }
+  // The same answer from the grid: of the robots overlapping, the one with the smallest id.
+  const Robot* first = nullptr;
+  const double reach = radius + max_robot_radius_;
+  robot_grid_.for_each_in_box(center - geometry::Vec2(reach, reach), center + geometry::Vec2(reach, reach),
+                              [&](const Robot* other) {
+                                if (discs_overlap(center, radius, other->status.pose.position(),
+                                                  other->status.radius) &&
+                                    other->status.id != self && (first == nullptr || other->status.id < first->status.id)) {
+                                  first = other;
+                                }
+                              });
+  if (first != nullptr) return "overlaps robot " + first->status.id;
   return std::nullopt;
 }
 
@@ -144,7 +182,10 @@ SpawnResult World::spawn(const std::string& id, std::optional<geometry::Pose2> p
   if (body.sensors.range.rays > 0 && body.sensors.range.max_range_m > 0.0) {
     robot.range.emplace(body.sensors.range);
   }
-  robots_.emplace(id, std::move(robot));
+  const geometry::Vec2 at = robot.status.pose.position();
+  const Robot& placed = robots_.emplace(id, std::move(robot)).first->second;
+  robot_grid_.insert(&placed, at);
+  max_robot_radius_ = std::max(max_robot_radius_, body.radius);
   return SpawnResult::spawned();
 }
 
@@ -179,7 +220,9 @@ void World::step(double dt) {
   if (!(std::isfinite(dt) && dt > 0.0)) return;  // also in release builds: time never runs back
   for (auto& [id, robot] : robots_) {
     if (time_s_ + kTimeTolerance >= robot.held_until_s) robot.held = {};
-    move(robot, dt);
+    const geometry::Vec2 from = robot.status.pose.position();
+    move(robot, dt);  // robots later in id order meet this one where it is now
+    robot_grid_.move(&robot, from, robot.status.pose.position());
   }
   time_s_ += dt;
   for (std::size_t i = 0; i < doors_.size(); ++i) {
@@ -247,14 +290,23 @@ std::vector<DoorView> World::door_views() const {
   return views;
 }
 
-DynamicObstacles World::dynamic_obstacles(const std::string& except_robot) const {
+DynamicObstacles World::dynamic_obstacles(const std::string& except_robot, const geometry::Vec2& center,
+                                          double reach) const {
   DynamicObstacles out;
   out.leaves.reserve(doors_.size());
   for (const Door& d : doors_) out.leaves.push_back(d.leaf);
-  out.robots.reserve(robots_.size());
-  for (const auto& [id, robot] : robots_) {
-    if (id != except_robot) out.robots.push_back({robot.status.pose.position(), robot.status.radius});
+  if (all_pairs_) {
+    out.robots.reserve(robots_.size());
+    for (const auto& [id, robot] : robots_) {
+      if (id != except_robot) out.robots.push_back({robot.status.pose.position(), robot.status.radius});
+    }
+    return out;
   }
+  // The scan keeps the nearest hit over all discs, so their order does not matter.
+  const double r = reach + max_robot_radius_;
+  robot_grid_.for_each_in_box(center - geometry::Vec2(r, r), center + geometry::Vec2(r, r), [&](const Robot* robot) {
+    if (robot->status.id != except_robot) out.robots.push_back({robot->status.pose.position(), robot->status.radius});
+  });
   return out;
 }
 
@@ -266,14 +318,18 @@ std::optional<RangeScan> World::sense(const std::string& id) {
   const auto it = robots_.find(id);
   if (it == robots_.end() || !it->second.range) return std::nullopt;
   Robot& robot = it->second;
-  return robot.range->scan(robot.status.pose, map_, dynamic_obstacles(id), &robot.noise);
+  return robot.range->scan(robot.status.pose, map_,
+                           dynamic_obstacles(id, robot.status.pose.position(), robot.range->spec().max_range_m),
+                           &robot.noise);
 }
 
 std::optional<RangeScan> World::sense(const std::string& id, const RangeSensorSpec& sensor) {
   const auto it = robots_.find(id);
   if (it == robots_.end() || sensor.rays < 1 || !(sensor.max_range_m > 0.0)) return std::nullopt;
   Robot& robot = it->second;
-  return RangeSensor(sensor).scan(robot.status.pose, map_, dynamic_obstacles(id), &robot.noise);
+  return RangeSensor(sensor).scan(robot.status.pose, map_,
+                                  dynamic_obstacles(id, robot.status.pose.position(), sensor.max_range_m),
+                                  &robot.noise);
 }
 
 std::vector<DoorObservation> World::observe_doors(const std::string& id) {
@@ -340,7 +396,13 @@ void World::move(Robot& robot, double dt) {
   s.distance_travelled += free_fraction * length;
 }
 
-bool World::remove(const std::string& id) { return robots_.erase(id) != 0; }
+bool World::remove(const std::string& id) {
+  const auto it = robots_.find(id);
+  if (it == robots_.end()) return false;
+  robot_grid_.erase(&it->second, it->second.status.pose.position());
+  robots_.erase(it);
+  return true;
+}
 
 std::vector<RobotStatus> World::robots() const {
   std::vector<RobotStatus> out;

@@ -12,6 +12,11 @@
 //   robot (it stops at the contact, it never passes through);
 // - a door never swings through a robot: it waits until the robot has left the leaf's sweep.
 //
+// Cost: robots are kept in a uniform grid (uniform_grid.hpp), so a collision test looks at the
+// robots in the cells around the disc and a range scan at those within its range: a step costs
+// about robots x (robots nearby), not robots squared. use_all_pairs_reference(true) switches back
+// to testing every robot (same results, for benchmarks and tests that compare the two).
+//
 // Sensing reads the state after the last step; each robot's noise comes from its own stream, so
 // whether and how often other robots sense does not change what it sees.
 #include "simulator/core/door.hpp"
@@ -22,6 +27,7 @@
 #include "simulator/core/range_sensor.hpp"
 #include "simulator/core/robot_status.hpp"
 #include "simulator/core/spawn_result.hpp"
+#include "simulator/core/uniform_grid.hpp"
 #include "simulator/core/velocity_command.hpp"
 #include "simulator/core/world_spec.hpp"
 
@@ -38,6 +44,11 @@ class World {
   // (non-positive size or command timeout, a start robot that cannot be placed): the scenario
   // loader reports those with file positions before a World is ever built.
   explicit World(WorldSpec spec);
+  // A copy has its own robot grid (the grid points at the robots of its world).
+  World(const World& other);
+  World& operator=(const World& other);
+  World(World&&) = default;  // std::map keeps its nodes: the grid's pointers stay valid
+  World& operator=(World&&) = default;
 
   // Puts robot `id` into the world at `pose`, or at its configured start pose when no pose is
   // given. An id that is not configured gets spec().attach_defaults as body and limits.
@@ -84,6 +95,9 @@ class World {
 
   const ObstacleMap& obstacle_map() const { return map_; }
 
+  // true: collisions and scans test every robot (the reference the grid must agree with).
+  void use_all_pairs_reference(bool all_pairs) { all_pairs_ = all_pairs; }
+
  private:
   struct Robot {
     RobotStatus status;
@@ -111,12 +125,19 @@ class World {
   // Moves door i to its target unless a robot is in the sweep.
   void try_move_door(std::size_t i);
   std::vector<DoorView> door_views() const;
-  DynamicObstacles dynamic_obstacles(const std::string& except_robot) const;
+  void rebuild_robot_grid();
+  // Door leaves and the robots (except `except_robot`) whose disc may lie within `reach` of
+  // `center`; the all-pairs reference lists every robot.
+  DynamicObstacles dynamic_obstacles(const std::string& except_robot, const geometry::Vec2& center,
+                                     double reach) const;
 
   WorldSpec spec_;
   ObstacleMap map_;
   std::vector<Door> doors_;  // parallel to spec_.doors
   std::map<std::string, Robot> robots_;  // ordered: id order is the processing order
+  UniformGrid<const Robot*> robot_grid_;  // every robot of robots_, by its current position
+  double max_robot_radius_ = 0.0;         // of every robot ever spawned (bounds grid queries)
+  bool all_pairs_ = false;
   double time_s_ = 0.0;
 };
 

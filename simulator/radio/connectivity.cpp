@@ -20,6 +20,20 @@ Connectivity::Connectivity(const LinkTable& links)
       }
     }
   }
+  find_components();
+}
+
+Connectivity::Connectivity(const NearLinkTable& links)
+    : neighbours_(links.size()), component_of_(links.size(), kNone) {
+  for (const NearLink& l : links.links()) {
+    neighbours_[l.i].push_back(l.j);
+    neighbours_[l.j].push_back(l.i);
+  }
+  find_components();
+}
+
+void Connectivity::find_components() {
+  const size_t n = neighbours_.size();
   for (auto& list : neighbours_) std::sort(list.begin(), list.end());
   std::vector<size_t> stack;
   for (size_t s = 0; s < n; ++s) {
@@ -84,6 +98,16 @@ std::optional<std::vector<size_t>> Connectivity::route(size_t from, size_t to) c
 std::vector<LinkQuality> route_links(const LinkTable& links, const std::vector<size_t>& route) {
   std::vector<LinkQuality> hops;
   for (size_t k = 0; k + 1 < route.size(); ++k) hops.push_back(links.at(route[k], route[k + 1]));
+  return hops;
+}
+
+std::vector<LinkQuality> route_links(const NearLinkTable& links, const std::vector<size_t>& route) {
+  std::vector<LinkQuality> hops;
+  for (size_t k = 0; k + 1 < route.size(); ++k) {
+    const LinkQuality* hop = links.find(route[k], route[k + 1]);
+    // A route only uses connected links, which the table holds; a stale route gets a dead hop.
+    hops.push_back(hop != nullptr ? *hop : LinkQuality{});
+  }
   return hops;
 }
 

@@ -5,6 +5,7 @@
 //
 // Routes are breadth-first over neighbours in index order, so among routes with the fewest hops
 // the one through the lowest indices is chosen: deterministic for a given table.
+#include "simulator/radio/near_links.hpp"
 #include "simulator/radio/radio_model.hpp"
 
 #include <cstddef>
@@ -16,6 +17,8 @@ namespace autonomy::sim::radio {
 class Connectivity {
  public:
   explicit Connectivity(const LinkTable& links);
+  // The same from the connected links alone (equal results for the same connected pairs).
+  explicit Connectivity(const NearLinkTable& links);
 
   size_t size() const { return neighbours_.size(); }
   // Members of each component in increasing order; components ordered by their first member.
@@ -33,6 +36,8 @@ class Connectivity {
   std::optional<std::vector<size_t>> route(size_t from, size_t to) const;
 
  private:
+  void find_components();  // from neighbours_
+
   std::vector<std::vector<size_t>> neighbours_;
   std::vector<std::vector<size_t>> components_;
   std::vector<size_t> component_of_;
@@ -40,5 +45,6 @@ class Connectivity {
 
 // The links along `route` (hop k is route[k] - route[k + 1]).
 std::vector<LinkQuality> route_links(const LinkTable& links, const std::vector<size_t>& route);
+std::vector<LinkQuality> route_links(const NearLinkTable& links, const std::vector<size_t>& route);
 
 }  // namespace autonomy::sim::radio

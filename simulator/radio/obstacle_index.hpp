@@ -25,7 +25,15 @@ class ObstacleIndex {
   explicit ObstacleIndex(const std::vector<geometry::Rect>& boxes, double cell_size_m = 0.0);
 
   template <typename F>
-  void visit(const geometry::Vec2& a, const geometry::Vec2& b, F&& f) const;
+  void visit(const geometry::Vec2& a, const geometry::Vec2& b, F&& f) const {
+    visit_while(a, b, [&f](uint32_t id) {
+      f(id);
+      return true;
+    });
+  }
+  // The same walk, from a towards b, stopping as soon as f(id) returns false.
+  template <typename F>
+  void visit_while(const geometry::Vec2& a, const geometry::Vec2& b, F&& f) const;
 
   size_t size() const { return count_; }
   double cell_size_m() const { return cell_; }
@@ -44,7 +52,7 @@ class ObstacleIndex {
 };
 
 template <typename F>
-void ObstacleIndex::visit(const geometry::Vec2& a, const geometry::Vec2& b, F&& f) const {
+void ObstacleIndex::visit_while(const geometry::Vec2& a, const geometry::Vec2& b, F&& f) const {
   if (nx_ == 0) return;
   // Clip the segment to the grid (closed box): parameters t0..t1 along a + t (b - a).
   const geometry::Vec2 d = b - a;
@@ -82,10 +90,13 @@ void ObstacleIndex::visit(const geometry::Vec2& a, const geometry::Vec2& b, F&& 
   double tmy = sy != 0 ? (y0_ + (iy + (sy > 0 ? 1 : 0)) * cell_ - a.y()) / d.y() : kInf;
   const auto visit_cell = [&](int x, int y) {
     const size_t c = static_cast<size_t>(y) * static_cast<size_t>(nx_) + static_cast<size_t>(x);
-    for (uint32_t k = offsets_[c]; k < offsets_[c + 1]; ++k) f(ids_[k]);
+    for (uint32_t k = offsets_[c]; k < offsets_[c + 1]; ++k) {
+      if (!f(ids_[k])) return false;
+    }
+    return true;
   };
   for (int steps = nx_ + ny_ + 2; steps > 0; --steps) {
-    visit_cell(ix, iy);
+    if (!visit_cell(ix, iy)) return;
     if (ix == jx && iy == jy) return;
     if (std::min(tmx, tmy) > t1) break;
     if (tmx < tmy) {
@@ -98,7 +109,7 @@ void ObstacleIndex::visit(const geometry::Vec2& a, const geometry::Vec2& b, F&& 
     if (ix < 0 || ix >= nx_ || iy < 0 || iy >= ny_) break;
   }
   // Rounding at a cell corner can walk past the end cell; make sure it is seen.
-  visit_cell(jx, jy);
+  (void)visit_cell(jx, jy);
 }
 
 }  // namespace autonomy::sim::radio

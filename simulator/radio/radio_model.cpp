@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace autonomy::sim::radio {
@@ -125,17 +126,20 @@ double RadioModel::distance_loss_db(double distance_m) const {
          10.0 * params_.path_loss_exponent * std::log10(d / params_.reference_distance_m);
 }
 
-ObstacleLoss RadioModel::obstacle_loss(const Vec2& a, const Vec2& b, Visited& v) const {
+ObstacleLoss RadioModel::obstacle_loss(const Vec2& a, const Vec2& b, Visited& v, double stop_above_db) const {
   ObstacleLoss total;
-  for (const RasterAttenuator& r : rasters_) add(total, r, r.traverse(a, b));
+  for (const RasterAttenuator& r : rasters_) {
+    add(total, r, r.traverse(a, b));
+    if (total.loss_db > stop_above_db) return total;
+  }
   if (attenuators_.empty() && walls_.empty()) return total;
   if (++v.current == 0) {  // wrapped: forget every old mark
     std::fill(v.stamp.begin(), v.stamp.end(), 0);
     v.current = 1;
   }
   const size_t n_attenuators = attenuators_.size();
-  index_.visit(a, b, [&](uint32_t id) {
-    if (v.stamp[id] == v.current) return;
+  index_.visit_while(a, b, [&](uint32_t id) {
+    if (v.stamp[id] == v.current) return true;
     v.stamp[id] = v.current;
     if (id < n_attenuators) {
       const Attenuator& at = attenuators_[id];
@@ -143,14 +147,21 @@ ObstacleLoss RadioModel::obstacle_loss(const Vec2& a, const Vec2& b, Visited& v)
     } else {
       add(total, walls_[id - n_attenuators], a, b);
     }
+    return !(total.loss_db > stop_above_db);
   });
   return total;
 }
 
-ObstacleLoss RadioModel::obstacle_loss(const Vec2& a, const Vec2& b) const {
+RadioModel::Visited RadioModel::new_visited() const {
   Visited v;
   v.stamp.assign(attenuators_.size() + walls_.size(), 0);
-  return before(b, a) ? obstacle_loss(b, a, v) : obstacle_loss(a, b, v);
+  return v;
+}
+
+ObstacleLoss RadioModel::obstacle_loss(const Vec2& a, const Vec2& b) const {
+  Visited v = new_visited();
+  constexpr double kAll = std::numeric_limits<double>::infinity();
+  return before(b, a) ? obstacle_loss(b, a, v, kAll) : obstacle_loss(a, b, v, kAll);
 }
 
 ObstacleLoss RadioModel::obstacle_loss_exhaustive(const Vec2& a, const Vec2& b) const {
@@ -163,13 +174,10 @@ ObstacleLoss RadioModel::obstacle_loss_exhaustive(const Vec2& a, const Vec2& b) 
   return total;
 }
 
-LinkQuality RadioModel::link(const Vec2& a, const Vec2& b, Visited& v) const {
-  const Vec2& p = before(b, a) ? b : a;
-  const Vec2& q = before(b, a) ? a : b;
+LinkQuality RadioModel::assemble(const Vec2& p, const Vec2& q, double distance_loss, const ObstacleLoss& o) const {
   LinkQuality l;
   l.distance_m = (q - p).norm();
-  l.distance_loss_db = distance_loss_db(l.distance_m);
-  const ObstacleLoss o = obstacle_loss(p, q, v);
+  l.distance_loss_db = distance_loss;
   l.obstacle_loss_db = o.loss_db;
   l.crossings = o.crossings;
   l.inside_m = o.inside_m;
@@ -180,18 +188,39 @@ LinkQuality RadioModel::link(const Vec2& a, const Vec2& b, Visited& v) const {
   return l;
 }
 
+LinkQuality RadioModel::link(const Vec2& a, const Vec2& b, Visited& v) const {
+  const Vec2& p = before(b, a) ? b : a;
+  const Vec2& q = before(b, a) ? a : b;
+  return assemble(p, q, distance_loss_db((q - p).norm()),
+                  obstacle_loss(p, q, v, std::numeric_limits<double>::infinity()));
+}
+
 LinkQuality RadioModel::link(const Vec2& a, const Vec2& b) const {
-  Visited v;
-  v.stamp.assign(attenuators_.size() + walls_.size(), 0);
+  Visited v = new_visited();
   return link(a, b, v);
+}
+
+std::optional<LinkQuality> RadioModel::connected_link(const Vec2& a, const Vec2& b, Visited& v) const {
+  // Far above the rounding of a few additions of dB values, far below any loss that matters: a
+  // walk stopped at more than (budget left + this) is certainly disconnected.
+  constexpr double kStopSlackDb = 1e-6;
+  const Vec2& p = before(b, a) ? b : a;
+  const Vec2& q = before(b, a) ? a : b;
+  const double distance_loss = distance_loss_db((q - p).norm());
+  const double left_db = params_.tx_power_dbm - params_.receiver_sensitivity_dbm - distance_loss;
+  if (left_db < -kStopSlackDb) return std::nullopt;
+  const ObstacleLoss o = obstacle_loss(p, q, v, left_db + kStopSlackDb);
+  if (o.loss_db > left_db + kStopSlackDb) return std::nullopt;
+  const LinkQuality l = assemble(p, q, distance_loss, o);
+  if (!l.connected) return std::nullopt;
+  return l;
 }
 
 void RadioModel::update(const std::vector<Vec2>& positions, LinkTable& table) const {
   const size_t n = positions.size();
   table.n_ = n;
   table.links_.resize(n < 2 ? 0 : n * (n - 1) / 2);
-  Visited v;
-  v.stamp.assign(attenuators_.size() + walls_.size(), 0);
+  Visited v = new_visited();
   size_t k = 0;
   for (size_t i = 0; i < n; ++i) {
     for (size_t j = i + 1; j < n; ++j) table.links_[k++] = link(positions[i], positions[j], v);

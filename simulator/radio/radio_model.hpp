@@ -23,6 +23,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -106,6 +107,19 @@ class RadioModel {
 
   LinkQuality link(const geometry::Vec2& a, const geometry::Vec2& b) const;
 
+  // Marks attenuators and walls already tested on the current path (a path meets one in several
+  // cells), reused across paths: one per thread. Index ids: attenuators first, then walls.
+  struct Visited {
+    std::vector<uint32_t> stamp;
+    uint32_t current = 0;
+  };
+  Visited new_visited() const;
+  // The link a-b if it is connected, else nothing. Losses only add (every loss is >= 0), so the
+  // walk along the path stops as soon as the obstacles have taken more than the distance left of
+  // the link budget: a blocked path costs its first walls, not all of them. A connected link is
+  // the same arithmetic as link(a, b), bit for bit.
+  std::optional<LinkQuality> connected_link(const geometry::Vec2& a, const geometry::Vec2& b, Visited& v) const;
+
   // Recomputes every pair of `positions` into `table` (reusing its memory).
   void update(const std::vector<geometry::Vec2>& positions, LinkTable& table) const;
   LinkTable table(const std::vector<geometry::Vec2>& positions) const;
@@ -124,14 +138,13 @@ class RadioModel {
   const ObstacleIndex& index() const { return index_; }
 
  private:
-  // Marks attenuators and walls already tested on the current path (a path meets one in several
-  // cells). Index ids: attenuators first, then walls.
-  struct Visited {
-    std::vector<uint32_t> stamp;
-    uint32_t current = 0;
-  };
-  ObstacleLoss obstacle_loss(const geometry::Vec2& a, const geometry::Vec2& b, Visited& v) const;
+  // Stops adding once the loss is above stop_above_db (then the total is partial).
+  ObstacleLoss obstacle_loss(const geometry::Vec2& a, const geometry::Vec2& b, Visited& v,
+                             double stop_above_db) const;
   LinkQuality link(const geometry::Vec2& a, const geometry::Vec2& b, Visited& v) const;
+  // The link of p-q (canonical order) from its distance loss and obstacle loss.
+  LinkQuality assemble(const geometry::Vec2& p, const geometry::Vec2& q, double distance_loss_db,
+                       const ObstacleLoss& o) const;
 
   RadioParameters params_;
   std::vector<Attenuator> attenuators_;
