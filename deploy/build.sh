@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Configures and builds the tree into build/ (or build-asan/ with --sanitize): everything, or only
 # the named targets and what they need. --demo builds the demo's programs only (the simulator, the
-# behavior controller and the autonomy CLI, no tests or benchmarks) in the same configuration, so
+# behavior controller, the autonomy CLI and the viewer; no tests or benchmarks) in the same configuration, so
 # a later full build reuses what it compiled.
 # Usage: deploy/build.sh [--sanitize] [--release] [--demo] [--target NAME]...
 set -euo pipefail
@@ -15,7 +15,7 @@ while [ $# -gt 0 ]; do
     # sanitizer build is the longer one.
     --sanitize) dir=build-asan; args=(-DCMAKE_BUILD_TYPE=Debug -DAUTONOMY_SANITIZE=ON -DAUTONOMY_BUILD_BENCH=OFF) ;;
     --release) args=(-DCMAKE_BUILD_TYPE=Release) ;;
-    --demo) targets+=(simulator behavior autonomy) ;;
+    --demo) targets+=(simulator behavior autonomy viewer) ;;
     --target)
       [ $# -ge 2 ] || { echo "build: --target needs a target name" >&2; exit 2; }
       targets+=("$2"); shift ;;

@@ -11,6 +11,7 @@
 #          --secure (DDS Security, every process on its identity: docs/security.md).
 #          --path-planner grid|ompl (rhino's go-to paths: the grid field's controller, default, or
 #          OMPL Reeds-Shepp paths followed by pure pursuit: deploy/sets/courier-ompl.set).
+#          --viewer-port P (the live view in a browser, default 8080: docs/viewer.md), --no-viewer.
 set -euo pipefail
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
@@ -20,6 +21,7 @@ exit_when_done=0
 fleet=0
 path_planner=grid
 secure=()  # --secure: launch.sh --profile secure
+viewer_port=8080  # the viewer's page (docs/viewer.md); "" = no viewer
 while [ $# -gt 0 ]; do
   case $1 in
     --domain) domain=$2; shift 2 ;;
@@ -27,6 +29,8 @@ while [ $# -gt 0 ]; do
     --exit-when-done) exit_when_done=1; shift ;;
     --fleet) fleet=1; shift ;;
     --secure) secure=(--profile secure); shift ;;
+    --viewer-port) viewer_port=$2; shift 2 ;;
+    --no-viewer) viewer_port=""; shift ;;
     --path-planner)
       case ${2:-} in
         grid) path_planner=grid ;;
@@ -34,7 +38,7 @@ while [ $# -gt 0 ]; do
         *) echo "courier-demo: --path-planner takes grid or ompl, not '${2:-}'" >&2; exit 2 ;;
       esac
       shift 2 ;;
-    -h|--help) sed -n '2,13p' "${BASH_SOURCE[0]}"; exit 0 ;;
+    -h|--help) sed -n '2,14p' "${BASH_SOURCE[0]}"; exit 0 ;;
     *) echo "courier-demo: unknown option $1 (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -48,7 +52,7 @@ esac
 if [ $setup -eq 1 ]; then
   bash "$repo/deploy/install-deps.sh"
   echo "courier-demo: building the simulator, the behavior controller, the courier and the autonomy CLI"
-  bash "$repo/deploy/build.sh" --target simulator --target behavior --target courier --target autonomy
+  bash "$repo/deploy/build.sh" --target simulator --target behavior --target courier --target autonomy --target viewer
 fi
 
 cli="$repo/build/bin/autonomy"
@@ -56,7 +60,12 @@ export CYCLONEDDS_URI="file://$repo/deploy/dds/loopback.xml"
 export AUTONOMY_DOMAIN=$domain
 run_dir="$repo/runs/courier-$(date +%Y%m%d-%H%M%S)"
 
-bash "$repo/deploy/launch.sh" --detach "${secure[@]}" --domain "$domain" --run-dir "$run_dir" "$set_name"
+# Plus the viewer (not secured: it has no identity in deploy/security/access.table yet).
+[ ${#secure[@]} -eq 0 ] || viewer_port=""
+set_file=$(bash "$repo/deploy/viewer.sh" set "$set_name" "$run_dir" "$viewer_port")
+bash "$repo/deploy/launch.sh" --detach "${secure[@]}" --domain "$domain" --run-dir "$run_dir" "$set_file"
+viewer_says=$(bash "$repo/deploy/viewer.sh" address "$run_dir" "$viewer_port" 2>&1)
+[ -z "$viewer_says" ] || echo "courier-demo: $viewer_says"
 # Secured, this script's own tools (and the commands it prints) act as the operator.
 [ ${#secure[@]} -eq 0 ] || CYCLONEDDS_URI+=",$(bash "$repo/deploy/security/security.sh" uri "${AUTONOMY_SECURITY_DIR:-$repo/runs/security}" operator)"
 finish() {

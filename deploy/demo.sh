@@ -8,7 +8,8 @@
 # Options: --domain N (default $AUTONOMY_DOMAIN or 0), --no-setup (skip install and build),
 #          --goal X Y (default 18 2),
 #          --exit-when-reached (for scripts: stop everything and end once the goal is reached;
-#          exit code 0 when reached, 1 otherwise), --secure (DDS Security: docs/security.md).
+#          exit code 0 when reached, 1 otherwise), --secure (DDS Security: docs/security.md),
+#          --viewer-port P (the live view in a browser, default 8080: docs/viewer.md), --no-viewer.
 set -euo pipefail
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
@@ -18,6 +19,7 @@ goal_x=18
 goal_y=2
 exit_when_reached=0
 secure=()  # --secure: launch.sh --profile secure
+viewer_port=8080  # the viewer's page (docs/viewer.md); "" = no viewer
 while [ $# -gt 0 ]; do
   case $1 in
     --domain) domain=$2; shift 2 ;;
@@ -25,7 +27,9 @@ while [ $# -gt 0 ]; do
     --goal) goal_x=$2; goal_y=$3; shift 3 ;;
     --exit-when-reached) exit_when_reached=1; shift ;;
     --secure) secure=(--profile secure); shift ;;
-    -h|--help) sed -n '2,11p' "${BASH_SOURCE[0]}"; exit 0 ;;
+    --viewer-port) viewer_port=$2; shift 2 ;;
+    --no-viewer) viewer_port=""; shift ;;
+    -h|--help) sed -n '2,12p' "${BASH_SOURCE[0]}"; exit 0 ;;
     *) echo "demo: unknown option $1 (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -41,7 +45,12 @@ export CYCLONEDDS_URI="file://$repo/deploy/dds/loopback.xml"
 export AUTONOMY_DOMAIN=$domain
 run_dir="$repo/runs/demo-$(date +%Y%m%d-%H%M%S)"
 
-bash "$repo/deploy/launch.sh" --detach "${secure[@]}" --domain "$domain" --run-dir "$run_dir" demo
+# The demo set, plus the viewer (not secured: it has no identity in deploy/security/access.table yet).
+[ ${#secure[@]} -eq 0 ] || viewer_port=""
+set_file=$(bash "$repo/deploy/viewer.sh" set demo "$run_dir" "$viewer_port")
+bash "$repo/deploy/launch.sh" --detach "${secure[@]}" --domain "$domain" --run-dir "$run_dir" "$set_file"
+viewer_says=$(bash "$repo/deploy/viewer.sh" address "$run_dir" "$viewer_port" 2>&1)
+[ -z "$viewer_says" ] || echo "demo: $viewer_says"
 # Secured, this script's own tools (and the commands it prints) act as the operator.
 [ ${#secure[@]} -eq 0 ] || CYCLONEDDS_URI+=",$(bash "$repo/deploy/security/security.sh" uri "${AUTONOMY_SECURITY_DIR:-$repo/runs/security}" operator)"
 finish() {

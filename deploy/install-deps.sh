@@ -18,6 +18,8 @@ packages=(
   libsqlite3-dev
   # OMPL's CMake variables name these boost libraries
   libboost-serialization-dev libboost-filesystem-dev libboost-system-dev
+  # the viewer's web server and WebSocket (Boost.Beast, header-only)
+  libboost-dev
   # arguments (CLI11) and JSON (nlohmann): well kept, header-only, replace hand-written parsers
   libcli11-dev nlohmann-json3-dev
   # tests and benchmarks

@@ -24,6 +24,12 @@ fi
 if command -v npm >/dev/null 2>&1; then
   npm ci --prefix "$repo/tests/node" --no-audit --no-fund --loglevel=error
 fi
+# Test-only: Debian's chromium, headless, for the viewer's page check (tests/node/viewer_page_check.js;
+# about 20 s to install here). Without it that test says so and skips.
+if ! command -v chromium >/dev/null 2>&1; then
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends chromium ||
+    echo "test: chromium could not be installed; the viewer's browser check will be skipped" >&2
+fi
 for c in "${configs[@]}"; do
   if [ "$c" = sanitize ]; then
     echo "== ASan + UBSan build and tests"

@@ -1,0 +1,90 @@
+#include "services/viewer/dds/viewer_node.hpp"
+
+#include "services/viewer/core/frames.hpp"
+#include "services/viewer/web/page.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <cstdio>
+#include <stdexcept>
+
+namespace autonomy::viewer {
+
+namespace {
+
+// A robot whose state instance is disposed (the simulator removed it or stopped) or lost its
+// writer leaves the picture; other topics keep their last value (a closed door stays closed).
+bool viewer_instance_gone(dds::InstanceState s) { return s != dds::InstanceState::Alive; }
+
+}  // namespace
+
+ViewerNode::ViewerNode(service::Service& service, ViewerNodeOptions options)
+    : service_(service),
+      options_(std::move(options)),
+      view_(options_.limits),
+      map_(service.participant(), dds::topics::world_map),
+      robots_(service.participant(), dds::topics::robot_state),
+      doors_(service.participant(), dds::topics::truth_door),
+      goals_(service.participant(), dds::topics::nav_goal),
+      goal_statuses_(service.participant(), dds::topics::goal_status),
+      itineraries_(service.participant(), dds::topics::itinerary),
+      links_(service.participant(), dds::topics::radio_link),
+      jobs_(service.participant(), dds::topics::courier_job_status) {
+  if (!(options_.rate_hz > 0.0 && options_.rate_hz <= 100.0))
+    throw std::invalid_argument("viewer: --rate must be in (0, 100] frames per second");
+  server_ = std::make_unique<WebServer>(options_.web, std::string(viewer_page_html()));
+
+  auto& loop = service.loop();
+  follow(map_);
+  loop.on_samples<msg::RobotState>(robots_.reader, [this](std::vector<dds::Sample<msg::RobotState>> samples) {
+    for (const auto& s : samples) {
+      if (viewer_instance_gone(s.instance_state))
+        view_.remove_robot(s.value.robot_id);
+      else if (s.valid)
+        view_.apply(s.value);
+    }
+  });
+  follow(doors_);
+  follow(goals_);
+  follow(goal_statuses_);
+  follow(itineraries_);
+  follow(links_);
+  follow(jobs_);
+  const auto period = std::chrono::nanoseconds(static_cast<int64_t>(1e9 / options_.rate_hz));
+  loop.every(period, [this] { push_frames(); });
+
+  service.heartbeat().set_detail(url());
+  service.set_ready();
+  spdlog::info("viewer: open {} in a browser (frames on the WebSocket {}ws)", url(), url());
+  // On stdout too, for scripts that start the viewer and print its address.
+  std::printf("viewer: open %s\n", url().c_str());
+  std::fflush(stdout);
+}
+
+template <typename T>
+void ViewerNode::follow(Subscription<T>& subscription) {
+  service_.loop().on_samples<T>(subscription.reader, [this](std::vector<dds::Sample<T>> samples) {
+    for (const auto& s : samples)
+      if (s.valid) view_.apply(s.value);
+  });
+}
+
+std::string ViewerNode::url() const {
+  const std::string host = options_.web.bind_address == "0.0.0.0" ? service::host_name() : options_.web.bind_address;
+  return "http://" + host + ":" + std::to_string(server_->port()) + "/";
+}
+
+void ViewerNode::push_frames() {
+  if (view_.map_version() != map_version_sent_) {
+    map_version_sent_ = view_.map_version();
+    server_->publish_map(map_frame(view_).dump());
+  }
+  const auto now = std::chrono::steady_clock::now();
+  const bool changed = view_.state_version() != state_version_sent_;
+  if (!changed && now - last_state_sent_ < std::chrono::seconds(1)) return;
+  state_version_sent_ = view_.state_version();
+  last_state_sent_ = now;
+  server_->publish_state(state_frame(view_, ++frames_sent_).dump());
+}
+
+}  // namespace autonomy::viewer

@@ -1,0 +1,65 @@
+#pragma once
+// The viewer's thin DDS shell: a participant like any other service that reads the world's
+// topics (map, robot states, door truth, goals and their statuses, itineraries, radio links,
+// courier job states) into a WorldView, and pushes frames to the web pages at most `rate_hz`
+// times a second, only when something changed (and once a second regardless, so that a page
+// sees the viewer is alive). It writes nothing but its heartbeat; it joins a running set at any
+// time because every topic it reads for state is transient-local (a late joiner gets the last
+// sample of each key), except goals, whose positions it learns from the next goal sent.
+#include "common/dds/reader.hpp"
+#include "common/dds/topics.hpp"
+#include "common/service/service.hpp"
+#include "services/viewer/core/world_view.hpp"
+#include "services/viewer/web/web_server.hpp"
+
+#include <chrono>
+#include <memory>
+#include <string>
+
+namespace autonomy::viewer {
+
+struct ViewerNodeOptions {
+  WebServerOptions web;
+  double rate_hz = 10.0;  // frames per second at most
+  WorldViewLimits limits;
+};
+
+class ViewerNode {
+ public:
+  ViewerNode(service::Service& service, ViewerNodeOptions options);
+  ViewerNode(const ViewerNode&) = delete;
+  ViewerNode& operator=(const ViewerNode&) = delete;
+
+  // Where a browser on this host opens the viewer.
+  std::string url() const;
+
+ private:
+  template <typename T>
+  struct Subscription {
+    Subscription(const dds::Participant& p, const dds::TopicSpec<T>& spec) : topic(p, spec), reader(p, topic) {}
+    dds::Topic<T> topic;
+    dds::Reader<T> reader;
+  };
+  template <typename T>
+  void follow(Subscription<T>& subscription);
+  void push_frames();
+
+  service::Service& service_;
+  ViewerNodeOptions options_;
+  WorldView view_;
+  Subscription<msg::WorldMap> map_;
+  Subscription<msg::RobotState> robots_;
+  Subscription<msg::DoorState> doors_;
+  Subscription<msg::NavGoal> goals_;
+  Subscription<msg::GoalStatus> goal_statuses_;
+  Subscription<msg::Itinerary> itineraries_;
+  Subscription<msg::RadioLink> links_;
+  Subscription<msg::CourierJobStatus> jobs_;
+  std::unique_ptr<WebServer> server_;
+  uint64_t map_version_sent_ = 0;
+  uint64_t state_version_sent_ = 0;
+  uint64_t frames_sent_ = 0;
+  std::chrono::steady_clock::time_point last_state_sent_{};
+};
+
+}  // namespace autonomy::viewer
