@@ -14,7 +14,15 @@
 // Baseline in the same run: the same work in-process without DDS (World::step, a range scan and a
 // pose estimate per robot, the radio link table and team connectivity), per tick.
 //
+// Scale (issue 28): --robots N replaces the scenario's robots by N on a lattice over the same map
+// (moved off buildings), so 100, 300, 1,000 and 3,000 robots run on one world; the report adds
+// the simulator's resident memory. The in-process baseline then also runs the all-pairs reference
+// (World::use_all_pairs_reference, the full LinkTable) for --reference-ticks ticks, beside the
+// spatial index and NearLinkTable the simulator uses; --simulator runs another build of the
+// simulator (e.g. the previous commit's) under the same command.
+//
 // Usage: paced_sim_bench [--domain 170] [--seconds 20] [--warmup 3] [--radio-period 1] [--quick]
+//                        [--robots N] [--reference-ticks 5] [--simulator PATH]
 // Needs the simulator executable next to this one (build/bin). Uses DDS domain --domain only
 // (170 by default; 171 is left for a second concurrent run).
 #include "bench/bench_support.hpp"
@@ -25,6 +33,7 @@
 #include "simulator/core/world.hpp"
 #include "simulator/dds/radio_setup.hpp"
 #include "simulator/radio/connectivity.hpp"
+#include "simulator/radio/near_links.hpp"
 #include "simulator/scenario/scenario_loader.hpp"
 
 #include <CLI/CLI.hpp>
@@ -57,6 +66,9 @@ struct Options {
   int radio_period = 1;
   double command_hz = 10.0;
   std::string scenario = std::string(AUTONOMY_SOURCE_DIR) + "/deploy/scenarios/stress.pbtxt";
+  int robots = 0;  // 0: the scenario's own robots
+  int reference_ticks = 5;
+  std::string simulator;  // empty: the one next to this bench
 };
 
 Options parse(int argc, char** argv) {
@@ -75,6 +87,13 @@ Options parse(int argc, char** argv) {
       ->check(CLI::Range(2.5, 100.0))
       ->capture_default_str();
   app.add_option("--scenario", o.scenario, "Scenario file (paced mode, step and warp are taken from it)")
+      ->check(CLI::ExistingFile);
+  app.add_option("--robots", o.robots, "Replace the scenario's robots by this many on a lattice (0: keep them)")
+      ->check(CLI::Range(0, 20000));
+  app.add_option("--reference-ticks", o.reference_ticks, "In-process ticks of the all-pairs reference (0: skip)")
+      ->check(CLI::Range(0, 1000))
+      ->capture_default_str();
+  app.add_option("--simulator", o.simulator, "The simulator executable (default: next to this bench)")
       ->check(CLI::ExistingFile);
   app.add_flag("--quick", quick, "Short run (6 s measured), for a smoke test");
   try {
@@ -138,16 +157,23 @@ struct InProcess {
   double sense_ms = 0.0;  // range scans and pose estimates
   double radio_ms = 0.0;  // link table and connectivity
   int ticks = 0;
+  double pairs_computed = 0.0;  // radio pairs whose link was computed, per tick
+  double connected = 0.0;       // connected pairs, per tick
+  double total_ms() const { return step_ms + sense_ms + radio_ms; }
 };
 
-// The simulator's per-tick work without DDS, on the same scenario.
-InProcess in_process(const sim::Scenario& scenario, int ticks) {
+// The simulator's per-tick work without DDS, on the same scenario: with the spatial index and
+// the near-link table (as the simulator does it), or with the all-pairs reference.
+InProcess in_process(const sim::Scenario& scenario, int ticks, bool all_pairs) {
   sim::World world(scenario.world);
+  world.use_all_pairs_reference(all_pairs);
   const sim::radio::RadioModel radio = sim::make_radio_model(scenario);
   sim::radio::LinkTable table;
+  sim::radio::NearLinkTable near;
   std::vector<geometry::Vec2> positions;
   InProcess r;
   r.ticks = ticks;
+  if (ticks == 0) return r;
   volatile double sink = 0.0;
   for (int t = 0; t < ticks; ++t) {
     double c0 = process_cpu_now();
@@ -167,15 +193,82 @@ InProcess in_process(const sim::Scenario& scenario, int ticks) {
     r.sense_ms += 1e3 * (c2 - c1);
     positions.clear();
     for (const sim::RobotStatus& s : robots) positions.push_back(s.pose.position());
-    radio.update(positions, table);
-    const sim::radio::Connectivity connectivity(table);
-    sink = sink + static_cast<double>(connectivity.components().size());
-    r.radio_ms += 1e3 * (process_cpu_now() - c2);
+    if (all_pairs) {
+      radio.update(positions, table);
+      const sim::radio::Connectivity connectivity(table);
+      sink = sink + static_cast<double>(connectivity.components().size());
+      r.pairs_computed += static_cast<double>(table.pair_count());
+      for (size_t i = 0; i < positions.size(); ++i)
+        for (size_t j = i + 1; j < positions.size(); ++j) r.connected += table.connected(i, j) ? 1.0 : 0.0;
+      r.radio_ms += 1e3 * (process_cpu_now() - c2);
+    } else {
+      near.update(radio, positions);
+      const sim::radio::Connectivity connectivity(near);
+      sink = sink + static_cast<double>(connectivity.components().size());
+      r.radio_ms += 1e3 * (process_cpu_now() - c2);
+      r.pairs_computed += static_cast<double>(near.pairs_in_range());
+      r.connected += static_cast<double>(near.links().size());
+    }
   }
-  r.step_ms /= ticks;
-  r.sense_ms /= ticks;
-  r.radio_ms /= ticks;
+  for (double* v : {&r.step_ms, &r.sense_ms, &r.radio_ms, &r.pairs_computed, &r.connected}) *v /= ticks;
   return r;
+}
+
+// The scenario file with its robots replaced by `count` robots on a lattice over the world, each
+// moved (in steps of a seventh of the spacing) to the nearest place clear of buildings.
+std::string scenario_with_robots(const std::string& path, const sim::Scenario& scenario, int count,
+                                 const std::string& out_path) {
+  sim::WorldSpec empty = scenario.world;
+  empty.robots_at_start.clear();
+  sim::World world(empty);
+  std::vector<std::string> lines;
+  for (int side = static_cast<int>(std::ceil(std::sqrt(count))); static_cast<int>(lines.size()) < count; ++side) {
+    lines.clear();
+    world = sim::World(empty);
+    const double sx = scenario.world.width / side, sy = scenario.world.height / side;
+    std::vector<std::pair<int, int>> nudges;
+    for (int a = -3; a <= 3; ++a)
+      for (int b = -3; b <= 3; ++b) nudges.emplace_back(a, b);
+    std::stable_sort(nudges.begin(), nudges.end(), [](auto p, auto q) {
+      return p.first * p.first + p.second * p.second < q.first * q.first + q.second * q.second;
+    });
+    for (int j = 0; j < side && static_cast<int>(lines.size()) < count; ++j) {
+      for (int i = 0; i < side && static_cast<int>(lines.size()) < count; ++i) {
+        char id[16];
+        std::snprintf(id, sizeof id, "r%05zu", lines.size());
+        for (const auto& [a, b] : nudges) {
+          const double x = (i + 0.5) * sx + a * sx / 7.0, y = (j + 0.5) * sy + b * sy / 7.0;
+          if (!world.spawn(id, geometry::Pose2{x, y, 0.0}).accepted) continue;
+          char line[160];
+          std::snprintf(line, sizeof line,
+                        "robots { id: \"%s\" kinematics: HOLONOMIC start { x: %.3f y: %.3f } spawn_at_start: true }", id,
+                        x, y);
+          lines.emplace_back(line);
+          break;
+        }
+      }
+    }
+  }
+  std::ifstream in(path);
+  std::ofstream out(out_path);
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("robots {", 0) != 0) out << line << "\n";
+  for (const auto& l : lines) out << l << "\n";
+  if (!out) throw std::runtime_error("cannot write " + out_path);
+  return out_path;
+}
+
+// VmRSS and VmHWM of a process, in MiB.
+std::pair<double, double> resident_mib(pid_t pid) {
+  std::ifstream f("/proc/" + std::to_string(pid) + "/status");
+  std::string line;
+  double rss = 0.0, peak = 0.0;
+  while (std::getline(f, line)) {
+    if (line.rfind("VmRSS:", 0) == 0) rss = std::stod(line.substr(6)) / 1024.0;
+    if (line.rfind("VmHWM:", 0) == 0) peak = std::stod(line.substr(6)) / 1024.0;
+  }
+  return {rss, peak};
 }
 
 struct Counts {
@@ -186,9 +279,17 @@ struct Counts {
 
 int main(int argc, char** argv) {
   try {
-    const Options o = parse(argc, argv);
+    Options o = parse(argc, argv);
     if (!std::getenv("CYCLONEDDS_URI"))
       progress("note: CYCLONEDDS_URI is not set; Cyclone picks its default network interface");
+    const std::string log_dir = "/tmp/autonomy-bench/paced-" + std::to_string(getpid());
+    std::filesystem::create_directories(log_dir);
+    if (o.robots > 0) {
+      const sim::ScenarioLoadResult original = sim::load_scenario_file(o.scenario);
+      if (!original.ok()) throw std::runtime_error(original.error_text());
+      progress("[scenario] %d robots on the map of %s", o.robots, o.scenario.c_str());
+      o.scenario = scenario_with_robots(o.scenario, *original.scenario, o.robots, log_dir + "/scenario.pbtxt");
+    }
     const sim::ScenarioLoadResult loaded = sim::load_scenario_file(o.scenario);
     if (!loaded.ok()) throw std::runtime_error(loaded.error_text());
     const sim::Scenario& scenario = *loaded.scenario;
@@ -200,11 +301,11 @@ int main(int argc, char** argv) {
 
     // Baseline: the same work in-process.
     progress("[in-process] world step, sensing and radio for %zu robots", ids.size());
-    const InProcess base = in_process(scenario, 50);
+    const InProcess base = in_process(scenario, 50, false);
+    progress("[in-process] the same with the all-pairs reference, %d ticks", o.reference_ticks);
+    const InProcess reference = in_process(scenario, o.reference_ticks, true);
 
     // The simulator process.
-    const std::string log_dir = "/tmp/autonomy-bench/paced-" + std::to_string(getpid());
-    std::filesystem::create_directories(log_dir);
     const std::string dom = std::to_string(o.domain);
     dds::Participant participant(o.domain);
     dds::Topic<msg::SimClock> clock_topic(participant, dds::topics::clock);
@@ -224,7 +325,8 @@ int main(int argc, char** argv) {
 
     progress("[simulator] %s, paced, step %.3g s, warp %.3g, radio every %d tick(s), domain %d", o.scenario.c_str(),
              step_s, warp, o.radio_period, o.domain);
-    ChildProcess sim({self_dir() + "/simulator", "--config", o.scenario, "--mode", "paced", "--domain", dom,
+    const std::string simulator_exe = o.simulator.empty() ? self_dir() + "/simulator" : o.simulator;
+    ChildProcess sim({simulator_exe, "--config", o.scenario, "--mode", "paced", "--domain", dom,
                       "--radio-period", std::to_string(o.radio_period), "--log-level", "warn", "--log-dir", log_dir},
                      false, log_dir + "/simulator.out");
 
@@ -302,6 +404,7 @@ int main(int argc, char** argv) {
     const std::map<std::string, double> threads1 = thread_cpu_seconds(sim.pid());
     const int64_t tick1 = latest_tick;
     const double bench_cpu = process_cpu_now() - bench_cpu0;
+    const auto [rss_mib, peak_mib] = resident_mib(sim.pid());
     (void)measuring;
     sim.terminate();
 
@@ -318,14 +421,29 @@ int main(int argc, char** argv) {
     std::printf("\n== paced_sim_bench: %s, %zu robots, paced %.3g Hz (step %.3g s, warp %.3g), radio every %d tick(s) ==\n",
                 scenario.world.name.c_str(), ids.size(), tick_hz, step_s, warp, o.radio_period);
     std::printf("load average at the end: %s", load);
-    std::printf("baseline, in-process (no DDS), per tick: step %.2f ms, scans + poses %.2f ms, radio table + "
-                "connectivity %.2f ms = %.2f ms -> %.1f %% of a core at %.3g Hz\n",
-                base.step_ms, base.sense_ms, base.radio_ms, base.step_ms + base.sense_ms + base.radio_ms,
-                (base.step_ms + base.sense_ms + base.radio_ms) * tick_hz / 10.0, tick_hz);
+    std::printf("simulator: %s\n", simulator_exe.c_str());
+    const auto print_in_process = [&](const char* name, const InProcess& r) {
+      std::printf("%s, in-process (no DDS), per tick over %d ticks: step %.2f ms, scans + poses %.2f ms, radio "
+                  "%.2f ms (%.0f pairs computed, %.0f connected) = %.2f ms -> %.1f %% of a core at %.3g Hz\n",
+                  name, r.ticks, r.step_ms, r.sense_ms, r.radio_ms, r.pairs_computed, r.connected, r.total_ms(),
+                  r.total_ms() * tick_hz / 10.0, tick_hz);
+    };
+    print_in_process("spatial index + near links", base);
+    if (reference.ticks > 0) {
+      print_in_process("baseline all pairs         ", reference);
+      std::printf("  all pairs / index: step %.1f x, scans %.1f x, radio %.1f x, total %.1f x\n",
+                  reference.step_ms / std::max(base.step_ms, 1e-9), reference.sense_ms / std::max(base.sense_ms, 1e-9),
+                  reference.radio_ms / std::max(base.radio_ms, 1e-9), reference.total_ms() / std::max(base.total_ms(), 1e-9));
+    }
     std::printf("simulator process over %.1f s: CPU %.1f %% of one core (%.2f ms per tick), %.2f ticks/s published "
                 "(target %.3g), mean step %.0f us (its own count)\n",
                 window_s, 100.0 * sim_share, ticks_per_s > 0 ? 1e3 * (cpu1 - cpu0) / (ticks_per_s * window_s) : 0.0,
                 ticks_per_s, tick_hz, mean_step_us);
+    std::printf("  resident memory at the end: %.0f MiB (peak %.0f MiB)\n", rss_mib, peak_mib);
+    std::printf("SCALE robots=%zu ticks_per_s=%.2f cpu_share=%.3f rss_mib=%.0f peak_mib=%.0f links_per_s=%.0f "
+                "inproc_ms=%.2f allpairs_ms=%.2f\n",
+                ids.size(), ticks_per_s, sim_share, rss_mib, peak_mib, rate(&Counts::links), base.total_ms(),
+                reference.ticks > 0 ? reference.total_ms() : 0.0);
     std::printf("  by thread:");
     for (const auto& [name, s] : threads1) {
       const auto it = threads0.find(name);
@@ -341,7 +459,7 @@ int main(int argc, char** argv) {
     std::printf("goal: under %.0f %% of one core -> simulator uses %.2f x the budget (%s); in-process work alone "
                 "is %.2f x it\n",
                 100.0 * kGoalCoreShare, sim_share / kGoalCoreShare, sim_share < kGoalCoreShare ? "met" : "NOT met",
-                (base.step_ms + base.sense_ms + base.radio_ms) * tick_hz / 1e3 / kGoalCoreShare);
+                base.total_ms() * tick_hz / 1e3 / kGoalCoreShare);
     return 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "paced_sim_bench: %s\n", e.what());

@@ -58,10 +58,6 @@ VelocityCommand from_msg(const msg::VelocityCommand& c) { return {c.robot_id, c.
 
 int64_t to_ns(double seconds) { return static_cast<int64_t>(std::llround(seconds * 1e9)); }
 
-// A link sample is written when the pair is new, when connected changes, or when the signal moved
-// by more than this since the last sample of the pair.
-constexpr double kLinkSignalChangeDb = 1.0;
-
 bool has_range_sensor(const RobotSpec& spec) {
   return spec.sensors.range.rays > 0 && spec.sensors.range.max_range_m > 0.0;
 }
@@ -637,24 +633,16 @@ void SimulatorNode::update_radio() {
     positions.push_back(r.pose.position());
   }
   sync_door_leaves(world_.doors(), radio_);  // doors attenuate at their current angle
-  radio_.update(positions, links_);
+  links_.update(radio_, positions);
   connectivity_.emplace(links_);
 
-  for (size_t i = 0; i < radio_ids_.size(); ++i) {
-    for (size_t j = i + 1; j < radio_ids_.size(); ++j) {
-      const radio::LinkQuality& q = links_.at(i, j);
-      const auto key = std::make_pair(radio_ids_[i], radio_ids_[j]);
-      auto it = published_links_.find(key);
-      if (it != published_links_.end() && it->second.connected == q.connected &&
-          std::abs(it->second.signal_dbm - q.signal_dbm) <= kLinkSignalChangeDb)
-        continue;
-      msg::RadioLink link{key.first, key.second, tick_, q.signal_dbm, q.margin_db, q.connected};
-      if (it != published_links_.end() && it->second.connected != q.connected)
-        spdlog::info("radio link {}-{} {} at tick {} ({:.1f} dBm, margin {:.1f} dB)", key.first, key.second,
-                     q.connected ? "connected" : "lost", tick_, q.signal_dbm, q.margin_db);
-      link_writer_.write(link);
-      published_links_[key] = std::move(link);
-    }
+  const auto exact = [&](size_t i, size_t j) { return radio_.link(positions[i], positions[j]); };
+  for (const radio::LinkSample& l : link_changes_.update(radio_ids_, links_, exact)) {
+    const radio::LinkQuality& q = l.quality;
+    if (l.lost)
+      spdlog::info("radio link {}-{} lost at tick {} ({:.1f} dBm, margin {:.1f} dB)", l.robot_a, l.robot_b, tick_,
+                   q.signal_dbm, q.margin_db);
+    link_writer_.write(msg::RadioLink{l.robot_a, l.robot_b, tick_, q.signal_dbm, q.margin_db, q.connected});
   }
 
   std::vector<std::vector<std::string>> components;

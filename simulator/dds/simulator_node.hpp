@@ -24,6 +24,7 @@
 #include "simulator/core/world.hpp"
 #include "simulator/office/handover_desk.hpp"
 #include "simulator/radio/connectivity.hpp"
+#include "simulator/radio/link_changes.hpp"
 #include "simulator/radio/message_relay.hpp"
 #include "simulator/radio/radio_model.hpp"
 #include "simulator/report/run_metrics.hpp"
@@ -164,13 +165,13 @@ class SimulatorNode {
   std::map<std::string, geometry::Pose2> published_poses_;
   dds::GuardCondition quiet_continue_;
 
-  // Radio: robots in id order are the table's indices.
+  // Radio: robots in id order are the table's indices; only connected links are held.
   radio::RadioModel radio_;
-  radio::LinkTable links_;
+  radio::NearLinkTable links_;
   std::vector<std::string> radio_ids_;
   std::optional<radio::Connectivity> connectivity_;
   bool radio_dirty_ = true;  // robots joined since the last update
-  std::map<std::pair<std::string, std::string>, msg::RadioLink> published_links_;
+  radio::LinkChangeFilter link_changes_;  // which RadioLink samples to write
   std::optional<std::vector<std::vector<std::string>>> published_components_;
   std::mt19937_64 delivery_rng_;
   radio::MessageRelay<msg::TeamDelivery> relay_;
