@@ -8,6 +8,8 @@ Command add_topic_list(CLI::App& topic);
 Command add_topic_echo(CLI::App& topic);
 Command add_topic_hz(CLI::App& topic);
 Command add_topic_pub(CLI::App& topic);
+Command add_topic_type(CLI::App& topic);
+Command add_interface_show(CLI::App& interface);
 Command add_node_list(CLI::App& node);
 Command add_node_wait(CLI::App& node);
 Command add_node_watch(CLI::App& node);

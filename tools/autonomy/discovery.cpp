@@ -73,8 +73,8 @@ std::vector<Endpoint> Discovery::writers_of(const std::string& topic) const {
 
 namespace autonomy::tools {
 
-dds::Qos mirror_writers_qos(const TopicEntry& topic, const std::vector<Endpoint>& writers) {
-  dds::Qos q = dds::make_qos(topic.qos);
+dds::Qos mirror_writers_qos(dds::QosClass without_writers, const std::vector<Endpoint>& writers) {
+  dds::Qos q = dds::make_qos(without_writers);
   if (!writers.empty()) {
     bool reliable = true, durable = true;
     for (const auto& w : writers) {

@@ -45,7 +45,10 @@ class Discovery {
 // transient-local when every writer is (at least) transient-local, reliable when every writer is
 // reliable; the weaker choice when they differ, so that every writer matches. Without writers,
 // the catalogue's class. History is keep-last, deep enough for a tool that prints or counts.
-dds::Qos mirror_writers_qos(const TopicEntry& topic, const std::vector<Endpoint>& writers);
+dds::Qos mirror_writers_qos(dds::QosClass without_writers, const std::vector<Endpoint>& writers);
+inline dds::Qos mirror_writers_qos(const TopicEntry& topic, const std::vector<Endpoint>& writers) {
+  return mirror_writers_qos(topic.qos, writers);
+}
 
 // Waits up to wait for writers of topic to be discovered (a little longer once the first one is
 // seen, for others discovered in the same moment); returns them, empty if none or interrupted.

@@ -62,7 +62,7 @@ int main(int argc, char** argv) {
       "pub or node wait was reached. echo and hz end with 0 on Ctrl-C.\n"
       "Environment: AUTONOMY_DOMAIN (default for --domain), CYCLONEDDS_URI (Cyclone DDS configuration, e.g. "
       "file://.../deploy/dds/loopback.xml).");
-  auto* topic = app.add_subcommand("topic", "Topics: list, echo, hz, pub");
+  auto* topic = app.add_subcommand("topic", "Topics: list, echo, hz, pub, type");
   topic->require_subcommand(1);
   auto* node = app.add_subcommand("node", "Our processes, from their heartbeats: list, wait, watch");
   node->require_subcommand(1);
@@ -70,9 +70,12 @@ int main(int argc, char** argv) {
   courier->require_subcommand(1);
   auto* bag = app.add_subcommand("bag", "Recordings (MCAP): info");
   bag->require_subcommand(1);
+  auto* interface = app.add_subcommand("interface", "Types: show (as IDL)");
+  interface->require_subcommand(1);
 
   const std::vector<Command> commands = {add_topic_list(*topic), add_topic_echo(*topic), add_topic_hz(*topic),
-                                         add_topic_pub(*topic),  add_node_list(*node),   add_node_wait(*node),
+                                         add_topic_pub(*topic),  add_topic_type(*topic), add_interface_show(*interface),
+                                         add_node_list(*node),   add_node_wait(*node),
                                          add_node_watch(*node),
                                          add_courier_send(*courier), add_courier_jobs(*courier),
                                          add_courier_cancel(*courier), add_courier_knowledge(*courier),

@@ -3,8 +3,11 @@
 #include <memory>
 
 #include "tools/autonomy/commands.hpp"
-#include "tools/autonomy/suggest.hpp"
+#include "tools/autonomy/discovered_reader.hpp"
 #include "tools/autonomy/discovery.hpp"
+#include "tools/autonomy/suggest.hpp"
+#include "tools/xtypes/field_path.hpp"
+#include "tools/xtypes/type_lookup.hpp"
 
 namespace autonomy::tools {
 
@@ -17,7 +20,26 @@ struct EchoOptions {
   double timeout_s = 0.0;
   double discovery_s = 1.0;
   bool verbose = false;
+  std::string field;
+  std::string bytes = "base64";
 };
+
+xtypes::BytesStyle bytes_style_of(const std::string& name) {
+  return name == "hex" ? xtypes::BytesStyle::Hex : name == "array" ? xtypes::BytesStyle::Numbers : xtypes::BytesStyle::Base64;
+}
+
+// --field checked against the type before waiting for samples; prints the error and returns false.
+bool field_fits(const EchoOptions& o, const xtypes::Type& type) {
+  if (o.field.empty()) return true;
+  try {
+    xtypes::check_field_path(type, o.field);
+    return true;
+  } catch (const xtypes::FieldPathError& e) {
+    const std::string hint = did_you_mean(e.word, e.candidates);
+    std::cerr << "autonomy topic echo: " << e.what() << (hint.empty() ? "" : "; " + hint) << "\n";
+    return false;
+  }
+}
 
 std::string dump(const json::Json& j) { return j.dump(-1, ' ', false, json::Json::error_handler_t::replace); }
 
@@ -26,10 +48,6 @@ enum Tag : dds_attach_t { kData = 1, kInterrupt = 2, kStatus = 3 };
 int run_echo(const EchoOptions& o, Context& ctx) {
   const auto registry = TopicRegistry::catalogue();
   const TopicEntry* topic = registry.find(o.topic);
-  if (!topic) {
-    std::cerr << unknown_topic_message("autonomy topic echo", o.topic, registry.name_list()) << "\n";
-    return kExitUsage;
-  }
   const auto start = std::chrono::steady_clock::now();
   const bool has_deadline = o.timeout_s > 0;
   const auto deadline = start + seconds(o.timeout_s);
@@ -39,9 +57,42 @@ int run_echo(const EchoOptions& o, Context& ctx) {
   std::string why;
   auto discovery_wait = seconds(o.discovery_s);
   if (has_deadline) discovery_wait = std::min<std::chrono::nanoseconds>(discovery_wait, seconds(o.timeout_s));
-  const auto reader = open_mirroring_reader(participant, *topic, interrupt, discovery_wait, &why);
-  if (o.verbose)
-    std::cerr << "autonomy topic echo: " << topic->name << " (" << topic->type_name << "): " << why << "\n";
+  std::unique_ptr<AnyReader> reader;
+  std::string type_name;
+  if (topic) {
+    // The catalogue's own types: printed by their tables, the type (for --field) from the
+    // type information idlc compiled in.
+    reader = open_mirroring_reader(participant, *topic, interrupt, discovery_wait, &why);
+    type_name = topic->type_name;
+    if (!o.field.empty() &&
+        !field_fits(o, *xtypes::TypeLookup(participant.handle(), DDS_SECS(1)).resolve_entity(reader->handle())))
+      return kExitUsage;
+  } else {
+    // Any other topic: its type from discovery, its samples through the generic walker.
+    xtypes::WalkOptions walk;
+    walk.bytes = bytes_style_of(o.bytes);
+    OpenedDiscoveredTopic opened;
+    try {
+      opened = open_discovered_topic(participant, o.topic, interrupt, discovery_wait, walk, &why);
+    } catch (const xtypes::TypeLookupError& e) {
+      std::cerr << "autonomy topic echo: " << o.topic << ": " << e.what() << "\n";
+      return kExitFailed;
+    }
+    if (interrupt.requested()) return kExitOk;
+    if (!opened.reader) {
+      auto names = registry.name_list();
+      for (auto& n : discovered_topic_names(participant)) names.push_back(n);
+      std::cerr << unknown_topic_message("autonomy topic echo", o.topic, names)
+                << " (not in the catalogue, and no process on domain " << o.domain << " has an endpoint of it within "
+                << o.discovery_s << " s; --discovery-wait waits longer)\n";
+      return kExitUsage;
+    }
+    if (!field_fits(o, *opened.type)) return kExitUsage;
+    reader = std::move(opened.reader);
+    type_name = opened.type_name;
+  }
+  const std::string topic_name = o.topic;
+  if (o.verbose) std::cerr << "autonomy topic echo: " << topic_name << " (" << type_name << "): " << why << "\n";
 
   dds::WaitSet waitset(participant);
   waitset.attach(reader->data_condition(), kData);
@@ -51,7 +102,16 @@ int run_echo(const EchoOptions& o, Context& ctx) {
 
   int64_t printed = 0;
   auto emit = [&](const json::Json& j) {  // true once --count lines are out
-    print_line(dump(j));
+    if (!o.field.empty() && !j.contains("instance_state")) {
+      try {
+        print_line(dump(xtypes::select_field(j, o.field)));
+      } catch (const xtypes::FieldPathError& e) {  // e.g. an index beyond this sample's sequence
+        std::cerr << "autonomy topic echo: " << e.what() << "\n";
+        return false;
+      }
+    } else {
+      print_line(dump(j));
+    }
     ++printed;
     return o.count > 0 && printed >= o.count;
   };
@@ -59,7 +119,7 @@ int run_echo(const EchoOptions& o, Context& ctx) {
     const auto samples = reader->take(true);
     for (size_t i = 0; i < samples.size(); ++i) {
       const auto& s = samples[i];
-      if (s.valid && emit(s.json)) return kExitOk;
+      if (s.valid && !s.json.is_null() && emit(s.json)) return kExitOk;
       // A disposed instance (its writer retracted it, or stopped cleanly) is news, printed once
       // after the instance's last sample of the batch: Cyclone reports the disposal on that
       // sample when it was still unread, else as a sample without data. An instance that only
@@ -77,14 +137,14 @@ int run_echo(const EchoOptions& o, Context& ctx) {
     dds_requested_incompatible_qos_status_t incompatible{};
     if (dds_get_requested_incompatible_qos_status(reader->handle(), &incompatible) == DDS_RETCODE_OK &&
         incompatible.total_count_change > 0)
-      std::cerr << "autonomy topic echo: a writer of " << topic->name << " does not match this reader's QoS (policy id "
+      std::cerr << "autonomy topic echo: a writer of " << topic_name << " does not match this reader's QoS (policy id "
                 << incompatible.last_policy_id << "); its samples are not shown\n";
 
     auto wait = std::chrono::nanoseconds(std::chrono::seconds(1));
     if (has_deadline) {
       const auto left = deadline - std::chrono::steady_clock::now();
       if (left <= std::chrono::nanoseconds::zero()) {
-        std::cerr << "autonomy topic echo: timeout after " << o.timeout_s << " s on " << topic->name << ": " << printed
+        std::cerr << "autonomy topic echo: timeout after " << o.timeout_s << " s on " << topic_name << ": " << printed
                   << (o.count > 0 ? " of " + std::to_string(o.count) : std::string()) << " sample(s)\n";
         return kExitFailed;
       }
@@ -100,12 +160,18 @@ Command add_topic_echo(CLI::App& topic) {
   auto o = std::make_shared<EchoOptions>();
   auto* cmd = topic.add_subcommand(
       "echo",
-      "Print a catalogue topic's samples, one JSON object per line (every field; enums as lower-case names). "
+      "Print a topic's samples, one JSON object per line (every field; enums as lower-case names). A topic that is "
+      "not in the catalogue is read with the type its writers announce in discovery (XTypes type information) "
+      "and printed by the generic walker (octet sequences as {\"length\", \"base64\"}). "
       "A sample that only reports a disposed instance prints {\"instance_state\":\"disposed\", <key fields>} "
       "(and counts as a sample). The reader mirrors the QoS of the writers it discovers (durability, reliability), so "
       "the current state of state topics shows at once.");
   add_domain_option(cmd, o->domain);
-  cmd->add_option("topic", o->topic, "Topic name, e.g. autonomy/robot/state (see `autonomy topic list`)")->required();
+  cmd->add_option("topic", o->topic, "Topic name, e.g. autonomy/robot/state or any topic on the domain (see `autonomy topic list`)")->required();
+  cmd->add_option("--field", o->field, "Print only this member: a.b, points[2].x (checked against the type)");
+  cmd->add_option("--bytes", o->bytes, "Octet sequences of other processes' types as base64, hex or array (of numbers)")
+      ->check(CLI::IsMember({"base64", "hex", "array"}))
+      ->capture_default_str();
   cmd->add_option("-n,--count", o->count, "Exit 0 after this many samples (0: no limit)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
@@ -119,7 +185,7 @@ Command add_topic_echo(CLI::App& topic) {
   const std::string topics = "\nTopics of the catalogue: " + TopicRegistry::catalogue().names() + ".";
   cmd->footer(
       "Exit codes: 0 --count samples printed, or stopped with Ctrl-C; 1 --timeout passed first, or DDS error; "
-      "2 unknown topic or bad arguments." +
+      "2 unknown topic, --field not in the type, or bad arguments." +
       topics);
   return {cmd, [o](Context& ctx) { return run_echo(*o, ctx); }};
 }

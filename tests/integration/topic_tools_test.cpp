@@ -1,0 +1,99 @@
+// `autonomy topic echo`, `topic type` and `interface show` on a topic whose type is not in the
+// project's IDL: ddsperf (Cyclone's tool, a real foreign process) publishes DDSPerfRDataKS of its
+// own type KeyedSeq; the tool gets the type from discovery's type information and prints the
+// samples' fields. Domains 138-139.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "tests/support/process_test.hpp"
+
+namespace autonomy::test {
+namespace {
+
+using namespace std::chrono_literals;
+
+constexpr int kDomainForeignEcho = 138;
+constexpr int kDomainForeignType = 139;
+constexpr const char* kDdsperf = "/usr/bin/ddsperf";
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::istringstream in(text);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty()) lines.push_back(line);
+  return lines;
+}
+
+class TopicToolsTest : public ProcessTest {
+ protected:
+  // Runs the tool to its end; returns its stdout lines (stderr goes to <name>.err).
+  std::vector<std::string> run_tool(const std::string& name, std::vector<std::string> args, int expected_code = 0) {
+    args.insert(args.end(), {"--domain", std::to_string(domain_)});
+    auto& tool = start(name, AUTONOMY_AUTONOMY_BIN, args, /*must_keep_running=*/false, /*separate_stderr=*/true);
+    const auto ended = tool.wait_for_exit(60s);
+    EXPECT_TRUE(ended.has_value()) << name << " did not end";
+    if (ended) {
+      EXPECT_TRUE(ended->exited && ended->code == expected_code)
+          << name << ": " << ended->describe() << "\n" << read_file(dir().file(name + ".err"));
+    }
+    return lines_of(read_file(tool.log_file()));
+  }
+  void start_ddsperf() {
+    // 20 samples/s of 24 bytes (seq, keyval, the baggage length and 12 octets of baggage), for
+    // at most 60 s (the test ends it before).
+    start("ddsperf", kDdsperf, {"-i", std::to_string(domain_), "-D", "60", "pub", "20Hz", "size", "24"});
+  }
+};
+
+TEST_F(TopicToolsTest, EchoPrintsTheFieldsOfAForeignType) {
+  if (::access(kDdsperf, X_OK) != 0) GTEST_SKIP() << "ddsperf (cyclonedds-tools) is not installed";
+  join(kDomainForeignEcho);
+  start_ddsperf();
+  const auto lines = run_tool("echo", {"topic", "echo", "DDSPerfRDataKS", "--count", "2", "--timeout", "30",
+                                       "--discovery-wait", "10"});
+  ASSERT_EQ(lines.size(), 2u);
+  int64_t previous_seq = -1;
+  for (const auto& line : lines) {
+    const auto j = nlohmann::json::parse(line);
+    ASSERT_TRUE(j.contains("seq") && j["seq"].is_number_unsigned()) << line;
+    EXPECT_TRUE(j.contains("keyval") && j["keyval"].is_number()) << line;
+    ASSERT_TRUE(j.contains("baggage")) << line;
+    EXPECT_EQ(j["baggage"].value("length", 0), 12) << line;
+    EXPECT_EQ(j["baggage"].value("base64", "").size(), 16u) << line;  // 12 bytes in base64
+    EXPECT_GT(j["seq"].get<int64_t>(), previous_seq) << line;
+    previous_seq = j["seq"].get<int64_t>();
+  }
+  const auto field = run_tool("echo-field", {"topic", "echo", "DDSPerfRDataKS", "--count", "1", "--timeout", "30",
+                                             "--field", "baggage", "--bytes", "hex"});
+  ASSERT_EQ(field.size(), 1u);
+  EXPECT_EQ(nlohmann::json::parse(field[0]).value("hex", "").size(), 24u) << field[0];
+  // A member the type does not have: usage error naming it and the nearest member.
+  run_tool("echo-bad-field", {"topic", "echo", "DDSPerfRDataKS", "--timeout", "30", "--field", "baggag"}, 2);
+  EXPECT_NE(read_file(dir().file("echo-bad-field.err")).find("did you mean baggage"), std::string::npos)
+      << read_file(dir().file("echo-bad-field.err"));
+}
+
+TEST_F(TopicToolsTest, TopicTypeAndInterfaceShowPrintIdl) {
+  if (::access(kDdsperf, X_OK) != 0) GTEST_SKIP() << "ddsperf (cyclonedds-tools) is not installed";
+  join(kDomainForeignType);
+  start_ddsperf();
+  const auto idl = run_tool("type", {"topic", "type", "DDSPerfRDataKS", "--discovery-wait", "10"});
+  std::string text;
+  for (const auto& l : idl) text += l + "\n";
+  EXPECT_NE(text.find("struct KeyedSeq {"), std::string::npos) << text;
+  EXPECT_NE(text.find("@key uint32 keyval;"), std::string::npos) << text;
+  EXPECT_NE(text.find("sequence<octet> baggage;"), std::string::npos) << text;
+  const auto ours = run_tool("show", {"interface", "show", "NavGoal", "--discovery-wait", "0"});
+  std::string ours_text;
+  for (const auto& l : ours) ours_text += l + "\n";
+  EXPECT_NE(ours_text.find("@key string robot_id;"), std::string::npos) << ours_text;
+  run_tool("unknown", {"topic", "type", "DDSPerfRDataKZ", "--discovery-wait", "1"}, 2);
+  EXPECT_NE(read_file(dir().file("unknown.err")).find("did you mean DDSPerfRDataKS"), std::string::npos)
+      << read_file(dir().file("unknown.err"));
+}
+
+}  // namespace
+}  // namespace autonomy::test
