@@ -2,15 +2,17 @@
 // the office floor, in lockstep: robots crossing one doorway from both sides all get through
 // without touching (judged on the simulator's robot states, its ground truth), waiting visibly;
 // a robot parked in, or killed in, the only doorway of a room ends the others' goals Blocked with
-// a reason that names it.
+// a reason that names it; two robots meeting head-on in the hallway pass (one gives way).
 //
-// One DDS domain per test; this file uses 49-51 only:
+// One DDS domain per test; this file uses 49-51 and 104-105 only:
 //
 //   domain  test
 //   ------  -----------------------------------------------
 //     49    TrafficTest.FourRobotsCrossOneDoorwayFromBothSides
 //     50    TrafficDoorwayTest.ARobotParkedInTheOnlyDoorwayBlocksWithAReason
 //     51    TrafficDoorwayTest.ARobotKilledInTheOnlyDoorwayBlocksWithAReason
+//    104    TrafficTest.TwoRobotsHeadOnInTheHallwayBothArrive
+//    105    TrafficDoorwayTest.ARobotKilledDrivingThroughTheOnlyDoorwayBlocksWithAReason
 #include "tests/support/goal_statuses.hpp"
 #include "tests/support/process_test.hpp"
 
@@ -19,6 +21,7 @@
 
 #include <cmath>
 #include <map>
+#include <thread>
 
 namespace autonomy::test {
 namespace {
@@ -97,6 +100,30 @@ TEST_F(TrafficTest, FourRobotsCrossOneDoorwayFromBothSides) {
   EXPECT_EQ(c.collisions, 0);
 }
 
+// Two robots drive the 1.8 m hallway towards each other (wide enough for two side by side, so
+// no passage): the later in the order (r2) steps aside, saying whom it gives way to, and both
+// arrive without touching.
+TEST_F(TrafficTest, TwoRobotsHeadOnInTheHallwayBothArrive) {
+  join(104);
+  Recorder<msg::RobotState> states(participant(), dds::topics::robot_state);
+  Recorder<msg::GoalStatus> goals(participant(), dds::topics::goal_status);
+  start_simulator({"--config", kOffice, "--without-robots", "--wait-for", "behavior/r1", "behavior/r2"});
+  start_behavior("r1", {"--start", "10.0", "8.0", "0", "--goal", "26.0", "8.0"});
+  start_behavior("r2", {"--start", "26.0", "8.0", "3.14", "--goal", "10.0", "8.0"});
+  ASSERT_TRUE(await("both goals ended", [&] {
+    goals.poll();
+    return ended(of(goals, "r1")) && ended(of(goals, "r2"));
+  }, 120s));
+  states.poll();
+  for (const std::string r : {"r1", "r2"}) EXPECT_EQ(of(goals, r).back().state, GoalState::Reached) << r << ": " << states_text(of(goals, r));
+  bool gave_way = false;
+  for (const auto& g : of(goals, "r2")) gave_way |= g.reason == "giving way to r1";
+  EXPECT_TRUE(gave_way) << states_text(of(goals, "r2"));
+  const Contact c = contacts(states.all());
+  EXPECT_GE(c.closest_m, 0.6 + 0.01) << c.where;
+  EXPECT_EQ(c.collisions, 0);
+}
+
 // r1 stands in A-114's doorway, alive with nothing to do, or killed there; r2 in A-114 is sent
 // to the hallway. A-114 has no other door: r2's goal ends Blocked within the test's bound, the
 // reason naming r1 and the doorway, and r2 never touches r1.
@@ -140,6 +167,56 @@ class TrafficDoorwayTest : public TrafficTest {
 TEST_F(TrafficDoorwayTest, ARobotParkedInTheOnlyDoorwayBlocksWithAReason) { run(50, false); }
 
 TEST_F(TrafficDoorwayTest, ARobotKilledInTheOnlyDoorwayBlocksWithAReason) { run(51, true); }
+
+// r1 drives out of A-114 through its doorway and is killed (SIGKILL) in it, holding the passage;
+// the lockstep world waits for its ack, so it dies where it was seen (the robots drive at 0.1 m/s
+// here, so that the test sees r1 in the doorway's box before it has left it). r2, in A-114, is then sent
+// to the hallway: it first waits for r1 (fresh itinerary), then, once r1's itinerary aged past
+// the expiry, ends Blocked naming r1 and the doorway instead of waiting for ever.
+TEST_F(TrafficDoorwayTest, ARobotKilledDrivingThroughTheOnlyDoorwayBlocksWithAReason) {
+  join(105);
+  Recorder<msg::RobotState> states(participant(), dds::topics::robot_state);
+  Recorder<msg::GoalStatus> goals(participant(), dds::topics::goal_status);
+  dds::Topic<msg::NavGoal> goal_topic(participant(), dds::topics::nav_goal);
+  dds::Writer<msg::NavGoal> goal_writer(participant(), goal_topic);
+  std::string slow = read_file(kOffice);
+  for (std::size_t at = slow.find("max_speed: 0.9"); at != std::string::npos; at = slow.find("max_speed: 0.9", at))
+    slow.replace(at, 14, "max_speed: 0.1");
+  const std::string scenario = dir().file("office-slow.pbtxt");
+  write_file(scenario, slow);
+  start_simulator({"--config", scenario, "--without-robots", "--wait-for", "behavior/r1", "behavior/r2",
+                   "--ack-timeout", "2"});
+  auto& r1 = start_behavior("r1", {"--config", scenario, "--start", "17.6", "4.0", "1.57", "--goal", "17.6", "8.3"});
+  start_behavior("r2", {"--config", scenario, "--start", "19.5", "3.0", "1.57"});
+  // Polled every millisecond: r1 is in the doorway's box (y 6.3 ... 7.7) for about 140 ticks.
+  double r1_y = 0.0;
+  const auto give_up = std::chrono::steady_clock::now() + 60s;
+  while (r1_y < 6.6 && std::chrono::steady_clock::now() < give_up) {
+    for (const auto& s : states.poll())
+      if (s.robot_id == "r1") r1_y = s.y;
+    std::this_thread::sleep_for(1ms);
+  }
+  ASSERT_GE(r1_y, 6.6) << "r1 never reached the doorway";
+  stop_watching(r1);
+  r1.signal(SIGKILL);
+  ASSERT_TRUE(r1.wait_for_exit(10s));
+  ASSERT_TRUE(goal_writer.wait_for_readers(1, kDeadline));
+  goal_writer.write({"r2", "out", 20.5, 8.0, 0.0, ""});
+  ASSERT_TRUE(await("r2's goal ended", [&] {
+    goals.poll();
+    return ended(of(goals, "r2"));
+  }, 120s));
+  states.poll();
+  for (const auto& s : states.all())
+    if (s.robot_id == "r1") r1_y = s.y;
+  ASSERT_GT(r1_y, 6.3);  // r1 died in the box: the case this test is about
+  ASSERT_LT(r1_y, 7.7);
+  const auto v = of(goals, "r2");
+  ASSERT_EQ(v.back().state, GoalState::Blocked) << states_text(v);
+  EXPECT_NE(v.back().reason.find("robot r1 ("), std::string::npos) << v.back().reason;
+  EXPECT_NE(v.back().reason.find("in doorway A-114"), std::string::npos) << v.back().reason;
+  EXPECT_GE(contacts(states.all()).closest_m, 0.6 - 1e-6);
+}
 
 }  // namespace
 }  // namespace autonomy::test

@@ -139,9 +139,16 @@ class BehaviorNode {
   void start_traffic(double radius_m);
   std::optional<VelocityCommand> traffic_step(const geometry::Pose2& pose, double now_s);
   std::vector<traffic::OtherRobot> other_robots(double now_s) const;
+  // Stands aside for `whom` (traffic/give_way.hpp): the goal waits with the reason "giving way to
+  // r1" at a side point until the way is clear (bounded with the goal's other waits).
+  VelocityCommand give_way(const geometry::Pose2& pose, const std::string& whom,
+                           const std::vector<traffic::OtherRobot>& others, double now_s);
   // Robots that hold nothing (no itinerary, a stale one, parked) near this one become obstacles
   // of its plans; `force` adds one the traffic rule found in a passage. Replans when they changed.
   void refresh_robot_obstacles(const geometry::Vec2& me, double now_s, const std::string& force = "");
+  // Waiting robots leave the planning map (before a new goal is planned: they will move; the next
+  // traffic step takes them in again where a route is left beside them).
+  void forget_waiting_robots();
   // The map as this robot plans on it: the doors it knows of and the robots it plans around.
   WorldMap planning_world() const;
   std::string planning_closures() const;
@@ -193,7 +200,7 @@ class BehaviorNode {
     std::optional<geometry::Vec2> point;
     std::optional<CostToGoField> field;
   };
-  std::optional<Holding> holding_;                     // while waiting for a passage
+  std::optional<Holding> holding_;                     // while waiting for a passage or giving way
   struct RobotObstacle {
     geometry::Vec2 position;
     double radius = 0.0;
@@ -201,6 +208,14 @@ class BehaviorNode {
     bool soft = false;  // a waiting robot: dropped when it leaves no route
   };
   std::map<std::string, RobotObstacle> robot_obstacles_;  // planned around now
+  // Waiting robots left out of the plan because they left no route, where they stood then: they
+  // stay left out while they stand there (taking them in again each tick would replan each tick).
+  std::map<std::string, geometry::Vec2> soft_dropped_;
+  // The pursued goal's time spent waiting (for passages and giving way) in all, bounded by the
+  // rule's max_wait_s: waits one after another must not keep a goal open for ever.
+  std::string waited_goal_;
+  double waited_s_ = 0.0;
+  std::optional<double> last_traffic_step_s_;
   std::set<std::string> forced_obstacles_;                // found in a passage by the rule
   std::optional<double> traffic_since_s_;                 // sim time of the first traffic step
   double last_itinerary_s_ = -1e18;
@@ -227,6 +242,9 @@ class BehaviorNode {
   std::optional<msg::PoseEstimate> pose_estimate_;
   std::optional<msg::RangeScan> scan_;
   std::map<std::string, bool> link_connected_;  // teammate id -> direct link connected
+  // Some RadioLink sample arrived: the simulator's radio runs, and a teammate without a sample
+  // has no link (the simulator writes samples only for pairs that connect, and one when they lose it).
+  bool radio_links_seen_ = false;
   std::map<std::string, double> last_heard_s_;  // teammate id -> sim time of its last inbox message
   std::map<std::string, geometry::Vec2> last_known_position_;  // while in contact
 

@@ -28,6 +28,7 @@ void BehaviorNode::accept_goal(const msg::NavGoal& goal) {
     publish(tracker_->reject(goal.goal_id, goal.x, goal.y, error));
     return;
   }
+  forget_waiting_robots();  // a new goal is not refused for robots that will move
   const OccupancyGrid& grid = tracker_->grid();
   const geometry::Vec2 target(goal.x, goal.y);
   // Stored plans were computed with every door open: only while no door is known closed.

@@ -6,6 +6,7 @@
 
 #include "services/behavior/core/traffic/brake.hpp"
 #include "services/behavior/core/traffic/field_path.hpp"
+#include "services/behavior/core/traffic/give_way.hpp"
 #include "services/behavior/core/traffic/holding_point.hpp"
 
 #include <spdlog/spdlog.h>
@@ -22,6 +23,7 @@ constexpr double kItineraryPeriod_s = 0.5;     // written at least this often wh
 constexpr double kObstacleRange_m = 6.0;       // robots that hold nothing are planned around within
 constexpr double kObstacleMoved_m = 0.25;      // a robot obstacle that moved this far is replanned
 constexpr double kHoldingTolerance_m = 0.15;
+constexpr double kDroppedStill_m = 0.05;       // a waiting robot left out of the plan that moves more is tried again
 
 std::string format_xy(const geometry::Vec2& p) {
   char b[64];
@@ -68,6 +70,7 @@ std::vector<traffic::OtherRobot> BehaviorNode::other_robots(double now_s) const 
       o.has_itinerary = true;
       o.itinerary_age_s = now_s - static_cast<double>(i.sim_time_ns) * 1e-9;
       o.has_path = !i.path.empty();
+      for (const auto& p : i.path) o.path.emplace_back(p.x, p.y);
       const auto state = traffic::claim_state_from(i.claim);
       if (state && *state != traffic::ClaimState::None)
         o.claim = {i.passage, *state, static_cast<double>(i.request_time_ns) * 1e-9};
@@ -129,6 +132,16 @@ void BehaviorNode::refresh_robot_obstacles(const geometry::Vec2& me, double now_
       if (q.contains(p)) where = " in " + q.name;
     now[id] = {p, st.radius, "robot " + why + " at " + format_xy(p) + where, why == id + " (waiting)"};
   }
+  // Waiting robots dropped before for leaving no route stay dropped while they stand still.
+  for (auto it = soft_dropped_.begin(); it != soft_dropped_.end();) {
+    const auto n = now.find(it->first);
+    it = n != now.end() && n->second.soft ? std::next(it) : soft_dropped_.erase(it);
+  }
+  for (auto it = now.begin(); it != now.end();) {
+    const auto d = soft_dropped_.find(it->first);
+    const bool still = d != soft_dropped_.end() && (d->second - it->second.position).norm() <= kDroppedStill_m;
+    it = still ? now.erase(it) : std::next(it);
+  }
   // A forced obstacle that drives again, or went away, is forgotten.
   for (auto it = forced_obstacles_.begin(); it != forced_obstacles_.end();)
     it = now.count(*it) ? std::next(it) : forced_obstacles_.erase(it);
@@ -161,8 +174,10 @@ void BehaviorNode::refresh_robot_obstacles(const geometry::Vec2& me, double now_
   for (const auto& [id, o] : robot_obstacles_) soft |= o.soft;
   if (soft && !routed(*field)) {
     // Waiting robots leave no way past: they will move, so they are not planned around.
-    for (auto it = robot_obstacles_.begin(); it != robot_obstacles_.end();)
+    for (auto it = robot_obstacles_.begin(); it != robot_obstacles_.end();) {
+      if (it->second.soft) soft_dropped_[it->first] = it->second.position;
       it = it->second.soft ? robot_obstacles_.erase(it) : std::next(it);
+    }
     tracker_->set_grid(OccupancyGrid(planning_world(), old.geometry().resolution_m(), old.inflation_radius_m()),
                        planning_closures());
     field = field_for(target->goal, *pursued_constraints_, &error);
@@ -175,8 +190,23 @@ void BehaviorNode::refresh_robot_obstacles(const geometry::Vec2& me, double now_
   }
 }
 
+void BehaviorNode::forget_waiting_robots() {
+  soft_dropped_.clear();
+  bool soft = false;
+  for (auto it = robot_obstacles_.begin(); it != robot_obstacles_.end();) {
+    soft |= it->second.soft;
+    it = it->second.soft ? robot_obstacles_.erase(it) : std::next(it);
+  }
+  if (!soft || !tracker_) return;
+  const OccupancyGrid& old = tracker_->grid();
+  tracker_->set_grid(OccupancyGrid(planning_world(), old.geometry().resolution_m(), old.inflation_radius_m()),
+                     planning_closures());
+  if (follower_) update_map_obstacles();
+}
+
 std::optional<VelocityCommand> BehaviorNode::traffic_step(const geometry::Pose2& pose, double now_s) {
   path_ahead_.clear();
+  const std::string last_reason = traffic_decision_.reason;
   traffic_decision_ = {};
   if (!traffic_) return std::nullopt;
   const geometry::Vec2 me = pose.position();
@@ -187,13 +217,34 @@ std::optional<VelocityCommand> BehaviorNode::traffic_step(const geometry::Pose2&
     holding_.reset();
     return std::nullopt;
   }
+  // All the goal's waits together are bounded, not only each one.
+  if (const auto target = tracker_->target(); target && target->id != waited_goal_) {
+    waited_goal_ = target->id;
+    waited_s_ = 0.0;
+  }
+  if (tracker_->waiting() && last_traffic_step_s_) waited_s_ += now_s - *last_traffic_step_s_;
+  last_traffic_step_s_ = now_s;
+  if (tracker_->waiting() && waited_s_ >= options_.traffic_rule.max_wait_s) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.1f s", waited_s_);
+    publish(tracker_->block("waited " + std::string(b) + " in all for other robots (last: " + last_reason + ")"));
+    traffic_->reset();
+    holding_.reset();
+    return VelocityCommand{};
+  }
   path_ahead_ = traffic::field_path(*tracker_->field(), me, kItineraryLength_m);
-  traffic_decision_ = traffic_->decide(me, path_ahead_, other_robots(now_s), now_s);
+  const std::vector<traffic::OtherRobot> others = other_robots(now_s);
+  traffic_decision_ = traffic_->decide(me, path_ahead_, others, now_s);
   const traffic::TrafficDecision& d = traffic_decision_;
   switch (d.action) {
     case traffic::TrafficAction::Drive:
+      if (const auto whom = traffic::give_way_to(
+              options_.robot_id, me, traffic::meets_first(me, traffic_->claim(), traffic_->passages()), path_ahead_,
+              others, traffic_->passages(), options_.traffic_rule.itinerary_expiry_s))
+        return give_way(pose, *whom, others, now_s);
       if (tracker_->waiting()) {
-        spdlog::info("robot {}: {} granted", options_.robot_id, d.passage ? d.passage->name : std::string("passage"));
+        spdlog::info("robot {}: {}", options_.robot_id,
+                     d.passage ? d.passage->name + " granted" : std::string("way clear"));
         publish(tracker_->proceed(now_s));
       }
       holding_.reset();
@@ -228,6 +279,32 @@ std::optional<VelocityCommand> BehaviorNode::traffic_step(const geometry::Pose2&
   return std::nullopt;
 }
 
+VelocityCommand BehaviorNode::give_way(const geometry::Pose2& pose, const std::string& whom,
+                                       const std::vector<traffic::OtherRobot>& others, double now_s) {
+  traffic_decision_.action = traffic::TrafficAction::Wait;
+  traffic_decision_.blocker = whom;
+  traffic_decision_.reason = "giving way to " + whom;
+  if (!holding_ || holding_->blocker != whom) {
+    if (!tracker_->waiting() || !holding_) spdlog::info("robot {}: {}", options_.robot_id, traffic_decision_.reason);
+    publish(tracker_->wait(traffic_decision_.reason, now_s));
+    holding_.emplace();
+    holding_->blocker = whom;
+    std::vector<geometry::Vec2> their_path;
+    for (const auto& o : others)
+      if (o.id == whom) {
+        their_path = o.path;
+        their_path.push_back(o.position);
+      }
+    std::vector<geometry::Vec2> robots;
+    for (const auto& o : others)
+      if (o.id != whom) robots.push_back(o.position);
+    holding_->point = traffic::side_point(tracker_->grid(), pose.position(), their_path, traffic_->passages(), robots);
+    if (holding_->point) holding_->field.emplace(tracker_->grid(), *holding_->point);
+  }
+  if (!holding_->field) return VelocityCommand{};
+  return controller_->command(pose, *holding_->field, kHoldingTolerance_m).command;
+}
+
 VelocityCommand BehaviorNode::brake_for_robots(const geometry::Pose2& pose, const VelocityCommand& command) const {
   if (!traffic_) return command;
   std::vector<traffic::Disc> near;
@@ -238,7 +315,8 @@ VelocityCommand BehaviorNode::brake_for_robots(const geometry::Pose2& pose, cons
 void BehaviorNode::publish_itinerary(double now_s, int64_t tick) {
   if (!traffic_ || !itinerary_writer_ || !state_) return;
   const traffic::Claim& c = traffic_->claim();
-  const std::string key = std::string(traffic::to_string(c.state)) + "|" + c.passage + "|" + traffic_decision_.blocker;
+  const std::string key = std::string(traffic::to_string(c.state)) + "|" + c.passage + "|" + traffic_decision_.blocker +
+                          "|" + (tracker_ && tracker_->waiting() ? "w" : "");
   if (key == last_itinerary_key_ && now_s - last_itinerary_s_ < kItineraryPeriod_s) return;
   msg::Itinerary it;
   it.robot_id = options_.robot_id;
@@ -262,7 +340,10 @@ void BehaviorNode::publish_itinerary(double now_s, int64_t tick) {
     it.path.push_back({p.x(), p.y(), static_cast<int64_t>(std::llround(t * 1e9))});
   }
   it.passage = c.passage;
-  it.claim = traffic::to_string(c.state);
+  // Giving way (Wait without a passage claim) is published as waiting on no passage: the others
+  // then see a robot standing aside (give_way.hpp's standing()) and plan around it.
+  const bool giving_way = traffic_decision_.action == traffic::TrafficAction::Wait && c.state == traffic::ClaimState::None;
+  it.claim = giving_way ? "waiting" : traffic::to_string(c.state);
   it.request_time_ns = static_cast<int64_t>(std::llround(c.request_time_s * 1e9));
   it.waiting_for = traffic_decision_.action == traffic::TrafficAction::Wait ? traffic_decision_.blocker : "";
   itinerary_writer_->write(it);

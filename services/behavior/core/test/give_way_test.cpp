@@ -99,6 +99,10 @@ TEST(GiveWayTest, TheSidePointIsOffTheirPathNearbyAndOutsideEveryPassage) {
   EXPECT_LE((*p - me).norm(), 2.0);
   EXPECT_GT(boxes[0].distance(*p), 0.0);
   EXPECT_FALSE(side_point(grid, Vec2(30, 2), theirs, boxes));  // off the grid
+  // A robot already stands aside on the south side here: this one keeps 1.4 m from it.
+  const auto q = side_point(grid, me, theirs, boxes, {Vec2(8, 1.55)});
+  ASSERT_TRUE(q);
+  EXPECT_GE((*q - Vec2(8, 1.55)).norm(), 1.4);
 }
 
 TEST(GiveWayTest, BadSettingsAreRejected) {

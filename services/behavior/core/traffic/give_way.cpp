@@ -78,7 +78,8 @@ std::optional<std::string> give_way_to(const std::string& my_id, const geometry:
 
 std::optional<geometry::Vec2> side_point(const OccupancyGrid& grid, const geometry::Vec2& me,
                                          const std::vector<geometry::Vec2>& their_path,
-                                         const std::vector<Passage>& passages, const GiveWaySettings& s) {
+                                         const std::vector<Passage>& passages,
+                                         const std::vector<geometry::Vec2>& robots, const GiveWaySettings& s) {
   const GridGeometry& g = grid.geometry();
   const auto start = g.cell_at(me);
   if (!start) return std::nullopt;
@@ -92,8 +93,8 @@ std::optional<geometry::Vec2> side_point(const OccupancyGrid& grid, const geomet
   std::deque<GridCell> open{*start};
   steps[g.index(*start)] = 0;
   const int max_steps = static_cast<int>(std::floor(s.side_search_m / res));
-  std::optional<geometry::Vec2> best;
-  double best_score = std::numeric_limits<double>::infinity();
+  std::optional<geometry::Vec2> best[2];  // [0]: apart from every robot; [1]: any
+  double best_score[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
   while (!open.empty()) {
     const GridCell c = open.front();
     open.pop_front();
@@ -104,9 +105,13 @@ std::optional<geometry::Vec2> side_point(const OccupancyGrid& grid, const geomet
       for (const auto& q : their_path) clear = std::min(clear, (q - p).norm());
       // Each 0.1 m further from their path is worth 0.3 m of walking.
       const double score = n * res - 3.0 * clear;
-      if (score < best_score) {
-        best_score = score;
-        best = p;
+      const bool apart = std::none_of(robots.begin(), robots.end(),
+                                      [&](const geometry::Vec2& q) { return (q - p).norm() < s.side_apart_m; });
+      for (int k = apart ? 0 : 1; k < 2; ++k) {
+        if (score < best_score[k]) {
+          best_score[k] = score;
+          best[k] = p;
+        }
       }
     }
     if (n >= max_steps) continue;
@@ -117,7 +122,7 @@ std::optional<geometry::Vec2> side_point(const OccupancyGrid& grid, const geomet
       open.push_back(m);
     }
   }
-  return best;
+  return best[0] ? best[0] : best[1];
 }
 
 }  // namespace autonomy::behavior::traffic

@@ -27,6 +27,8 @@ struct GiveWaySettings {
   double same_way_cos = 0.5;  // headings closer than acos(this) (60 degrees) follow, not meet
   double side_search_m = 2.0; // > 0: a side point is at most this far to walk (outside passages)
   double side_clear_m = 0.9;  // > 0: distance from the other's path worth walking for (capped there)
+  double side_apart_m = 1.4;  // >= 0: a side point keeps this far from every other robot (when it
+                              // can), so that two robots standing aside never close the hallway
 };
 
 // Whether a robot comes first in the meeting order by where it is: inside a passage box or
@@ -48,9 +50,12 @@ std::optional<std::string> give_way_to(const std::string& my_id, const geometry:
 
 // Where to stand aside: a free cell reachable within side_search_m without crossing a passage
 // box, outside every box, as far from `their_path` as side_clear_m asks; among those, the nearest
-// by path. nullopt when the robot's own cell is outside the grid or nothing qualifies.
+// by path; one at least side_apart_m from every robot in `robots` when there is one. nullopt when
+// the robot's own cell is outside the grid or nothing qualifies.
 std::optional<geometry::Vec2> side_point(const OccupancyGrid& grid, const geometry::Vec2& me,
                                          const std::vector<geometry::Vec2>& their_path,
-                                         const std::vector<Passage>& passages, const GiveWaySettings& settings = {});
+                                         const std::vector<Passage>& passages,
+                                         const std::vector<geometry::Vec2>& robots = {},
+                                         const GiveWaySettings& settings = {});
 
 }  // namespace autonomy::behavior::traffic
