@@ -8,7 +8,7 @@
 //   ------  -----------------------------------------------
 //     55    ViewerTest.PageFramesFollowTheRobotAndTheClosingDoor
 //     56    ViewerTest.PortInUseIsAClearError
-//     57    ViewerTest.PageInHeadlessChromiumDrawsTheMovingRobotAndTheClosedDoor
+//     57    ViewerTest.PageInHeadlessChromiumDrawsTheMovingRobotTheClosedDoorAndAJobChange
 #include "tests/support/process_test.hpp"
 #include "tests/support/web_socket_client.hpp"
 
@@ -218,19 +218,37 @@ TEST_F(ViewerTest, PortInUseIsAClearError) {
 
 // The page in a real browser (Debian's chromium, headless, driven by tests/node/viewer_page_check.js
 // over the DevTools pipe): no console errors, r1 drawn at a new position between two reads, d1
-// drawn closed. Skipped where node or chromium is missing (deploy/test.sh installs both).
-TEST_F(ViewerTest, PageInHeadlessChromiumDrawsTheMovingRobotAndTheClosedDoor) {
+// drawn closed, and a courier job's state change shown in the jobs table (the test writes the
+// job's states as the courier would: queued, then underway once the page shows it queued).
+// Skipped where node or chromium is missing (deploy/test.sh installs both).
+TEST_F(ViewerTest, PageInHeadlessChromiumDrawsTheMovingRobotTheClosedDoorAndAJobChange) {
   const std::string node = viewer_find_program("node");
   const std::string chromium = viewer_find_program("chromium");
   if (node.empty() || chromium.empty())
     GTEST_SKIP() << "node or chromium is not installed (deploy/test.sh installs them): the page check was skipped";
   join(57);
+  dds::Topic<msg::CourierJobStatus> job_topic(participant(), dds::topics::courier_job_status);
+  dds::Writer<msg::CourierJobStatus> job_writer(participant(), job_topic);
+  msg::CourierJobStatus job;
+  job.job_id = "job-1";
+  job.state = msg::JobState::Queued;
+  job.object_id = "red-letter";
+  job.from = "A-111";
+  job.to = "A-120";
+  job_writer.write(job);
   const uint16_t port = start_world_with_viewer();
   ASSERT_NE(port, 0);
   std::vector<std::string> args = {std::string(AUTONOMY_SOURCE_DIR) + "/tests/node/viewer_page_check.js", "--url",
                                     "http://127.0.0.1:" + std::to_string(port) + "/", "--chromium", chromium, "--door",
-                                    "d1", "--screenshot", dir().file("viewer.png")};
+                                    "d1", "--job", "job-1", "--screenshot", dir().file("viewer.png")};
   auto& check = start("viewer_page_check", node, args, false);
+  ASSERT_TRUE(await("the page shows job-1", [&] {
+    return read_file(check.log_file()).find("job job-1 seen: queued") != std::string::npos || !check.running();
+  })) << check.log_tail();
+  job.state = msg::JobState::Underway;
+  job.phase = "to pickup";
+  job.robot_id = "r1";
+  job_writer.write(job);
   const auto status = check.wait_for_exit(120s);
   ASSERT_TRUE(status.has_value()) << "viewer_page_check.js did not finish\n" << check.log_tail();
   EXPECT_TRUE(status->exited && status->code == 0) << status->describe() << "\n" << check.log_tail();

@@ -4,13 +4,15 @@
 // in, fd 4 out, messages ended by NUL), so it needs no npm package and no WebSocket in node.
 //
 //   node viewer_page_check.js --url http://127.0.0.1:PORT/ [--chromium /usr/bin/chromium]
-//        [--door ID] [--screenshot FILE.png] [--timeout-s 60]
+//        [--door ID] [--job ID] [--screenshot FILE.png] [--timeout-s 60]
 //
 // Checks, printing one line each and a JSON summary last; exit code 0 when all hold, 1 otherwise:
 //   - the page loads and receives frames without console errors or uncaught exceptions;
 //   - a robot's drawn position changes between two reads of the page's state;
 //   - with --door ID: the door is drawn closed (the page's state says closed and the canvas pixel
-//     at the middle of its leaf has the closed leaf's colour).
+//     at the middle of its leaf has the closed leaf's colour);
+//   - with --job ID: the courier job's state shown in the jobs table changes (the check prints
+//     "job ID seen: STATE" when it first shows, so a test can then change the state).
 "use strict";
 const { spawn } = require("child_process");
 const fs = require("fs");
@@ -18,12 +20,13 @@ const os = require("os");
 const path = require("path");
 
 function parseArgs(argv) {
-  const out = { chromium: "/usr/bin/chromium", door: "", screenshot: "", timeoutS: 60, url: "" };
+  const out = { chromium: "/usr/bin/chromium", door: "", job: "", screenshot: "", timeoutS: 60, url: "" };
   for (let i = 2; i < argv.length; i++) {
     const a = argv[i], v = argv[i + 1];
     if (a === "--url") out.url = v;
     else if (a === "--chromium") out.chromium = v;
     else if (a === "--door") out.door = v;
+    else if (a === "--job") out.job = v;
     else if (a === "--screenshot") out.screenshot = v;
     else if (a === "--timeout-s") out.timeoutS = Number(v);
     else { console.error(`viewer_page_check: unknown argument ${a}`); process.exit(2); }
@@ -142,6 +145,22 @@ async function main() {
       // The closed leaf is drawn #a00 (170, 0, 0); allow for anti-aliasing.
       const ok = Array.isArray(pixel) && pixel[0] > 120 && pixel[1] < 60 && pixel[2] < 60;
       check(`door ${args.door} drawn closed`, ok, `leaf pixel ${JSON.stringify(pixel)}`);
+    }
+
+    if (args.job) {
+      // What a person reads: the state badge in the job's row of the table.
+      const shownState = `(() => {
+        const row = [...document.querySelectorAll("tr[data-job]")].find(r => r.dataset.job === ${JSON.stringify(args.job)});
+        return row ? row.querySelector(".st").textContent : null;
+      })()`;
+      const first = await waitFor(`job ${args.job} in the table`, shownState).catch(e => null);
+      console.log(`job ${args.job} seen: ${first}`);
+      let later = first;
+      while (first && later === first && Date.now() < deadline) {
+        await sleep(200);
+        later = await evaluate(shownState);
+      }
+      check(`job ${args.job} state change drawn`, !!first && later !== first, `${first} -> ${later}`);
     }
 
     if (args.screenshot) {
