@@ -15,6 +15,7 @@ EventLoop::EventLoop(const dds::Participant& participant) : waitset_(participant
 void EventLoop::on_condition(dds_entity_t condition, std::function<void()> handler) {
   waitset_.attach(condition, static_cast<dds_attach_t>(handlers_.size()));
   handlers_.push_back(std::move(handler));
+  drainable_.push_back(false);
 }
 
 void EventLoop::every(std::chrono::nanoseconds period, std::function<void()> handler) {
@@ -44,9 +45,26 @@ void EventLoop::run_once(std::chrono::nanoseconds timeout) {
   const auto wait = std::min(timeout, time_to_next_timer());
   for (dds_attach_t tag : waitset_.wait(wait)) {
     if (tag == kStopTag) continue;
+    struct Running {
+      dds_attach_t& running;
+      ~Running() { running = -1; }
+    } in_handler{running_ = tag};
     handlers_[static_cast<size_t>(tag)]();
   }
   run_due_timers();
+}
+
+void EventLoop::drain() {
+  if (draining_) return;
+  draining_ = true;
+  struct EndDrain {
+    bool& flag;
+    ~EndDrain() { flag = false; }
+  } end{draining_};
+  for (dds_attach_t tag : waitset_.wait(std::chrono::nanoseconds(0))) {
+    if (tag == kStopTag || tag == running_ || !drainable_[static_cast<size_t>(tag)]) continue;
+    handlers_[static_cast<size_t>(tag)]();
+  }
 }
 
 void EventLoop::run() {

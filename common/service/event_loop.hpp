@@ -21,6 +21,7 @@ class EventLoop {
   void on_samples(const dds::Reader<T>& reader, std::function<void(std::vector<dds::Sample<T>>)> handler) {
     const dds::Reader<T>* r = &reader;
     on_condition(reader.data_condition(), [r, handler = std::move(handler)] { handler(r->take()); });
+    drainable_.back() = true;
   }
 
   // handler runs whenever the condition triggers; it must clear the condition (take, reset).
@@ -29,6 +30,18 @@ class EventLoop {
   // handler runs every period (first time one period from now); a late timer runs once, not in
   // a burst.
   void every(std::chrono::nanoseconds period, std::function<void()> handler);
+
+  // Runs now the handler of every reader (on_samples) that has samples, except the handler that is
+  // running (it took its samples already); timers and guard conditions wait for their round.
+  // For lockstep: what a participant wrote before its tick ack (or the simulator before its clock
+  // tick) has arrived when the ack has (one socket, delivered in order), but it may still sit in
+  // its reader, after the ack's reader in the waitset's order. A node that drains before it acts
+  // on a tick acts on everything sent for that tick, whatever order the waitset reported the
+  // readers in: the run is deterministic. Handlers run by drain() that would act on a tick
+  // should check draining() and leave it to the caller, which looks again after drain().
+  // Nested calls do nothing.
+  void drain();
+  bool draining() const { return draining_; }
 
   // Thread-safe: ends run() after the handler in progress.
   void stop() const { stop_.trigger(); }
@@ -52,6 +65,9 @@ class EventLoop {
   dds::WaitSet waitset_;
   dds::GuardCondition stop_;
   std::vector<std::function<void()>> handlers_;  // index = attach tag
+  std::vector<bool> drainable_;                   // index = attach tag: a reader's handler
+  dds_attach_t running_ = -1;                     // the handler run_once() is in, -1: none
+  bool draining_ = false;
   std::vector<Timer> timers_;
 };
 

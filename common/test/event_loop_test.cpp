@@ -1,6 +1,6 @@
 // The single-threaded event loop (common/service/event_loop.hpp) on a real participant.
 // Domains: 103 for the timer-only tests and 105 for the stop tests (participants without topics
-// cannot disturb each other), 104 for the one test with a topic.
+// cannot disturb each other), 104 and 119 for the tests with a topic.
 #include "common/dds/topics.hpp"
 #include "common/dds/writer.hpp"
 #include "common/service/event_loop.hpp"
@@ -10,6 +10,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <optional>
 #include <thread>
 #include <vector>
 
@@ -129,6 +130,71 @@ TEST_F(EventLoopTest, OnSamplesHandlerGetsTheSamples) {
   const int before = calls;
   loop.run_once(20ms);
   EXPECT_EQ(calls, before);
+}
+
+// The lockstep pattern: an input written before the "ack" has arrived when the ack has, but the
+// waitset may report the ack's reader first. A node acts on the ack only after drain(): it acts
+// on the input too, once, whatever order the waitset reports the readers in; handlers run by
+// drain() see draining() and leave the acting to the caller; guard conditions wait their round.
+TEST_F(EventLoopTest, DrainTakesWhatArrivedBeforeTheHandlerActs) {
+  dds::Participant p(119);
+  dds::Topic<msg::CommandRejection> input_topic(p, dds::topics::command_rejected);
+  dds::Topic<msg::TickAck> ack_topic(p, dds::topics::tick_ack);
+  dds::Reader<msg::CommandRejection> input_reader(p, input_topic);
+  dds::Reader<msg::TickAck> ack_reader(p, ack_topic);
+  dds::Writer<msg::CommandRejection> input_writer(p, input_topic);
+  dds::Writer<msg::TickAck> ack_writer(p, ack_topic);
+  ASSERT_TRUE(input_writer.wait_for_readers(1, 2s));
+  ASSERT_TRUE(ack_writer.wait_for_readers(1, 2s));
+
+  EventLoop loop(p);
+  dds::GuardCondition guard(p);
+  int guard_runs = 0;
+  std::vector<int64_t> inputs;                    // ticks of the inputs taken so far
+  std::optional<int64_t> pending_ack;
+  std::vector<std::vector<int64_t>> seen_at_ack;  // the inputs each ack was acted on with
+  const auto act = [&] {
+    if (loop.draining() || !pending_ack) return;
+    loop.drain();
+    seen_at_ack.push_back(inputs);
+    pending_ack.reset();
+  };
+  loop.on_samples<msg::CommandRejection>(input_reader, [&](std::vector<dds::Sample<msg::CommandRejection>> samples) {
+    for (const auto& s : samples)
+      if (s.valid) inputs.push_back(s.value.tick);
+    act();
+  });
+  loop.on_samples<msg::TickAck>(ack_reader, [&](std::vector<dds::Sample<msg::TickAck>> acks) {
+    for (const auto& a : acks)
+      if (a.valid) pending_ack = a.value.tick;
+    act();
+  });
+  loop.on_condition(guard.handle(), [&] {
+    ++guard_runs;
+    guard.reset();
+  });
+
+  for (int64_t tick = 1; tick <= 3; ++tick) {
+    auto input = test::make_command_rejection(test::Variant::Full);
+    input.tick = tick;
+    // The waitset reports triggered readers in an order of its own (Cyclone keeps them in the order
+    // they triggered, and reorders them as others clear): here the ack triggers first. Both
+    // samples are in their readers before the loop looks (same process, delivered at write).
+    ack_writer.write(msg::TickAck{"p", tick, 0, 0});
+    guard.trigger();
+    input_writer.write(input);
+    const auto start = Steady::now();
+    while (seen_at_ack.size() < static_cast<size_t>(tick) && Steady::now() - start < 2s) loop.run_once(100ms);
+    ASSERT_EQ(seen_at_ack.size(), static_cast<size_t>(tick));
+    std::vector<int64_t> expected;
+    for (int64_t k = 1; k <= tick; ++k) expected.push_back(k);
+    EXPECT_EQ(seen_at_ack.back(), expected) << "tick " << tick;  // acted on with its input, each input once
+    EXPECT_FALSE(loop.draining());
+  }
+  // drain() ran no guard condition; the loop runs it in a round of its own.
+  const auto start = Steady::now();
+  while (guard_runs == 0 && Steady::now() - start < 2s) loop.run_once(100ms);
+  EXPECT_GE(guard_runs, 1);
 }
 
 TEST_F(EventLoopTest, StopFromAnotherThreadEndsRun) {
