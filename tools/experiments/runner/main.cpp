@@ -172,11 +172,14 @@ int main(int argc, char** argv) {
     std::vector<std::thread> slots;
     for (int slot = 0; slot < o.jobs; ++slot) {
       slots.emplace_back([&, slot] {
+        bool first_on_domain = true;
         for (size_t i = next++; i < planned.size(); i = next++) {
           const PlannedTrial& p = planned[i];
           std::string line;
           try {
-            results[i] = autonomy::experiments::run_trial(setup, p.configuration, p.trial, p.seed, o.domain + slot);
+            results[i] = autonomy::experiments::run_trial(setup, p.configuration, p.trial, p.seed, o.domain + slot,
+                                                          first_on_domain);
+            first_on_domain = false;
             const TrialRecord& r = *results[i];
             char buf[256];
             std::snprintf(buf, sizeof buf, "mission %6.1f s%s  distance %6.1f m  fully connected %5.1f%%  coverage %4.1f%%",

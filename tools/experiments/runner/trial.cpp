@@ -63,7 +63,7 @@ std::vector<double> start_positions(const TrialSetup& setup, std::uint64_t seed)
 }
 
 stats::TrialRecord run_trial(const TrialSetup& setup, const std::string& configuration, int trial,
-                             std::uint64_t seed, int domain) {
+                             std::uint64_t seed, int domain, bool check_for_other_world) {
   const std::string stem = configuration + "-" + std::to_string(trial);
   const fs::path logs = setup.out_dir / "logs";
   const auto log = [&](const std::string& who) { return (logs / (stem + "-" + who + ".out")).string(); };
@@ -76,6 +76,10 @@ stats::TrialRecord run_trial(const TrialSetup& setup, const std::string& configu
                                        "--stop-when-finished", "--metrics", (setup.out_dir / stem).string(),
                                        "--svg", (setup.out_dir / (stem + ".svg")).string(), "--wait-for"};
   for (const auto& r : setup.robots) sim_args.push_back("behavior/" + r);
+  if (!check_for_other_world) {
+    sim_args.push_back("--world-check");
+    sim_args.push_back("0");
+  }
   fs::remove(setup.out_dir / (stem + ".json"));
 
   // std::list: children do not move once started.

@@ -36,7 +36,10 @@ std::vector<double> start_positions(const TrialSetup& setup, std::uint64_t seed)
 // Runs trial `trial` of `configuration` on DDS domain `domain`. Writes <out>/<cfg>-<trial>.json,
 // .csv and .svg and logs/<cfg>-<trial>-*.out. Throws std::runtime_error naming the log to read
 // when a process fails or the trial times out.
+// check_for_other_world: the simulator listens (its --world-check, 1 s) for another world on the
+// domain before it starts. The runner asks it for the first trial of each domain only: later trials
+// on that domain follow its own, which have ended, and 1 s each was a third of a trial's wall time.
 stats::TrialRecord run_trial(const TrialSetup& setup, const std::string& configuration, int trial,
-                             std::uint64_t seed, int domain);
+                             std::uint64_t seed, int domain, bool check_for_other_world = true);
 
 }  // namespace autonomy::experiments
