@@ -137,6 +137,7 @@ BehaviorNode::BehaviorNode(service::Service& service, BehaviorNodeOptions option
     loop.on_samples<msg::RadioLink>(*link_reader_, [this, me](auto samples) {
       for (auto& s : samples) {
         if (!s.valid) continue;
+        radio_links_seen_ = true;
         if (s.value.robot_a == me) link_connected_[s.value.robot_b] = s.value.connected;
         if (s.value.robot_b == me) link_connected_[s.value.robot_a] = s.value.connected;
       }

@@ -50,6 +50,8 @@ Perception BehaviorNode::perceive() const {
     t.id = id;
     if (const auto link = link_connected_.find(id); link != link_connected_.end()) {
       t.in_contact = link->second;
+    } else if (radio_links_seen_) {
+      t.in_contact = false;  // the radio runs and this pair never connected
     } else if (!last_heard_s_.empty()) {
       const auto heard = last_heard_s_.find(id);
       t.in_contact = heard != last_heard_s_.end() && p.time_s - heard->second <= options_.contact_freshness_s;
