@@ -380,14 +380,24 @@ void SimulatorNode::on_timer() {
 }
 
 void SimulatorNode::advance_while_complete() {
-  if (!lockstep()) return;
+  if (!lockstep() || service_.loop().draining()) return;  // a handler run by the drain below: looked at after it
   // Quiet ticks are stepped in batches: between two, the loop reads what arrived (a wake-up).
   constexpr int kQuietBatch = 50;
   int quiet_in_a_row = 0;
-  while (!finished_ && !barrier_.participants().empty() && !holding_start() && (quiet_ || barrier_.complete(tick_))) {
+  const auto may_advance = [this] {
+    return !finished_ && !barrier_.participants().empty() && !holding_start() && (quiet_ || barrier_.complete(tick_));
+  };
+  while (may_advance()) {
     if (quiet_ && ++quiet_in_a_row > kQuietBatch) {
       quiet_continue_.trigger();
       return;
+    }
+    if (!quiet_) {
+      // What a participant wrote before its ack (team messages, mission and goal status, door
+      // commands) has arrived with the ack but may still sit in its reader: taken before the tick
+      // is stepped, it counts at this tick whatever order the waitset reports the readers in.
+      service_.loop().drain();
+      if (!may_advance()) return;
     }
     advance();
   }

@@ -5,6 +5,7 @@
 //   domain  test
 //   ------  -----------------------------------------------
 //   90-91   ExperimentTest.SmallRunWritesCsvReportAndPictures (the runner's two jobs)
+//   187-188 ExperimentTest.ALockstepTrialRepeatsExactly (two runners side by side)
 #include "tests/support/process_test.hpp"
 #include "tools/experiments/stats/report.hpp"
 
@@ -103,6 +104,43 @@ TEST_F(ExperimentTest, SmallRunWritesCsvReportAndPictures) {
     }
     EXPECT_NE(report.find("| " + label_a + " vs " + label_b + " | t = "), std::string::npos) << report;
   }
+}
+
+// Lockstep is deterministic: the same trials, run twice side by side (each run's processes
+// scheduled differently, on a loaded machine), give byte-identical metrics and pictures. With team messages (comm_parallel) and the reactive
+// missions, every input of a tick (scans, team messages, mission status) must count at that tick
+// whatever order the processes read them in (EventLoop::drain); before it, repeated trials
+// differed by tenths of a second of mission time.
+TEST_F(ExperimentTest, ALockstepTrialRepeatsExactly) {
+  join(187);
+  join(188);
+  const std::string first = dir().file("first"), second = dir().file("second");
+  const std::vector<std::string> common = {"--trials", "2", "--seed", "11", "--jobs", "1", "--only", "comm_parallel",
+                                           "reactive"};
+  auto args = [&](const std::string& domain, const std::string& out) {
+    std::vector<std::string> a = common;
+    a.insert(a.end(), {"--domain", domain, "--out", out});
+    return a;
+  };
+  auto& a = start("experiment_runner_a", AUTONOMY_EXPERIMENT_RUNNER_BIN, args("187", first), false);
+  auto& b = start("experiment_runner_b", AUTONOMY_EXPERIMENT_RUNNER_BIN, args("188", second), false);
+  for (auto* runner : {&a, &b}) {
+    const auto ended = runner->wait_for_exit(std::chrono::minutes(4));
+    ASSERT_TRUE(ended.has_value()) << "a runner did not finish in 4 minutes";
+    ASSERT_TRUE(ended->exited && ended->code == 0) << ended->describe() << "\n" << runner->log_tail();
+  }
+  for (const char* configuration : {"comm_parallel", "reactive"}) {
+    for (int trial = 0; trial < 2; ++trial) {
+      const std::string stem = std::string("/") + configuration + "-" + std::to_string(trial);
+      for (const char* extension : {".json", ".csv", ".svg"}) {
+        const std::string x = read_file(first + stem + extension), y = read_file(second + stem + extension);
+        ASSERT_FALSE(x.empty()) << first + stem + extension;
+        EXPECT_EQ(x, y) << stem << extension << " differs between two runs of the same trial";
+      }
+    }
+  }
+  // The trials themselves differ (their seeds place the robots apart): the comparison means something.
+  EXPECT_NE(read_file(first + "/reactive-0.json"), read_file(first + "/reactive-1.json"));
 }
 
 }  // namespace

@@ -348,7 +348,14 @@ void BehaviorNode::on_tick(const msg::SimClock& clock) {
 }
 
 void BehaviorNode::control_pending_tick() {
-  if (!pending_tick_ || !ready() || !state_ || state_->tick < *pending_tick_) return;
+  const auto tick_due = [this] { return pending_tick_ && ready() && state_ && state_->tick >= *pending_tick_; };
+  if (!tick_due() || service_.loop().draining()) return;  // a handler run by the drain below: looked at after it
+  // The simulator writes a tick's scans, pose estimates, links, team messages and states before
+  // its clock: they have arrived, but some may still sit in their readers. Taking them first makes
+  // the tick's control the same whatever order the waitset reports the readers in (lockstep runs
+  // repeat exactly).
+  service_.loop().drain();
+  if (!tick_due()) return;
   const int64_t tick = *pending_tick_;
   pending_tick_.reset();
   if (queued_goal_ && tracker_) {  // came while this process was quiet (on_goals), or from the journal
