@@ -1,6 +1,7 @@
 // Integration tests of the viewer process: with the real simulator and a behavior, a WebSocket
-// client (a page's stand-in) sees the robot move between two frames and a door the scenario
-// closes drawn closed; a port in use is refused with a clear error.
+// client (a page's stand-in) sees the robot move between two frames, a door the scenario closes
+// drawn closed and a spacecraft fault in the side panels; a port in use is refused with a clear
+// error; headless Chromium draws the page.
 //
 // One DDS domain per test; this file uses 55-58 only:
 //
@@ -146,6 +147,15 @@ const json* door_in(const json& frame, const std::string& id) {
 
 TEST_F(ViewerTest, PageFramesFollowTheRobotAndTheClosingDoor) {
   join(55);
+  // A spacecraft fault as the simulator's ground truth would say it: for the side panels.
+  dds::Topic<msg::SpacecraftFaultState> fault_topic(participant(), dds::topics::truth_spacecraft_fault);
+  dds::Writer<msg::SpacecraftFaultState> fault_writer(participant(), fault_topic);
+  msg::SpacecraftFaultState fault;
+  fault.fault_id = "camera-stuck";
+  fault.kind = "stuck_on";
+  fault.subject = "camera";
+  fault.active = true;
+  fault_writer.write(fault);
   const uint16_t port = start_world_with_viewer();
   ASSERT_NE(port, 0);
 
@@ -155,7 +165,7 @@ TEST_F(ViewerTest, PageFramesFollowTheRobotAndTheClosingDoor) {
   EXPECT_NE(page.find("new WebSocket("), std::string::npos);
 
   WebSocketClient ws(port, "/ws");
-  std::optional<json> map;
+  std::optional<json> map, panels;
   std::optional<std::pair<double, double>> first_position;
   bool moved = false, door_closed_drawn = false, goal_drawn = false;
   ASSERT_TRUE(await("frames with r1 moving and door d1 drawn closed", [&] {
@@ -163,6 +173,10 @@ TEST_F(ViewerTest, PageFramesFollowTheRobotAndTheClosingDoor) {
       const json frame = json::parse(*text);
       if (frame["type"] == "map") {
         map = frame;
+        continue;
+      }
+      if (frame["type"] == "panels") {
+        panels = frame;
         continue;
       }
       if (const json* r = robot_in(frame, "r1")) {
@@ -177,11 +191,13 @@ TEST_F(ViewerTest, PageFramesFollowTheRobotAndTheClosingDoor) {
         door_closed_drawn = std::abs(leaf[0].get<double>() - 10.0) < 1e-3 && std::abs(leaf[1].get<double>() - 2.2) < 1e-3 &&
                             std::abs(leaf[2].get<double>() - 10.0) < 1e-3 && std::abs(leaf[3].get<double>() - 3.8) < 1e-3;
       }
-      if (moved && door_closed_drawn && goal_drawn && map) return true;
+      if (moved && door_closed_drawn && goal_drawn && map && panels) return true;
     }
-    return moved && door_closed_drawn && goal_drawn && map.has_value();
+    return moved && door_closed_drawn && goal_drawn && map.has_value() && panels.has_value();
   })) << "moved " << moved << ", door closed drawn " << door_closed_drawn << ", goal drawn " << goal_drawn
-      << ", map " << map.has_value();
+      << ", map " << map.has_value() << ", panels " << panels.has_value();
+  EXPECT_TRUE((*panels)["faults"]["camera-stuck"]["active"].get<bool>()) << panels->dump();
+  EXPECT_EQ((*panels)["faults"]["camera-stuck"]["subject"], "camera");
   EXPECT_EQ((*map)["name"], "viewer-corridor");
   ASSERT_EQ((*map)["doors"].size(), 1u);
   EXPECT_EQ((*map)["doors"][0]["id"], "d1");

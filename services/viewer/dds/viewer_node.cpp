@@ -29,7 +29,11 @@ ViewerNode::ViewerNode(service::Service& service, ViewerNodeOptions options)
       goal_statuses_(service.participant(), dds::topics::goal_status),
       itineraries_(service.participant(), dds::topics::itinerary),
       links_(service.participant(), dds::topics::radio_link),
-      jobs_(service.participant(), dds::topics::courier_job_status) {
+      jobs_(service.participant(), dds::topics::courier_job_status),
+      telemetry_(service.participant(), dds::topics::spacecraft_telemetry),
+      faults_(service.participant(), dds::topics::truth_spacecraft_fault),
+      executives_(service.participant(), dds::topics::executive_status),
+      plans_(service.participant(), dds::topics::planner_plan) {
   if (!(options_.rate_hz > 0.0 && options_.rate_hz <= 100.0))
     throw std::invalid_argument("viewer: --rate must be in (0, 100] frames per second");
   server_ = std::make_unique<WebServer>(options_.web, std::string(viewer_page_html()));
@@ -50,6 +54,10 @@ ViewerNode::ViewerNode(service::Service& service, ViewerNodeOptions options)
   follow(itineraries_);
   follow(links_);
   follow(jobs_);
+  follow_panel(telemetry_, "spacecraft", [](const msg::SpacecraftTelemetry& t) { return t.spacecraft; });
+  follow_panel(faults_, "faults", [](const msg::SpacecraftFaultState& f) { return f.fault_id; });
+  follow_panel(executives_, "executive", [](const msg::ExecutiveStatus& e) { return e.executive; });
+  follow_panel(plans_, "plans", [](const msg::LatestPlan& p) { return p.requester; });
   const auto period = std::chrono::nanoseconds(static_cast<int64_t>(1e9 / options_.rate_hz));
   loop.every(period, [this] { push_frames(); });
 
@@ -69,6 +77,18 @@ void ViewerNode::follow(Subscription<T>& subscription) {
   });
 }
 
+template <typename T, typename KeyOf>
+void ViewerNode::follow_panel(Subscription<T>& subscription, const char* group, KeyOf key_of) {
+  service_.loop().on_samples<T>(subscription.reader, [this, group, key_of](std::vector<dds::Sample<T>> samples) {
+    for (const auto& s : samples) {
+      if (viewer_instance_gone(s.instance_state))
+        panels_.erase(group, key_of(s.value));
+      else if (s.valid)
+        panels_.apply(s.value);
+    }
+  });
+}
+
 std::string ViewerNode::url() const {
   const std::string host = options_.web.bind_address == "0.0.0.0" ? service::host_name() : options_.web.bind_address;
   return "http://" + host + ":" + std::to_string(server_->port()) + "/";
@@ -77,14 +97,19 @@ std::string ViewerNode::url() const {
 void ViewerNode::push_frames() {
   if (view_.map_version() != map_version_sent_) {
     map_version_sent_ = view_.map_version();
-    server_->publish_map(map_frame(view_).dump());
+    server_->publish(FrameKind::Map, map_frame(view_).dump());
   }
   const auto now = std::chrono::steady_clock::now();
+  if (panels_.version() != panels_version_sent_ && now - last_panels_sent_ >= std::chrono::milliseconds(500)) {
+    panels_version_sent_ = panels_.version();
+    last_panels_sent_ = now;
+    server_->publish(FrameKind::Panels, panels_.frame().dump());
+  }
   const bool changed = view_.state_version() != state_version_sent_;
   if (!changed && now - last_state_sent_ < std::chrono::seconds(1)) return;
   state_version_sent_ = view_.state_version();
   last_state_sent_ = now;
-  server_->publish_state(state_frame(view_, ++frames_sent_).dump());
+  server_->publish(FrameKind::State, state_frame(view_, ++frames_sent_).dump());
 }
 
 }  // namespace autonomy::viewer

@@ -3,12 +3,14 @@
 // topics (map, robot states, door truth, goals and their statuses, itineraries, radio links,
 // courier job states) into a WorldView, and pushes frames to the web pages at most `rate_hz`
 // times a second, only when something changed (and once a second regardless, so that a page
-// sees the viewer is alive). It writes nothing but its heartbeat; it joins a running set at any
+// sees the viewer is alive). Spacecraft telemetry and faults, executive status and the
+// planner's latest plans go to the side panels (Panels), at most twice a second. It writes nothing but its heartbeat; it joins a running set at any
 // time because every topic it reads for state is transient-local (a late joiner gets the last
 // sample of each key), except goals, whose positions it learns from the next goal sent.
 #include "common/dds/reader.hpp"
 #include "common/dds/topics.hpp"
 #include "common/service/service.hpp"
+#include "services/viewer/core/panels.hpp"
 #include "services/viewer/core/world_view.hpp"
 #include "services/viewer/web/web_server.hpp"
 
@@ -42,6 +44,9 @@ class ViewerNode {
   };
   template <typename T>
   void follow(Subscription<T>& subscription);
+  // A side panel's topic: the latest sample of each key; a disposed or lost one leaves.
+  template <typename T, typename KeyOf>
+  void follow_panel(Subscription<T>& subscription, const char* group, KeyOf key_of);
   void push_frames();
 
   service::Service& service_;
@@ -55,9 +60,16 @@ class ViewerNode {
   Subscription<msg::Itinerary> itineraries_;
   Subscription<msg::RadioLink> links_;
   Subscription<msg::CourierJobStatus> jobs_;
+  Panels panels_;
+  Subscription<msg::SpacecraftTelemetry> telemetry_;
+  Subscription<msg::SpacecraftFaultState> faults_;
+  Subscription<msg::ExecutiveStatus> executives_;
+  Subscription<msg::LatestPlan> plans_;
   std::unique_ptr<WebServer> server_;
   uint64_t map_version_sent_ = 0;
   uint64_t state_version_sent_ = 0;
+  uint64_t panels_version_sent_ = 0;
+  std::chrono::steady_clock::time_point last_panels_sent_{};
   uint64_t frames_sent_ = 0;
   std::chrono::steady_clock::time_point last_state_sent_{};
 };

@@ -8,6 +8,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
+#include <array>
 #include <atomic>
 #include <optional>
 #include <stdexcept>
@@ -31,6 +33,8 @@ struct ViewerWebCounters {
   std::atomic<uint64_t> coalesced{0};
 };
 
+using ViewerFrames = std::array<Frame, kFrameKinds>;  // by FrameKind; empty: none yet
+
 // One page's WebSocket: at most one unsent frame of each kind, the map first.
 class ViewerWebSocket : public std::enable_shared_from_this<ViewerWebSocket> {
  public:
@@ -41,9 +45,9 @@ class ViewerWebSocket : public std::enable_shared_from_this<ViewerWebSocket> {
 
   // Accepts the upgrade request; then sends the newest frames (those known now, or newer ones
   // offered while the handshake runs) and keeps the page current.
-  void accept(http::request<http::string_body> request, Frame map, Frame state) {
-    if (map) pending_map_ = std::move(map);
-    if (state) pending_state_ = std::move(state);
+  void accept(http::request<http::string_body> request, const ViewerFrames& latest) {
+    for (int k = 0; k < kFrameKinds; ++k)
+      if (latest[k]) pending_[k] = latest[k];
     upgrade_ = std::move(request);
     ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
     ws_.set_option(websocket::stream_base::decorator(
@@ -61,9 +65,9 @@ class ViewerWebSocket : public std::enable_shared_from_this<ViewerWebSocket> {
   }
 
   // Called on the server's thread for every new frame.
-  void offer(bool is_map, Frame frame) {
+  void offer(FrameKind kind, Frame frame) {
     if (closed_) return;
-    std::optional<Frame>& slot = is_map ? pending_map_ : pending_state_;
+    std::optional<Frame>& slot = pending_[static_cast<int>(kind)];
     if (slot) ++counters_.coalesced;
     slot = std::move(frame);
     if (accepted_ && !writing_) write_next();
@@ -71,8 +75,9 @@ class ViewerWebSocket : public std::enable_shared_from_this<ViewerWebSocket> {
 
  private:
   void write_next() {
-    std::optional<Frame>& slot = pending_map_ ? pending_map_ : pending_state_;
-    if (!slot) return;
+    auto slot_it = std::find_if(pending_.begin(), pending_.end(), [](const auto& p) { return p.has_value(); });
+    if (slot_it == pending_.end()) return;
+    std::optional<Frame>& slot = *slot_it;
     Frame frame = std::move(*slot);
     slot.reset();
     writing_ = true;
@@ -103,8 +108,7 @@ class ViewerWebSocket : public std::enable_shared_from_this<ViewerWebSocket> {
   ViewerWebCounters& counters_;
   beast::flat_buffer incoming_;
   http::request<http::string_body> upgrade_;
-  std::optional<Frame> pending_map_;
-  std::optional<Frame> pending_state_;
+  std::array<std::optional<Frame>, kFrameKinds> pending_;  // by FrameKind
   bool accepted_ = false;
   bool writing_ = false;
   bool closed_ = false;
@@ -117,8 +121,7 @@ struct WebServer::Impl {
   asio::io_context io;
   tcp::acceptor acceptor{io};
   std::string page;
-  Frame latest_map;    // only touched on the server's thread
-  Frame latest_state;
+  ViewerFrames latest;  // only touched on the server's thread
   std::vector<std::weak_ptr<ViewerWebSocket>> sockets;
   std::thread thread;
 
@@ -134,13 +137,13 @@ struct WebServer::Impl {
     });
   }
 
-  void broadcast(bool is_map, Frame frame) {
-    (is_map ? latest_map : latest_state) = frame;
+  void broadcast(FrameKind kind, Frame frame) {
+    latest[static_cast<int>(kind)] = frame;
     std::vector<std::weak_ptr<ViewerWebSocket>> alive;
     alive.reserve(sockets.size());
     for (auto& weak : sockets) {
       if (auto s = weak.lock()) {
-        s->offer(is_map, frame);
+        s->offer(kind, frame);
         alive.push_back(std::move(weak));
       }
     }
@@ -169,7 +172,7 @@ struct WebServer::Impl {
         stream_.expires_never();
         auto ws = std::make_shared<ViewerWebSocket>(stream_.release_socket(), server_.counters);
         server_.sockets.push_back(ws);
-        ws->accept(std::move(request_), server_.latest_map, server_.latest_state);
+        ws->accept(std::move(request_), server_.latest);
         return;
       }
       auto response = std::make_shared<http::response<http::string_body>>();
@@ -185,8 +188,11 @@ struct WebServer::Impl {
         response->result(http::status::ok);
         response->set(http::field::content_type, "text/html; charset=utf-8");
         response->body() = server_.page;
-      } else if (target == "/map.json" || target == "/state.json") {
-        const Frame& frame = target == "/map.json" ? server_.latest_map : server_.latest_state;
+      } else if (target == "/map.json" || target == "/state.json" || target == "/panels.json") {
+        const FrameKind kind = target == "/map.json"     ? FrameKind::Map
+                               : target == "/state.json" ? FrameKind::State
+                                                         : FrameKind::Panels;
+        const Frame& frame = server_.latest[static_cast<int>(kind)];
         response->result(frame ? http::status::ok : http::status::service_unavailable);
         response->set(http::field::content_type, "application/json");
         response->body() = frame ? *frame : std::string("{\"error\":\"nothing heard yet\"}");
@@ -249,14 +255,9 @@ WebServer::~WebServer() {
 
 uint16_t WebServer::port() const { return impl_->acceptor.local_endpoint().port(); }
 
-void WebServer::publish_map(std::string json) {
+void WebServer::publish(FrameKind kind, std::string json) {
   auto frame = std::make_shared<const std::string>(std::move(json));
-  asio::post(impl_->io, [impl = impl_.get(), frame] { impl->broadcast(true, frame); });
-}
-
-void WebServer::publish_state(std::string json) {
-  auto frame = std::make_shared<const std::string>(std::move(json));
-  asio::post(impl_->io, [impl = impl_.get(), frame] { impl->broadcast(false, frame); });
+  asio::post(impl_->io, [impl = impl_.get(), kind, frame] { impl->broadcast(kind, frame); });
 }
 
 std::size_t WebServer::clients() const { return impl_->counters.clients.load(); }

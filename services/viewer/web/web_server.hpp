@@ -2,14 +2,18 @@
 // The viewer's HTTP + WebSocket server (Boost.Beast, on its own thread). It serves one page
 // (GET /), the latest frames as plain JSON (GET /map.json, /state.json: for curl and scripts),
 // and pushes frames to every WebSocket client of /ws. Pages that read slower than frames come
-// get the newest one only: each connection holds at most one unsent map and one unsent state
-// frame, a newer frame replaces the older unsent one (coalescing, so a slow page never makes the
-// viewer buffer without bound). Beast stays inside web_server.cpp: it compiles in one file.
+// get the newest one only: each connection holds at most one unsent frame of each kind (map,
+// state, panels), a newer frame replaces the older unsent one (coalescing, so a slow page never
+// makes the viewer buffer without bound). Beast stays inside web_server.cpp: it compiles in one file.
 #include <cstdint>
 #include <memory>
 #include <string>
 
 namespace autonomy::viewer {
+
+// The kinds of frames, in the order a connection sends its unsent ones.
+enum class FrameKind { Map = 0, State = 1, Panels = 2 };
+inline constexpr int kFrameKinds = 3;
 
 struct WebServerOptions {
   std::string bind_address = "127.0.0.1";
@@ -26,10 +30,9 @@ class WebServer {
   WebServer& operator=(const WebServer&) = delete;
 
   uint16_t port() const;
-  // Thread-safe. The newest map / state frame (JSON text): sent to every connected page and to
+  // Thread-safe. The newest frame of its kind (JSON text): sent to every connected page and to
   // pages that connect later.
-  void publish_map(std::string json);
-  void publish_state(std::string json);
+  void publish(FrameKind kind, std::string json);
   // Pages connected over WebSocket now.
   std::size_t clients() const;
   // Frames not sent to a page because a newer one replaced them before it could be (all pages).
