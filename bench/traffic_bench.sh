@@ -3,7 +3,7 @@
 # office floor (deploy/scenarios/office.pbtxt, one behavior per robot):
 #   doorway  four robots cross doorway A-114 from both sides (tests/integration/traffic_test.cpp's
 #            case): two in A-114 leave for the classroom, two in the hallway come in;
-#   hall     two robots meet head-on in the 1.8 m hallway (the case traffic does not solve yet).
+#   hall     two robots meet head-on in the 1.8 m hallway (with traffic one gives way).
 # Per case and mode: goals reached / blocked (with the reasons), the closest two robots came
 # (centre distance, from the simulator's trajectory: 0.60 m is contact for 0.3 m robots) and the
 # sim time the last goal ended (the simulator stops once every goal is reached, else at 150 s).
