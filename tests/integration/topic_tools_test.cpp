@@ -1,11 +1,12 @@
 // `autonomy topic echo`, `topic type` and `interface show` on a topic whose type is not in the
 // project's IDL: ddsperf (Cyclone's tool, a real foreign process) publishes DDSPerfRDataKS of its
 // own type KeyedSeq; the tool gets the type from discovery's type information and prints the
-// samples' fields. Domains 138-139.
+// samples' fields; `topic pub` writes that type from JSON. Domains 137-139.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
+#include <algorithm>
 #include <sstream>
 
 #include "tests/support/process_test.hpp"
@@ -15,6 +16,7 @@ namespace {
 
 using namespace std::chrono_literals;
 
+constexpr int kDomainForeignPub = 137;
 constexpr int kDomainForeignEcho = 138;
 constexpr int kDomainForeignType = 139;
 constexpr const char* kDdsperf = "/usr/bin/ddsperf";
@@ -41,10 +43,10 @@ class TopicToolsTest : public ProcessTest {
     }
     return lines_of(read_file(tool.log_file()));
   }
-  void start_ddsperf() {
+  void start_ddsperf(const std::string& rate = "20Hz") {
     // 20 samples/s of 24 bytes (seq, keyval, the baggage length and 12 octets of baggage), for
     // at most 60 s (the test ends it before).
-    start("ddsperf", kDdsperf, {"-i", std::to_string(domain_), "-D", "60", "pub", "20Hz", "size", "24"});
+    start("ddsperf", kDdsperf, {"-i", std::to_string(domain_), "-D", "60", "pub", rate, "size", "24"});
   }
 };
 
@@ -74,6 +76,26 @@ TEST_F(TopicToolsTest, EchoPrintsTheFieldsOfAForeignType) {
   run_tool("echo-bad-field", {"topic", "echo", "DDSPerfRDataKS", "--timeout", "30", "--field", "baggag"}, 2);
   EXPECT_NE(read_file(dir().file("echo-bad-field.err")).find("did you mean baggage"), std::string::npos)
       << read_file(dir().file("echo-bad-field.err"));
+}
+
+TEST_F(TopicToolsTest, PubWritesAForeignTypeFromJson) {
+  if (::access(kDdsperf, X_OK) != 0) GTEST_SKIP() << "ddsperf (cyclonedds-tools) is not installed";
+  join(kDomainForeignPub);
+  start_ddsperf("1Hz");  // announces the type; its own samples have keyval 0
+  auto& echo = start("echo", AUTONOMY_AUTONOMY_BIN,
+                     {"topic", "echo", "DDSPerfRDataKS", "--field", "keyval", "--count", "4", "--timeout", "40",
+                      "--discovery-wait", "10", "--domain", std::to_string(domain_)},
+                     /*must_keep_running=*/false, /*separate_stderr=*/true);
+  run_tool("pub", {"topic", "pub", "DDSPerfRDataKS", R"({"seq":1,"keyval":77,"baggage":{"hex":"0a0b"}})", "--count", "3",
+                   "--rate", "5", "--wait", "10"});
+  const auto ended = echo.wait_for_exit(60s);
+  ASSERT_TRUE(ended.has_value() && ended->exited && ended->code == 0) << read_file(dir().file("echo.err"));
+  const auto lines = lines_of(read_file(echo.log_file()));
+  EXPECT_NE(std::find(lines.begin(), lines.end(), "77"), lines.end()) << read_file(echo.log_file());
+  // JSON that does not fit the type: usage error naming the member.
+  run_tool("pub-bad", {"topic", "pub", "DDSPerfRDataKS", R"({"seq":1,"keyval":-1})", "--wait", "10"}, 2);
+  EXPECT_NE(read_file(dir().file("pub-bad.err")).find("keyval: -1 is out of range"), std::string::npos)
+      << read_file(dir().file("pub-bad.err"));
 }
 
 TEST_F(TopicToolsTest, TopicTypeAndInterfaceShowPrintIdl) {

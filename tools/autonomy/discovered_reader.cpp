@@ -2,7 +2,10 @@
 
 #include <iostream>
 
+#include "common/dds/error.hpp"
 #include "tools/autonomy/discovery.hpp"
+#include "tools/recording/raw_topic.hpp"
+#include "tools/xtypes/cdr_encode.hpp"
 
 namespace autonomy::tools {
 
@@ -54,6 +57,34 @@ std::optional<xtypes::DiscoveredTopic> find_discovered_topic(const dds::Particip
     if (!sleep_for(interrupt, participant, std::min<std::chrono::nanoseconds>(left, std::chrono::milliseconds(20))))
       return std::nullopt;
   }
+}
+
+DiscoveredWriter::DiscoveredWriter(const dds::Participant& participant, const xtypes::DiscoveredTopic& topic,
+                                   const dds_qos_t* qos)
+    : topic_(topic),
+      topic_entity_(dds::check(dds_create_topic(participant.handle(), topic_.descriptor.get(), topic_.name.c_str(),
+                                                nullptr, nullptr),
+                               "dds_create_topic " + topic_.name)),
+      writer_(dds::check(dds_create_writer(participant.handle(), topic_entity_.handle(), qos, nullptr),
+                         "dds_create_writer " + topic_.name)) {}
+
+void DiscoveredWriter::write(const json::Json& j) {
+  std::string cdr;
+  try {
+    cdr = xtypes::json_to_cdr(*topic_.type, j).cdr;
+  } catch (const xtypes::CdrError& e) {
+    throw json::JsonError(topic_.type_name + "." + e.what());
+  }
+  // No public way to write serialized bytes in Cyclone 0.10: decode them into the C layout of
+  // the descriptor Cyclone built from the type objects, and write that.
+  const recording::DecodedSample sample(topic_.descriptor.get(), cdr);
+  dds::check(dds_write(writer_.handle(), sample.get()), "dds_write " + topic_.name);
+}
+
+uint32_t DiscoveredWriter::matched_readers() const {
+  dds_publication_matched_status_t st{};
+  dds::check(dds_get_publication_matched_status(writer_.handle(), &st), "dds_get_publication_matched_status");
+  return st.current_count;
 }
 
 OpenedDiscoveredTopic open_discovered_topic(const dds::Participant& participant, const std::string& topic,

@@ -1,8 +1,8 @@
 #pragma once
-// A reader for a topic that is not in the catalogue: its type from the type information its
-// writers (or readers) announced in discovery, its samples printed by the generic CDR walker
-// (tools/xtypes). The same AnyReader interface as the catalogue's readers, so echo and hz treat
-// both alike.
+// A reader (and a writer) for a topic that is not in the catalogue: its type from the type
+// information its writers (or readers) announced in discovery, its samples printed by the
+// generic CDR walker (tools/xtypes) and written from JSON by its inverse. The same AnyReader and
+// AnyWriter interfaces as the catalogue's, so echo, hz and pub treat both alike.
 #include <chrono>
 #include <map>
 #include <memory>
@@ -29,6 +29,19 @@ class DiscoveredReader : public AnyReader {
   xtypes::CdrReader reader_;
   xtypes::WalkOptions options_;
   std::map<dds_instance_handle_t, json::Json> keys_;  // key fields of each instance seen, for disposals
+};
+
+class DiscoveredWriter : public AnyWriter {
+ public:
+  DiscoveredWriter(const dds::Participant& participant, const xtypes::DiscoveredTopic& topic, const dds_qos_t* qos);
+  // Throws json::JsonError when j does not fit the type.
+  void write(const json::Json& j) override;
+  dds_entity_t handle() const override { return writer_.handle(); }
+  uint32_t matched_readers() const override;
+
+ private:
+  xtypes::DiscoveredTopic topic_;
+  dds::Entity topic_entity_, writer_;
 };
 
 struct OpenedDiscoveredTopic {

@@ -7,6 +7,10 @@
 #include "tools/autonomy/suggest.hpp"
 #include "tools/autonomy/processes.hpp"
 #include "tools/autonomy/topic_registry.hpp"
+#include "tools/autonomy/discovered_reader.hpp"
+#include "tools/autonomy/discovery.hpp"
+#include "tools/xtypes/cdr_encode.hpp"
+#include "tools/xtypes/type_lookup.hpp"
 
 #include <set>
 
@@ -63,33 +67,75 @@ bool robot_served(Interrupt& interrupt, const dds::Participant& participant, con
   }
 }
 
+// A topic that is not in the catalogue: its type from discovery (an endpoint of another process
+// must be there), the JSON checked and completed by that type. nullptr after printing why.
+std::unique_ptr<AnyWriter> open_discovered_writer(const PubOptions& o, const dds::Participant& participant,
+                                                  Interrupt& interrupt, json::Json& message, int& exit_code) {
+  std::optional<xtypes::DiscoveredTopic> found;
+  try {
+    found = find_discovered_topic(participant, o.topic, interrupt, seconds(o.wait_s));
+  } catch (const xtypes::TypeLookupError& e) {
+    std::cerr << "autonomy topic pub: " << o.topic << ": " << e.what() << "\n";
+    exit_code = kExitFailed;
+    return nullptr;
+  }
+  if (!found) {
+    auto names = TopicRegistry::catalogue().name_list();
+    for (auto& n : discovered_topic_names(participant)) names.push_back(n);
+    std::cerr << unknown_topic_message("autonomy topic pub", o.topic, names) << " (not in the catalogue, and no process on domain "
+              << o.domain << " has an endpoint of it within " << o.wait_s << " s)\n";
+    exit_code = kExitUsage;
+    return nullptr;
+  }
+  try {
+    message = xtypes::json_to_cdr(*found->type, json::parse(o.json_text)).complete;
+  } catch (const std::exception& e) {  // xtypes::CdrError, or a JSON syntax error
+    std::string members;
+    for (const auto& m : found->type->members) members += std::string(members.empty() ? "" : ", ") + (m.key ? "@key " : "") + m.name;
+    std::cerr << "autonomy topic pub: " << e.what() << "\n  " << o.topic << " carries " << found->type_name << " {"
+              << members << "} (`autonomy topic type " << o.topic << "` prints it)\n";
+    exit_code = kExitUsage;
+    return nullptr;
+  }
+  Discovery discovery(participant);
+  dds::Qos qos = mirror_writers_qos(dds::QosClass::Event, discovery.writers_of(o.topic));
+  dds_qset_writer_data_lifecycle(qos.get(), false);
+  return std::make_unique<DiscoveredWriter>(participant, *found, qos.get());
+}
+
 int run_pub(const PubOptions& o, Context& ctx) {
   const auto registry = TopicRegistry::catalogue();
   const TopicEntry* topic = registry.find(o.topic);
-  if (!topic) {
-    std::cerr << unknown_topic_message("autonomy topic pub", o.topic, registry.name_list()) << "\n";
-    return kExitUsage;
-  }
   json::Json message;
-  try {
-    message = topic->normalize(json::parse(o.json_text));
-  } catch (const json::JsonError& e) {
-    std::string keys;
-    for (const auto& k : topic->key_fields) keys += (keys.empty() ? "" : ", ") + k;
-    std::cerr << "autonomy topic pub: " << e.what() << "\n  " << topic->name << " carries " << topic->message_name
-              << " {";
-    for (size_t i = 0; i < topic->fields.size(); ++i) std::cerr << (i ? ", " : "") << topic->fields[i];
-    std::cerr << "}" << (keys.empty() ? "" : "; required key fields: " + keys) << "\n";
-    return kExitUsage;
+  if (topic) {
+    try {
+      message = topic->normalize(json::parse(o.json_text));
+    } catch (const json::JsonError& e) {
+      std::string keys;
+      for (const auto& k : topic->key_fields) keys += (keys.empty() ? "" : ", ") + k;
+      std::cerr << "autonomy topic pub: " << e.what() << "\n  " << topic->name << " carries " << topic->message_name
+                << " {";
+      for (size_t i = 0; i < topic->fields.size(); ++i) std::cerr << (i ? ", " : "") << topic->fields[i];
+      std::cerr << "}" << (keys.empty() ? "" : "; required key fields: " + keys) << "\n";
+      return kExitUsage;
+    }
   }
 
   dds::Participant participant(o.domain);
   Interrupt interrupt(ctx.signals, participant);
-  // The class's QoS, but no dispose when this short-lived writer goes: its readers see the
-  // instance lose its writer (no_writers), not a retraction of what was published.
-  dds::Qos qos = dds::make_qos(topic->qos);
-  dds_qset_writer_data_lifecycle(qos.get(), false);
-  const auto writer = topic->make_writer(participant, qos.get());
+  std::unique_ptr<AnyWriter> writer;
+  if (topic) {
+    // The class's QoS, but no dispose when this short-lived writer goes: its readers see the
+    // instance lose its writer (no_writers), not a retraction of what was published.
+    dds::Qos qos = dds::make_qos(topic->qos);
+    dds_qset_writer_data_lifecycle(qos.get(), false);
+    writer = topic->make_writer(participant, qos.get());
+  } else {
+    int exit_code = kExitOk;
+    writer = open_discovered_writer(o, participant, interrupt, message, exit_code);
+    if (!writer) return interrupt.requested() ? kExitInterrupted : exit_code;
+  }
+  const std::string topic_name = o.topic;
 
   // Volatile samples written before a reader is matched are lost: wait for one.
   const auto wait_deadline = std::chrono::steady_clock::now() + seconds(o.wait_s);
@@ -97,11 +143,11 @@ int run_pub(const PubOptions& o, Context& ctx) {
     if (!sleep_for(interrupt, participant, std::chrono::milliseconds(10))) return kExitInterrupted;
   }
   if (writer->matched_readers() == 0)
-    std::cerr << "autonomy topic pub: warning: no reader of " << topic->name << " matched within " << o.wait_s
+    std::cerr << "autonomy topic pub: warning: no reader of " << topic_name << " matched within " << o.wait_s
               << " s; publishing anyway\n";
 
   // A goal for a robot that nobody drives would vanish in silence (no status ever comes): say so.
-  if (const char* service = robot_service_of(topic->name); service && !o.anyway) {
+  if (const char* service = robot_service_of(topic_name); service && !o.anyway) {
     const std::string robot = message.value("robot_id", "");
     std::set<std::string> served;
     if (!robot_served(interrupt, participant, service, robot, wait_deadline, served)) {
@@ -153,7 +199,8 @@ Command add_topic_pub(CLI::App& topic) {
   auto o = std::make_shared<PubOptions>();
   auto* cmd = topic.add_subcommand(
       "pub",
-      "Publish a message given as JSON on a catalogue topic, with the topic's QoS class. Key fields are "
+      "Publish a message given as JSON on a topic, with the topic's QoS class. A topic that is not in the catalogue "
+      "takes its type from discovery (a process must have an endpoint of it; the QoS mirrors its writers). Key fields are "
       "required; other fields left out take the message's defaults. Waits for a reader (--wait), and before "
       "exiting for every matched reader to acknowledge (reliable topics). The writer lives only while "
       "pub runs: late joiners of a state topic get the message only until then (--count 0 keeps it up).\n"
