@@ -27,6 +27,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 
 namespace autonomy::courier::scheduling::detail {
 
@@ -50,6 +51,17 @@ int lowest_bit(std::uint64_t x) {
 }
 int bit_count(std::uint32_t x) {
   return __builtin_popcount(x);
+}
+
+// Insertion sort of the bound's arrays (at most 30 values, about 10 on average): std::sort was
+// 18 % of a loose 12-job search, mostly its dispatch on such short arrays.
+void sort_bound_values(double* v, int n) {
+  for (int i = 1; i < n; ++i) {
+    const double x = v[i];
+    int k = i;
+    for (; k > 0 && v[k - 1] > x; --k) v[k] = v[k - 1];
+    v[k] = x;
+  }
 }
 
 // All-pairs shortest travel (the matrix may not obey the triangle inequality; bounds must).
@@ -78,6 +90,11 @@ class CourierSearch {
         budget_(budget),
         n_(rs.problem().locations.size()),
         capacity_(capacity) {
+    arena_->in_use = true;
+    current_.clear();
+    next_.clear();
+    trail_.clear();
+    states_.reset();
     for (std::size_t i = 0; i < jobs_.size(); ++i)
       if (start_.carries(jobs_[i])) initially_picked_ |= 1u << i;
     all_ = jobs_.size() == 32 ? ~0u : (1u << jobs_.size()) - 1u;
@@ -126,6 +143,18 @@ class CourierSearch {
              sim_.job(jobs_[static_cast<std::size_t>(y)]).deadline;
     });
   }
+
+  ~CourierSearch() {
+    trim(current_);
+    trim(next_);
+    trim(trail_);
+    trim(renumber_);
+    if (states_.slots.size() * sizeof(StateTable::Slot) > kArenaKeepBytes)
+      states_.slots = std::vector<StateTable::Slot>(1u << 10);
+    arena_->in_use = false;
+  }
+  CourierSearch(const CourierSearch&) = delete;
+  CourierSearch& operator=(const CourierSearch&) = delete;
 
   // Returns true when the search finished (the best found is optimal), false when the budget
   // stopped it. `incumbent` (may be empty) is a complete route for these jobs with its cost.
@@ -226,7 +255,7 @@ class CourierSearch {
   //        the stops there. Any k jobs touch their places, so the sum of their w (either way)
   //        is at most the time those k take;
   //   c_k  a lower bound on the k-th smallest completion: max(e_(k), t + the larger of the two
-  //        sums of the k smallest w_j, c_(k-1) + the shortest delivery handover);
+  //        sums of the k smallest w_j, c_(k-1) + the shortest delivery handover left);
   //   late jobs >= max(#{e_j > d_j}, jobs that cannot get an on-time slot among the c_k, matched
   //        greedily by deadline: slots are prefixes, so greedy is exact);
   //   lateness >= max(sum max(0, e_j - d_j), sum max(0, c_k - d_(k)) with deadlines sorted: the
@@ -267,6 +296,7 @@ class CourierSearch {
     };
     auto shared_charge = [&](int place) { return leg_in_[place] / stops_at_[place]; };
     int r = 0;
+    double shortest_delivery_left = kNoRoute;
     int late_alone = 0;
     double lateness_alone = 0.0;
     for (std::size_t i = 0; i < jobs_.size(); ++i) {
@@ -276,6 +306,7 @@ class CourierSearch {
       double t = s.t;
       int loc = s.loc;
       double handovers = d.del_dur;
+      shortest_delivery_left = std::min(shortest_delivery_left, d.del_dur);
       double first = 0.0, shared = 0.0;
       if (!(s.picked >> i & 1u)) {
         t = start_within(d.pick_windows, t + sp(loc, d.pick_loc), d.pick_dur) + d.pick_dur;
@@ -302,12 +333,12 @@ class CourierSearch {
     int q = 0;
     for (int i : by_deadline_)
       if (!(s.delivered >> i & 1u)) due_[q++] = data(static_cast<std::size_t>(i)).deadline;
-    std::sort(earliest_, earliest_ + r);
-    std::sort(work_first_, work_first_ + r);
-    std::sort(work_shared_, work_shared_ + r);
+    sort_bound_values(earliest_, r);
+    sort_bound_values(work_first_, r);
+    sort_bound_values(work_shared_, r);
     double previous = -kNoRoute;
     double busy_first = s.t, busy_shared = s.t;
-    const double gap = sim_.min_delivery_duration();
+    const double gap = shortest_delivery_left;
     const double now = rs_.problem().now_s;
     double completion = 0.0, lateness_sorted = 0.0;
     for (int k = 0; k < r; ++k) {
@@ -415,17 +446,14 @@ class CourierSearch {
     return delay_penalty(a, b.t, a.t, penalty) && compare(a.cost + penalty, b.cost) <= 0;
   }
 
-  RouteState route_state(const Label& label) const {
-    RouteState s;
-    s.t = label.t;
-    s.loc = label.loc;
-    s.visited = label.visited;
-    s.cost = label.cost;
-    for (int j : base_aboard_) s.aboard[static_cast<std::size_t>(s.load++)] = j;
-    for (std::uint32_t rest = label.picked & ~label.delivered; rest; rest &= rest - 1)
-      s.aboard[static_cast<std::size_t>(s.load++)] =
-          jobs_[static_cast<std::size_t>(lowest_bit(rest))];
-    return s;
+  // RouteSimulator::advance on a label, without building and copying a RouteState per child:
+  // the aboard set is the masks, and the rules (capacity, look-alikes) are checked by the caller.
+  bool advance_label(const Label& from, StopRef stop, Label& to) const {
+    to.cost = from.cost;
+    to.t = from.t;
+    to.loc = from.loc;
+    to.visited = from.visited;
+    return sim_.timed_step(to.t, to.loc, to.visited, to.cost, stop);
   }
 
   // Adds a child to the layer being built unless a label of its state dominates it; drops the
@@ -515,7 +543,6 @@ class CourierSearch {
           stopped_ = true;
           break;
         }
-        const RouteState s = route_state(e);
         const std::uint32_t aboard = e.picked & ~e.delivered;
         const bool full = base_load + bit_count(aboard) >= capacity_;
         for (std::size_t i = 0; i < jobs_.size() && !stopped_; ++i) {
@@ -525,13 +552,8 @@ class CourierSearch {
           const LocalJob& lj = local_jobs_[i];
           if (!deliver && (full || lj.blocked_for_good || (lj.look_alikes & aboard))) continue;
           const StopRef stop{jobs_[i], deliver ? StopKind::kDelivery : StopKind::kPickup};
-          RouteState after = s;
-          if (!sim_.advance(after, stop)) continue;
           Label child;
-          child.cost = after.cost;
-          child.t = after.t;
-          child.loc = after.loc;
-          child.visited = true;
+          if (!advance_label(e, stop, child)) continue;
           child.picked = e.picked | (deliver ? 0u : bit);
           child.delivered = e.delivered | (deliver ? bit : 0u);
           if (child.delivered == all_) {
@@ -586,11 +608,37 @@ class CourierSearch {
   double leg_in_[64] = {};
   double window_start_[2 * kMaxJobsPerCourier] = {};
   double latest_start_[2 * kMaxJobsPerCourier] = {};
-  // The layers, the state table of the layer being built and every label's last step.
-  std::vector<Label> current_, next_;
-  StateTable states_;
-  std::vector<TrailStep> trail_;
-  std::vector<int> renumber_;  // scratch of compact_trail
+  // The layers, the state table of the layer being built and every label's last step, in memory
+  // kept by the thread from one search to the next: fresh vectors grew by doubling and every
+  // solve touched their pages anew (page faults were 14 % of a loose 12-job search's time).
+  struct Arena {
+    std::vector<Label> current, next;
+    StateTable states;
+    std::vector<TrailStep> trail;
+    std::vector<int> renumber;
+    bool in_use = false;
+  };
+  // The thread's arena, or a private one while it is taken (searches do not nest today).
+  static Arena* take_arena(std::unique_ptr<Arena>& own) {
+    static thread_local Arena shared;
+    if (!shared.in_use) return &shared;
+    own = std::make_unique<Arena>();
+    return own.get();
+  }
+  // Memory of a search too large to keep for the next one (a 16-job search can fill 2^20 labels).
+  static constexpr std::size_t kArenaKeepBytes = std::size_t{32} << 20;
+  template <typename T>
+  static void trim(std::vector<T>& v) {
+    v.clear();
+    if (v.capacity() * sizeof(T) > kArenaKeepBytes) std::vector<T>().swap(v);
+  }
+  std::unique_ptr<Arena> own_arena_;
+  Arena* arena_ = take_arena(own_arena_);
+  std::vector<Label>& current_ = arena_->current;
+  std::vector<Label>& next_ = arena_->next;
+  StateTable& states_ = arena_->states;
+  std::vector<TrailStep>& trail_ = arena_->trail;
+  std::vector<int>& renumber_ = arena_->renumber;  // scratch of compact_trail
   std::vector<StopRef> best_route_;
   Objective best_;
   bool found_ = false;

@@ -83,36 +83,43 @@ const char* RouteSimulator::refusal(const RouteState& s, StopRef stop) const {
   return nullptr;
 }
 
-bool RouteSimulator::advance(RouteState& s, StopRef stop, ScheduledStop* out) const {
+bool RouteSimulator::timed_step(double& t, int& at, bool& visited, Objective& cost, StopRef stop,
+                                ScheduledStop* out) const {
   const JobData& d = job(stop.job);
   const bool pickup = stop.kind == StopKind::kPickup;
   const int loc = pickup ? d.pick_loc : d.del_loc;
   const int person = pickup ? d.pick_person : d.del_person;
   const double dur = pickup ? d.pick_dur : d.del_dur;
   const auto* windows = pickup ? d.pick_windows : d.del_windows;
-  const bool same_visit = s.visited && loc == s.loc;
-  const double tt = travel(s.loc, loc);
+  const bool same_visit = visited && loc == at;
+  const double tt = travel(at, loc);
   if (!(tt < kNoRoute)) return false;
-  const double arrival = s.t + tt;
+  const double arrival = t + tt;
   const double begin = start_within(windows, arrival, dur);
   if (!(begin < kNoRoute)) return false;
   const double finish = begin + dur;
-  s.cost.travel_s += tt;
-  if (!same_visit) ++s.cost.interruptions;
-  if (pickup) {
-    s.aboard[static_cast<std::size_t>(s.load++)] = stop.job;
-  } else {
-    s.drop(stop.job);
-    s.cost.completion_s += finish - p_->now_s;
+  cost.travel_s += tt;
+  if (!same_visit) ++cost.interruptions;
+  if (!pickup) {
+    cost.completion_s += finish - p_->now_s;
     if (finish > d.deadline + 1e-9) {
-      ++s.cost.late_jobs;
-      s.cost.lateness_s += finish - d.deadline;
+      ++cost.late_jobs;
+      cost.lateness_s += finish - d.deadline;
     }
   }
-  s.t = finish;
-  s.loc = loc;
-  s.visited = true;
+  t = finish;
+  at = loc;
+  visited = true;
   if (out) *out = {stop.job, stop.kind, loc, person, arrival, begin, finish, same_visit};
+  return true;
+}
+
+bool RouteSimulator::advance(RouteState& s, StopRef stop, ScheduledStop* out) const {
+  if (!timed_step(s.t, s.loc, s.visited, s.cost, stop, out)) return false;
+  if (stop.kind == StopKind::kPickup)
+    s.aboard[static_cast<std::size_t>(s.load++)] = stop.job;
+  else
+    s.drop(stop.job);
   return true;
 }
 

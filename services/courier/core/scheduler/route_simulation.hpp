@@ -78,6 +78,10 @@ class RouteSimulator {
   // Drives to the stop and does the handover: false (s unspecified) when there is no route or no
   // presence window fits. Does not check refusal(). Fills `out` when given.
   bool advance(RouteState& s, StopRef stop, ScheduledStop* out = nullptr) const;
+  // advance's timing and cost only, on the parts of a state they depend on (the exact engine
+  // keeps the aboard set as masks and checks the rules on them).
+  bool timed_step(double& t, int& at, bool& visited, Objective& cost, StopRef stop,
+                  ScheduledStop* out = nullptr) const;
 
   // Lower bound on the finish of job j's delivery from state s (ignoring all other jobs).
   double earliest_completion(const RouteState& s, int j) const;
