@@ -16,14 +16,14 @@ void Panels::erase(const std::string& group, const std::string& key) {
 }
 
 void Panels::apply(const msg::SpacecraftTelemetry& telemetry) {
-  set("spacecraft", telemetry.spacecraft, json::to_json(telemetry));
+  set("spacecraft", telemetry.spacecraft, ::autonomy::json::to_json(telemetry));
 }
 
-void Panels::apply(const msg::SpacecraftFaultState& fault) { set("faults", fault.fault_id, json::to_json(fault)); }
+void Panels::apply(const msg::SpacecraftFaultState& fault) { set("faults", fault.fault_id, ::autonomy::json::to_json(fault)); }
 
-void Panels::apply(const msg::ExecutiveStatus& status) { set("executive", status.executive, json::to_json(status)); }
+void Panels::apply(const msg::ExecutiveStatus& status) { set("executive", status.executive, ::autonomy::json::to_json(status)); }
 
-void Panels::apply(const msg::LatestPlan& plan) { set("plans", plan.requester, json::to_json(plan)); }
+void Panels::apply(const msg::LatestPlan& plan) { set("plans", plan.requester, ::autonomy::json::to_json(plan)); }
 
 nlohmann::json Panels::frame() const {
   nlohmann::json out = {{"type", "panels"}};
