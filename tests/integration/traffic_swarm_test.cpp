@@ -147,14 +147,14 @@ TEST_F(TrafficSwarmTest, TenRobotsWithRandomGoalsNeverTouchNorDeadlock) {
   dds::Writer<msg::NavGoal> goal_writer(participant(), goal_topic);
   // --every-tick: no quiet ticks; a robot between goals holds the world like a busy one, so the
   // next goal arrives a few ticks after the last ended, not after a quiet stretch of minutes.
-  std::vector<std::string> ids, wait_for{"--config", kSwarmOffice, "--without-robots", "--every-tick", "--max-ticks",
+  std::vector<std::string> ids, sim_args{"--config", kSwarmOffice, "--without-robots", "--every-tick", "--max-ticks",
                                          std::to_string(static_cast<int64_t>(std::llround(sim_s / kSwarmStep_s))),
                                          "--trajectory", dir().file("trajectory.csv"), "--wait-for"};
   for (int i = 1; i <= robots; ++i) {
     ids.push_back("r" + std::to_string(i));
-    wait_for.push_back("behavior/" + ids.back());
+    sim_args.push_back("behavior/" + ids.back());
   }
-  auto& simulator = start_simulator(wait_for, /*must_keep_running=*/false);
+  auto& simulator = start_simulator(sim_args, /*must_keep_running=*/false);
   std::vector<geometry::Vec2> starts;
   for (const auto& id : ids) {
     starts.push_back(points.draw(starts, 1.5));
