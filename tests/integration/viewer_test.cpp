@@ -1,15 +1,17 @@
 // Integration tests of the viewer process: with the real simulator and a behavior, a WebSocket
 // client (a page's stand-in) sees the robot move between two frames, a door the scenario closes
 // drawn closed and a spacecraft fault in the side panels; a port in use is refused with a clear
-// error; headless Chromium draws the page.
+// error; headless Chromium draws the page; a Foxglove client decodes robot states with the
+// advertised IDL.
 //
-// One DDS domain per test; this file uses 55-58 only:
+// One DDS domain per test; this file uses 55-58 and 189 only:
 //
 //   domain  test
 //   ------  -----------------------------------------------
 //     55    ViewerTest.PageFramesFollowTheRobotAndTheClosingDoor
 //     56    ViewerTest.PortInUseIsAClearError
 //     57    ViewerTest.PageInHeadlessChromiumDrawsTheMovingRobotTheClosedDoorAndAJobChange
+//    189    ViewerTest.FoxgloveClientDecodesTheRobotStateWithTheAdvertisedSchema
 #include "tests/support/process_test.hpp"
 #include "tests/support/web_socket_client.hpp"
 
@@ -18,10 +20,12 @@
 
 #include <netinet/in.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <regex>
 #include <sstream>
@@ -112,6 +116,9 @@ class ViewerTest : public ProcessTest {
     goal_writer_->write({"r1", "west-end", 8.0, 3.0, 0.2, ""});
     return port;
   }
+
+  // Another goal for r1 (after start_world_with_viewer).
+  void send_goal(const std::string& id, double x, double y) { goal_writer_->write({"r1", id, x, y, 0.2, ""}); }
 
   void TearDown() override {
     goal_writer_.reset();  // before the participant goes
@@ -268,6 +275,38 @@ TEST_F(ViewerTest, PageInHeadlessChromiumDrawsTheMovingRobotTheClosedDoorAndAJob
   const auto status = check.wait_for_exit(120s);
   ASSERT_TRUE(status.has_value()) << "viewer_page_check.js did not finish\n" << check.log_tail();
   EXPECT_TRUE(status->exited && status->code == 0) << status->describe() << "\n" << check.log_tail();
+}
+
+// The Foxglove WebSocket protocol, checked by npm's client (tests/node/viewer_foxglove_check.js:
+// @foxglove/ws-protocol's FoxgloveClient, decoding with @foxglove/omgidl-serialization and the
+// advertised IDL only): serverInfo and the channels advertised, r1's states decoded inside the
+// map at two positions, the map's transient-local state on a later subscription, and a new
+// subscription after an unsubscribe. Skipped where node is missing (deploy/test.sh installs it
+// and the npm packages).
+TEST_F(ViewerTest, FoxgloveClientDecodesTheRobotStateWithTheAdvertisedSchema) {
+  const std::string node = viewer_find_program("node");
+  if (node.empty()) GTEST_SKIP() << "node is not installed (deploy/test.sh installs it): the Foxglove check was skipped";
+  const std::string modules = std::string(AUTONOMY_SOURCE_DIR) + "/tests/node/node_modules/@foxglove/ws-protocol";
+  struct stat st {};
+  ASSERT_EQ(::stat(modules.c_str(), &st), 0)
+      << "the npm packages are missing: npm ci --prefix " << AUTONOMY_SOURCE_DIR << "/tests/node (deploy/test.sh does this)";
+  join(189);
+  const uint16_t port = start_world_with_viewer();
+  ASSERT_NE(port, 0);
+  auto& check = start("viewer_foxglove_check", node,
+                      {std::string(AUTONOMY_SOURCE_DIR) + "/tests/node/viewer_foxglove_check.js", "--url",
+                       "ws://127.0.0.1:" + std::to_string(port) + "/", "--robot", "r1", "--width", "20", "--height", "6",
+                       "--map", "viewer-corridor"},
+                      false);
+  // Once the client has decoded r1, send it back west: it moves whether or not it had arrived.
+  ASSERT_TRUE(await("the Foxglove client decodes r1", [&] {
+    return read_file(check.log_file()).find("r1 decoded at") != std::string::npos || !check.running();
+  })) << check.log_tail();
+  send_goal("back-west", 3.0, 3.0);
+  const auto status = check.wait_for_exit(120s);
+  ASSERT_TRUE(status.has_value()) << "viewer_foxglove_check.js did not finish\n" << check.log_tail();
+  EXPECT_TRUE(status->exited && status->code == 0) << status->describe() << "\n" << check.log_tail();
+  std::fprintf(stderr, "%s\n", check.log_tail(1500).c_str());
 }
 
 }  // namespace

@@ -2,10 +2,13 @@
 
 #include "services/viewer/core/frames.hpp"
 #include "services/viewer/web/page.hpp"
+#include "tools/recording/idl_text.hpp"
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <iterator>
 #include <stdexcept>
 
 namespace autonomy::viewer {
@@ -36,7 +39,25 @@ ViewerNode::ViewerNode(service::Service& service, ViewerNodeOptions options)
       plans_(service.participant(), dds::topics::planner_plan) {
   if (!(options_.rate_hz > 0.0 && options_.rate_hz <= 100.0))
     throw std::invalid_argument("viewer: --rate must be in (0, 100] frames per second");
-  server_ = std::make_unique<WebServer>(options_.web, std::string(viewer_page_html()));
+  // Every catalogue topic as a Foxglove channel: CDR samples, the type's self-contained IDL.
+  std::vector<foxglove::Channel> channels;
+  for (const auto& topic : recording::recordable_topics()) {
+    foxglove::Channel c;
+    try {
+      c.schema = recording::omgidl_schema(topic.type_name);
+    } catch (const std::exception& e) {
+      spdlog::warn("viewer: topic {} is not offered to Foxglove clients: {}", topic.name, e.what());
+      continue;
+    }
+    foxglove_topics_.push_back(&topic);
+    c.id = static_cast<uint32_t>(foxglove_topics_.size());
+    c.topic = topic.name;
+    c.encoding = "cdr";
+    c.schema_name = topic.type_name;
+    c.schema_encoding = "omgidl";
+    channels.push_back(std::move(c));
+  }
+  server_ = std::make_unique<WebServer>(options_.web, std::string(viewer_page_html()), std::move(channels));
 
   auto& loop = service.loop();
   follow(map_);
@@ -60,10 +81,13 @@ ViewerNode::ViewerNode(service::Service& service, ViewerNodeOptions options)
   follow_panel(plans_, "plans", [](const msg::LatestPlan& p) { return p.requester; });
   const auto period = std::chrono::nanoseconds(static_cast<int64_t>(1e9 / options_.rate_hz));
   loop.every(period, [this] { push_frames(); });
+  loop.every(std::chrono::milliseconds(20), [this] { pump_foxglove(); });
 
   service.heartbeat().set_detail(url());
   service.set_ready();
-  spdlog::info("viewer: open {} in a browser (frames on the WebSocket {}ws)", url(), url());
+  const std::string ws_url = "ws" + url().substr(4);  // http://... -> ws://...
+  spdlog::info("viewer: open {} in a browser (frames on the WebSocket {}ws; Foxglove clients: {}, {} channels)", url(),
+               ws_url, ws_url, foxglove_topics_.size());
   // On stdout too, for scripts that start the viewer and print its address.
   std::printf("viewer: open %s\n", url().c_str());
   std::fflush(stdout);
@@ -92,6 +116,30 @@ void ViewerNode::follow_panel(Subscription<T>& subscription, const char* group, 
 std::string ViewerNode::url() const {
   const std::string host = options_.web.bind_address == "0.0.0.0" ? service::host_name() : options_.web.bind_address;
   return "http://" + host + ":" + std::to_string(server_->port()) + "/";
+}
+
+void ViewerNode::pump_foxglove() {
+  const uint64_t version = server_->foxglove_version();
+  if (version != foxglove_version_seen_) {
+    foxglove_version_seen_ = version;  // read before the streams: a change in between is seen next time
+    const auto streams = server_->foxglove_streams();
+    for (auto it = foxglove_readers_.begin(); it != foxglove_readers_.end();) {
+      const bool kept =
+          std::any_of(streams.begin(), streams.end(), [&](const FoxgloveStream& s) { return s.stream == it->first; });
+      it = kept ? std::next(it) : foxglove_readers_.erase(it);
+    }
+    for (const auto& s : streams) {
+      if (foxglove_readers_.count(s.stream) || s.channel == 0 || s.channel > foxglove_topics_.size()) continue;
+      foxglove_readers_.emplace(
+          s.stream, std::make_unique<recording::RawReader>(service_.participant(), *foxglove_topics_[s.channel - 1]));
+    }
+  }
+  for (auto& [stream, reader] : foxglove_readers_) {
+    foxglove_batch_.clear();
+    reader->take(foxglove_batch_);
+    for (const auto& sample : foxglove_batch_)
+      server_->send_foxglove(stream, static_cast<uint64_t>(sample.reception_time), sample.cdr);
+  }
 }
 
 void ViewerNode::push_frames() {

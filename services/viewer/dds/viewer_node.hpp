@@ -7,16 +7,24 @@
 // planner's latest plans go to the side panels (Panels), at most twice a second. It writes nothing but its heartbeat; it joins a running set at any
 // time because every topic it reads for state is transient-local (a late joiner gets the last
 // sample of each key), except goals, whose positions it learns from the next goal sent.
+//
+// Foxglove clients (docs/viewer.md) are offered every topic of the catalogue as a channel, with
+// its type's IDL (tools/recording); each subscription is a reader of its own, taking the samples
+// as CDR (as on the wire) every 20 ms, made when the client subscribes (so it gets the topic's
+// transient-local state at once) and deleted when it unsubscribes or leaves.
 #include "common/dds/reader.hpp"
 #include "common/dds/topics.hpp"
 #include "common/service/service.hpp"
 #include "services/viewer/core/panels.hpp"
 #include "services/viewer/core/world_view.hpp"
 #include "services/viewer/web/web_server.hpp"
+#include "tools/recording/raw_topic.hpp"
 
 #include <chrono>
+#include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace autonomy::viewer {
 
@@ -48,6 +56,9 @@ class ViewerNode {
   template <typename T, typename KeyOf>
   void follow_panel(Subscription<T>& subscription, const char* group, KeyOf key_of);
   void push_frames();
+  // Readers for the Foxglove subscriptions made or deleted as they come and go; their samples
+  // sent.
+  void pump_foxglove();
 
   service::Service& service_;
   ViewerNodeOptions options_;
@@ -65,7 +76,11 @@ class ViewerNode {
   Subscription<msg::SpacecraftFaultState> faults_;
   Subscription<msg::ExecutiveStatus> executives_;
   Subscription<msg::LatestPlan> plans_;
+  std::vector<const recording::RecordableTopic*> foxglove_topics_;  // by channel id - 1
   std::unique_ptr<WebServer> server_;
+  std::map<uint64_t, std::unique_ptr<recording::RawReader>> foxglove_readers_;  // by stream
+  uint64_t foxglove_version_seen_ = 0;
+  std::vector<recording::RawSample> foxglove_batch_;
   uint64_t map_version_sent_ = 0;
   uint64_t state_version_sent_ = 0;
   uint64_t panels_version_sent_ = 0;
