@@ -11,7 +11,8 @@
 #          default none),
 #          --rover (the robot domain instead: a rover's survey on the field, deploy/sets/rover.set;
 #          its drives become go-to goals of the behavior controller), --secure (DDS Security:
-#          docs/security.md).
+#          docs/security.md), --viewer-port P (the live view, default 8080: docs/viewer.md),
+#          --no-viewer.
 set -euo pipefail
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
@@ -20,6 +21,7 @@ setup=1
 faults=""
 set_name=ds1
 secure=()  # --secure: launch.sh --profile secure
+viewer_port=8080  # the viewer's page (docs/viewer.md); "" = no viewer
 while [ $# -gt 0 ]; do
   case $1 in
     --domain) domain=$2; shift 2 ;;
@@ -27,7 +29,9 @@ while [ $# -gt 0 ]; do
     --faults) faults=$2; shift 2 ;;
     --rover) set_name=rover; shift ;;
     --secure) secure=(--profile secure); shift ;;
-    -h|--help) sed -n '2,14p' "${BASH_SOURCE[0]}"; exit 0 ;;
+    --viewer-port) viewer_port=$2; shift 2 ;;
+    --no-viewer) viewer_port=""; shift ;;
+    -h|--help) sed -n '2,15p' "${BASH_SOURCE[0]}"; exit 0 ;;
     *) echo "ds1-demo: unknown option $1 (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -42,7 +46,7 @@ if [ $setup -eq 1 ]; then
   bash "$repo/deploy/install-deps.sh"
   echo "ds1-demo: building the simulator, the planner, the executive and the autonomy CLI"
   bash "$repo/deploy/build.sh" --target simulator --target planner --target executive --target autonomy \
-    --target behavior
+    --target behavior --target viewer
 fi
 
 cli="$repo/build/bin/autonomy"
@@ -60,7 +64,12 @@ for id in "${chosen[@]}"; do
 done
 echo "ds1-demo: $set_name, faults: ${faults:-none}; run folder $run_dir"
 
-bash "$repo/deploy/launch.sh" --detach "${secure[@]}" --domain "$domain" --run-dir "$run_dir" $set_name
+# Plus the viewer (not secured: it has no identity in deploy/security/access.table yet).
+[ ${#secure[@]} -eq 0 ] || viewer_port=""
+set_file=$(bash "$repo/deploy/viewer.sh" set "$set_name" "$run_dir" "$viewer_port")
+bash "$repo/deploy/launch.sh" --detach "${secure[@]}" --domain "$domain" --run-dir "$run_dir" "$set_file"
+viewer_says=$(bash "$repo/deploy/viewer.sh" address "$run_dir" "$viewer_port" 2>&1)
+[ -z "$viewer_says" ] || echo "ds1-demo: $viewer_says"
 # Secured, this script's own tools (and the commands it prints) act as the operator.
 [ ${#secure[@]} -eq 0 ] || CYCLONEDDS_URI+=",$(bash "$repo/deploy/security/security.sh" uri "${AUTONOMY_SECURITY_DIR:-$repo/runs/security}" operator)"
 finish() { bash "$repo/deploy/launch.sh" stop "$run_dir" || true; }
