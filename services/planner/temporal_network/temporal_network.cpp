@@ -4,6 +4,8 @@
 #include <deque>
 #include <functional>
 #include <queue>
+#include <stdexcept>
+#include <string>
 
 namespace autonomy::planner {
 
@@ -12,6 +14,7 @@ TemporalNetwork::TemporalNetwork(Time horizon) : horizon_(std::min(horizon, kInf
   latest_.push_back(0);
   out_.emplace_back();
   in_.emplace_back();
+  book_.emplace_back();
 }
 
 TimepointId TemporalNetwork::add_timepoint() {
@@ -19,68 +22,108 @@ TimepointId TemporalNetwork::add_timepoint() {
   latest_.push_back(horizon_);
   out_.emplace_back();
   in_.emplace_back();
+  book_.emplace_back();
   return earliest_.size() - 1;
 }
 
+void TemporalNetwork::check_timepoint(TimepointId t, const char* what) const {
+  if (t >= earliest_.size())
+    throw std::out_of_range(std::string("TemporalNetwork::add_constraint: ") + what +
+                            " timepoint " + std::to_string(t) +
+                            " does not exist (the network has " +
+                            std::to_string(earliest_.size()) + ")");
+}
+
+bool TemporalNetwork::trailed_since_mark(std::size_t entry, TimepointId t, Undo kind) const {
+  return entry != kNoEntry && entry >= latest_mark_trail_ && entry < trail_.size() &&
+         trail_[entry].what == t && trail_[entry].kind == kind;
+}
+
 void TemporalNetwork::set_latest(TimepointId t, Time v) {
-  trail_.push_back({t, true, latest_[t]});
+  call_log_.push_back({t, latest_[t], Undo::kLatest});
+  std::size_t& entry = book_[t].latest_entry;
+  if (!trailed_since_mark(entry, t, Undo::kLatest)) {
+    entry = trail_.size();
+    trail_.push_back({t, latest_[t], Undo::kLatest});
+  }
   latest_[t] = v;
 }
 
 void TemporalNetwork::set_earliest(TimepointId t, Time v) {
-  trail_.push_back({t, false, earliest_[t]});
+  call_log_.push_back({t, earliest_[t], Undo::kEarliest});
+  std::size_t& entry = book_[t].earliest_entry;
+  if (!trailed_since_mark(entry, t, Undo::kEarliest)) {
+    entry = trail_.size();
+    trail_.push_back({t, earliest_[t], Undo::kEarliest});
+  }
   earliest_[t] = v;
 }
 
-namespace {
-// Walks predecessor edges back from `start`, collecting constraint ids, at most `limit` steps
-// (the links may be stale from earlier propagations, so the walk is bounded).
-void trace(const std::vector<std::size_t>& pred,
-           const std::vector<TemporalConstraintId>& edge_constraint, TimepointId start,
-           const std::vector<TimepointId>& edge_from, std::size_t limit,
-           std::vector<TemporalConstraintId>* out) {
-  TimepointId t = start;
-  for (std::size_t i = 0; i < limit && pred[t] != SIZE_MAX; ++i) {
-    std::size_t e = pred[t];
-    TemporalConstraintId c = edge_constraint[e];
-    if (std::find(out->begin(), out->end(), c) != out->end()) break;
-    out->push_back(c);
-    t = edge_from[e];
-  }
+void TemporalNetwork::add_arcs(std::size_t e) {
+  const Edge& ed = edges_[e];
+  out_[ed.from].push_back({ed.to, ed.weight, e});
+  in_[ed.to].push_back({ed.from, ed.weight, e});
 }
-}  // namespace
+
+// The arcs of the newest edges are last in their lists, so on undo the search from the back
+// stops at once; only removal and its undo find them elsewhere.
+void TemporalNetwork::erase_arcs(std::size_t e) {
+  auto erase_from = [e](std::vector<Arc>& list) {
+    for (std::size_t i = list.size(); i-- > 0;) {
+      if (list[i].edge == e) {
+        list.erase(list.begin() + static_cast<std::ptrdiff_t>(i));
+        return;
+      }
+    }
+  };
+  erase_from(out_[edges_[e].from]);
+  erase_from(in_[edges_[e].to]);
+}
 
 TemporalResult TemporalNetwork::add_constraint(TimepointId from, TimepointId to, Time lb, Time ub,
                                                TemporalConstraintId* id_out) {
+  check_timepoint(from, "from");
+  check_timepoint(to, "to");
   const TemporalConstraintId id = constraints_.size();
   if (id_out) *id_out = id;
   TemporalResult result;
   if (lb > ub || lb >= kInfinity || ub <= -kInfinity) {
     constraints_.push_back({from, to, lb, ub, false});
+    first_edge_.push_back(kNoEdge);
     result.consistent = false;
     result.conflict = {id};
     return result;
   }
-  const Mark before = mark();
+  const Mark before{trail_.size(), earliest_.size(), constraints_.size()};  // not a user mark
+  call_log_.clear();
   constraints_.push_back({from, to, lb, ub, true});
-  edge_count_at_constraint_.push_back(edges_.size());
+  first_edge_.push_back(edges_.size());
   auto add_edge = [&](TimepointId a, TimepointId b, Time w) {
     if (w >= kInfinity) return;
     edges_.push_back({a, b, w, id});
-    out_[a].push_back(edges_.size() - 1);
-    in_[b].push_back(edges_.size() - 1);
+    add_arcs(edges_.size() - 1);
   };
   add_edge(from, to, ub);
   add_edge(to, from, -lb);
   std::vector<TemporalConstraintId> conflict;
   bool ok = true;
-  for (std::size_t e = edge_count_at_constraint_.back(); ok && e < edges_.size(); ++e) {
-    ok = propagate_from({edges_[e].to}, {edges_[e].from}, id, &conflict);
-  }
+  // Each edge is checked for a cycle before it moves any bound (the check is cheaper than a
+  // propagation that runs round the cycle); the propagation's own contradiction tests stay
+  // as the safety net.
+  for (std::size_t e = first_edge_.back(); ok && e < edges_.size(); ++e)
+    ok = !closes_negative_cycle(e, &conflict) && propagate_edge(e, &conflict);
   if (!ok) {
     if (explain_) conflict = negative_cycle();  // with the new constraint still in
+    // The call's changes in reverse: every bound as it was before the call (the trail has
+    // only the first change of each since the latest mark, and those entries go too).
+    for (auto c = call_log_.rbegin(); c != call_log_.rend(); ++c)
+      (c->kind == Undo::kLatest ? latest_ : earliest_)[c->what] = c->old_value;
+    trail_.resize(before.trail);
+    const std::size_t latest_mark = latest_mark_trail_;
     undo_to(before);
+    latest_mark_trail_ = latest_mark;  // `before` was no mark of the caller's
     constraints_.push_back({from, to, lb, ub, false});
+    first_edge_.push_back(kNoEdge);
     result.consistent = false;
     result.conflict = std::move(conflict);
     // The closing constraint first, then the rest of the cycle.
@@ -91,181 +134,174 @@ TemporalResult TemporalNetwork::add_constraint(TimepointId from, TimepointId to,
   return result;
 }
 
-// Incremental propagation (a FIFO label-correcting search from the changed timepoints). The
-// seeds are the endpoints of one new edge a->b: b's latest time and a's earliest time may
-// tighten through it. Any further tightening of a seed's own bound means a walk from the seed
-// back to itself of negative length, i.e. a negative cycle through the new edge; a latest time
-// below an earliest time is a negative cycle through the origin. Either way: inconsistent.
-bool TemporalNetwork::propagate_from(const std::vector<TimepointId>& seeds_latest,
-                                     const std::vector<TimepointId>& seeds_earliest,
-                                     TemporalConstraintId /*added*/,
-                                     std::vector<TemporalConstraintId>* conflict) {
-  const std::size_t n = earliest_.size();
-  std::vector<std::size_t> pred(n, SIZE_MAX);
-  std::vector<TemporalConstraintId> edge_constraint(edges_.size());
-  std::vector<TimepointId> edge_from(edges_.size()), edge_to(edges_.size());
-  auto fill_edge_tables = [&]() {
-    for (std::size_t e = 0; e < edges_.size(); ++e) {
-      edge_constraint[e] = edges_[e].constraint;
-      edge_from[e] = edges_[e].from;
-      edge_to[e] = edges_[e].to;
-    }
-  };
-  std::deque<TimepointId> queue;
-  std::vector<char> queued(n, 0);
-  // Latest times, forward along out-edges.
-  for (TimepointId seed : seeds_latest) {
-    // The seed is tightened through its in-edges first (the new edge among them).
-    for (std::size_t e : in_[seed]) {
-      const Edge& ed = edges_[e];
-      ++propagations_;
-      if (latest_[ed.from] >= kInfinity) continue;
-      Time v = latest_[ed.from] + ed.weight;
-      if (v < latest_[seed]) {
-        set_latest(seed, v);
-        pred[seed] = e;
-      }
-    }
-    if (latest_[seed] < earliest_[seed]) {
-      fill_edge_tables();
-      trace(pred, edge_constraint, seed, edge_from, n, conflict);
+void TemporalNetwork::enqueue(TimepointId t) {
+  if (book_[t].queued) return;
+  book_[t].queued = true;
+  queue_.push_back(t);
+}
+
+// Empties the queue; after a failed phase its pending entries still carry their flags.
+void TemporalNetwork::clear_queue() {
+  for (std::size_t i = queue_head_; i < queue_.size(); ++i) book_[queue_[i]].queued = false;
+  queue_.clear();
+  queue_head_ = 0;
+}
+
+// Walks this phase's predecessor links back from `start`, collecting constraint ids: the
+// path of tightenings that ended in the contradiction. Bounded by the timepoint count, and
+// stopped at a constraint met twice (the walk has gone round the cycle).
+void TemporalNetwork::trace_conflict(Phase phase, TimepointId start,
+                                     std::vector<TemporalConstraintId>* conflict) const {
+  TimepointId t = start;
+  for (std::size_t i = 0; i < earliest_.size(); ++i) {
+    const Bookkeeping& b = book_[t];
+    if (b.pred_stamp != stamp_ || b.pred_edge == kNoEdge) break;
+    const Edge& ed = edges_[b.pred_edge];
+    if (std::find(conflict->begin(), conflict->end(), ed.constraint) != conflict->end()) break;
+    conflict->push_back(ed.constraint);
+    t = phase == Phase::kLatest ? ed.from : ed.to;
+  }
+}
+
+// Incremental propagation of one new edge a->b (b - a <= w): b's latest time and a's earliest
+// time may tighten through it, and from there whatever depends on them (a FIFO
+// label-correcting search that visits only timepoints whose bound changes). Any further
+// tightening of the seed's own bound is a walk from the seed back to itself of negative
+// length, i.e. a negative cycle through the new edge (the network was consistent without
+// it); a latest time below an earliest time is a negative cycle through the origin. Either
+// way: inconsistent.
+bool TemporalNetwork::propagate_edge(std::size_t e, std::vector<TemporalConstraintId>* conflict) {
+  const Edge ed = edges_[e];
+  ++propagations_;
+  if (latest_[ed.from] < kInfinity && latest_[ed.from] + ed.weight < latest_[ed.to]) {
+    ++stamp_;
+    set_latest(ed.to, latest_[ed.from] + ed.weight);
+    book_[ed.to].pred_stamp = stamp_, book_[ed.to].pred_edge = e;
+    if (latest_[ed.to] < earliest_[ed.to]) {
+      trace_conflict(Phase::kLatest, ed.to, conflict);
       return false;
     }
-    queue.push_back(seed);
-    queued[seed] = 1;
-    while (!queue.empty()) {
-      TimepointId x = queue.front();
-      queue.pop_front();
-      queued[x] = 0;
-      if (latest_[x] >= kInfinity) continue;
-      for (std::size_t e : out_[x]) {
-        const Edge& ed = edges_[e];
-        ++propagations_;
-        Time v = latest_[x] + ed.weight;
-        if (v < latest_[ed.to]) {
-          set_latest(ed.to, v);
-          pred[ed.to] = e;
-          if (ed.to == seed || v < earliest_[ed.to]) {
-            fill_edge_tables();
-            trace(pred, edge_constraint, ed.to, edge_from, n, conflict);
-            return false;
-          }
-          if (!queued[ed.to]) {
-            queued[ed.to] = 1;
-            queue.push_back(ed.to);
-          }
-        }
-      }
-    }
+    enqueue(ed.to);
+    if (!run_queue(Phase::kLatest, ed.to, conflict)) return false;
   }
-  // Earliest times, backward along in-edges: from <= to - weight... i.e. for edge a->b with
-  // weight w (b - a <= w), earliest(a) >= earliest(b) - w.
-  std::fill(pred.begin(), pred.end(), SIZE_MAX);
-  for (TimepointId seed : seeds_earliest) {
-    for (std::size_t e : out_[seed]) {
-      const Edge& ed = edges_[e];
-      ++propagations_;
-      Time v = earliest_[ed.to] - ed.weight;
-      if (v > earliest_[seed]) {
-        set_earliest(seed, v);
-        pred[seed] = e;
-      }
-    }
-    if (earliest_[seed] > latest_[seed]) {
-      fill_edge_tables();
-      trace(pred, edge_constraint, seed, edge_to, n, conflict);
+  ++propagations_;
+  if (earliest_[ed.to] - ed.weight > earliest_[ed.from]) {
+    ++stamp_;
+    set_earliest(ed.from, earliest_[ed.to] - ed.weight);
+    book_[ed.from].pred_stamp = stamp_, book_[ed.from].pred_edge = e;
+    if (earliest_[ed.from] > latest_[ed.from]) {
+      trace_conflict(Phase::kEarliest, ed.from, conflict);
       return false;
     }
-    queue.push_back(seed);
-    queued[seed] = 1;
-    while (!queue.empty()) {
-      TimepointId x = queue.front();
-      queue.pop_front();
-      queued[x] = 0;
-      for (std::size_t e : in_[x]) {
-        const Edge& ed = edges_[e];
-        ++propagations_;
-        Time v = earliest_[x] - ed.weight;
-        if (v > earliest_[ed.from]) {
-          set_earliest(ed.from, v);
-          pred[ed.from] = e;
-          if (ed.from == seed || v > latest_[ed.from]) {
-            fill_edge_tables();
-            trace(pred, edge_constraint, ed.from, edge_to, n, conflict);
-            return false;
-          }
-          if (!queued[ed.from]) {
-            queued[ed.from] = 1;
-            queue.push_back(ed.from);
-          }
-        }
+    enqueue(ed.from);
+    if (!run_queue(Phase::kEarliest, ed.from, conflict)) return false;
+  }
+  return true;
+}
+
+// Runs the queue to a fixed point. Latest times flow forward along out-arcs
+// (latest(y) <= latest(x) + w), earliest times backward along in-arcs
+// (earliest(x) >= earliest(y) - w). `seed` is the timepoint the new edge tightened (a further
+// tightening of it is a negative cycle), kNoTimepoint when there is none (recompute()).
+bool TemporalNetwork::run_queue(Phase phase, TimepointId seed,
+                                std::vector<TemporalConstraintId>* conflict) {
+  const bool forward = phase == Phase::kLatest;
+  while (queue_head_ < queue_.size()) {
+    const TimepointId x = queue_[queue_head_++];
+    book_[x].queued = false;
+    if (forward && latest_[x] >= kInfinity) continue;
+    for (const Arc& arc : forward ? out_[x] : in_[x]) {
+      ++propagations_;
+      const TimepointId y = arc.other;
+      bool contradiction;
+      if (forward) {
+        const Time v = latest_[x] + arc.weight;
+        if (v >= latest_[y]) continue;
+        set_latest(y, v);
+        contradiction = y == seed || v < earliest_[y];
+      } else {
+        const Time v = earliest_[x] - arc.weight;
+        if (v <= earliest_[y]) continue;
+        set_earliest(y, v);
+        contradiction = y == seed || v > latest_[y];
       }
+      book_[y].pred_stamp = stamp_, book_[y].pred_edge = arc.edge;
+      if (contradiction) {
+        trace_conflict(phase, y, conflict);
+        clear_queue();
+        return false;
+      }
+      enqueue(y);
     }
   }
+  clear_queue();
   return true;
 }
 
 void TemporalNetwork::undo_to(const Mark& m) {
   while (trail_.size() > m.trail) {
-    const BoundChange& c = trail_.back();
-    (c.latest ? latest_ : earliest_)[c.t] = c.old_value;
+    const TrailEntry& c = trail_.back();
+    switch (c.kind) {
+      case Undo::kLatest:
+        latest_[c.what] = c.old_value;
+        break;
+      case Undo::kEarliest:
+        earliest_[c.what] = c.old_value;
+        break;
+      case Undo::kRemoval:
+        constraints_[c.what].active = true;
+        for (std::size_t e = first_edge_[c.what];
+             e < edges_.size() && edges_[e].constraint == c.what; ++e)
+          add_arcs(e);
+        break;
+    }
     trail_.pop_back();
   }
   while (constraints_.size() > m.constraints) {
-    if (constraints_.back().active) {
-      // Active constraints were added last, their edges are at the ends of the lists.
-      std::size_t first = edge_count_at_constraint_.back();
-      edge_count_at_constraint_.pop_back();
-      while (edges_.size() > first) {
-        const Edge& e = edges_.back();
-        out_[e.from].pop_back();
-        in_[e.to].pop_back();
+    const TemporalConstraintId id = constraints_.size() - 1;
+    if (first_edge_[id] != kNoEdge) {
+      // Its edges are the last ones; a removed constraint's arcs are already out of the lists.
+      const bool in_lists = constraints_[id].active;
+      while (edges_.size() > first_edge_[id]) {
+        if (in_lists) erase_arcs(edges_.size() - 1);
         edges_.pop_back();
       }
     }
+    first_edge_.pop_back();
     constraints_.pop_back();
   }
   earliest_.resize(m.timepoints);
   latest_.resize(m.timepoints);
   out_.resize(m.timepoints);
   in_.resize(m.timepoints);
+  book_.resize(m.timepoints);
+  // Bounds changed from here on are trailed again (the caller may undo to m once more).
+  latest_mark_trail_ = m.trail;
 }
 
 void TemporalNetwork::remove_constraint(TemporalConstraintId id) {
   if (id >= constraints_.size() || !constraints_[id].active) return;
   constraints_[id].active = false;
-  for (auto& lists : {&out_, &in_}) {
-    for (auto& list : *lists) {
-      list.erase(std::remove_if(list.begin(), list.end(),
-                                [&](std::size_t e) { return edges_[e].constraint == id; }),
-                 list.end());
-    }
-  }
+  for (std::size_t e = first_edge_[id]; e < edges_.size() && edges_[e].constraint == id; ++e)
+    erase_arcs(e);
+  trail_.push_back({id, 0, Undo::kRemoval});
   recompute();
+  call_log_.clear();  // no rollback of a removal
 }
 
+// All bounds from scratch: the network was consistent with the removed constraint, so it is
+// without it, and a label-correcting search seeded with every timepoint terminates.
 void TemporalNetwork::recompute() {
   for (TimepointId t = 0; t < earliest_.size(); ++t) {
-    Time e = 0, l = t == origin() ? 0 : horizon_;
-    if (earliest_[t] != e) set_earliest(t, e);
+    const Time l = t == origin() ? 0 : horizon_;
+    if (earliest_[t] != 0) set_earliest(t, 0);
     if (latest_[t] != l) set_latest(t, l);
   }
-  // The network was consistent with the removed constraint, so it is without it: plain
-  // label-correcting passes from every timepoint terminate.
-  bool changed = true;
-  while (changed) {
-    changed = false;
-    for (const Edge& ed : edges_) {
-      if (!constraints_[ed.constraint].active) continue;
-      if (latest_[ed.from] < kInfinity && latest_[ed.from] + ed.weight < latest_[ed.to]) {
-        set_latest(ed.to, latest_[ed.from] + ed.weight);
-        changed = true;
-      }
-      if (earliest_[ed.to] - ed.weight > earliest_[ed.from]) {
-        set_earliest(ed.from, earliest_[ed.to] - ed.weight);
-        changed = true;
-      }
-    }
+  std::vector<TemporalConstraintId> unused;
+  for (Phase phase : {Phase::kLatest, Phase::kEarliest}) {
+    ++stamp_;
+    for (TimepointId t = 0; t < earliest_.size(); ++t) enqueue(t);
+    run_queue(phase, kNoTimepoint, &unused);
   }
 }
 
@@ -349,8 +385,8 @@ Time TemporalNetwork::shortest_distance(TimepointId from, TimepointId to, Time c
     if (x == to) return d - latest_[from] + latest_[to];
     if (d > reduced_cutoff) return cutoff + 1;
     done[x] = 1;
-    for (std::size_t e : out_[x])
-      if (!relax(x, edges_[e].to, edges_[e].weight)) return shortest_distances(from)[to];
+    for (const Arc& arc : out_[x])
+      if (!relax(x, arc.other, arc.weight)) return shortest_distances(from)[to];
     if (x != origin()) relax(x, origin(), 0);
     if (x == origin())
       for (TimepointId t = 1; t < n; ++t) relax(x, t, horizon_);
@@ -377,7 +413,7 @@ std::vector<Time> TemporalNetwork::shortest_distances(TimepointId from) const {
     TimepointId x = queue.front();
     queue.pop_front();
     queued[x] = 0;
-    for (std::size_t e : out_[x]) relax(edges_[e].to, dist[x] + edges_[e].weight);
+    for (const Arc& arc : out_[x]) relax(arc.other, dist[x] + arc.weight);
     if (x != origin()) relax(origin(), dist[x]);
     if (x == origin() && horizon_ < kInfinity)
       for (TimepointId t = 1; t < earliest_.size(); ++t) relax(t, dist[x] + horizon_);

@@ -9,13 +9,24 @@
 // constraint that closes the cycle is the one whose addition fails (the paper's "inconsistency
 // detected at the constraint that closes it"), at no cost beyond the propagation itself.
 //
-// Undo: every change (timepoint, constraint, bound) is on a trail; undo_to(mark) restores the
-// network exactly as it was at mark(), which is what a chronological search engine needs.
-// remove_constraint() takes out any constraint (not only the last) and recomputes the bounds.
+// Cost of an added constraint (issue 29): in proportion to the bounds it changes and the arcs
+// leaving the changed timepoints, never to the network's size. The propagation's queue,
+// predecessor links and flags are kept between calls (grown with the timepoints, never
+// cleared wholesale: predecessor links carry the number of the propagation that wrote them).
+//
+// Undo: every change (timepoint, constraint, bound, removal) is on a trail; undo_to(mark)
+// restores the network exactly as it was at mark(), which is what a chronological search
+// engine needs. A bound is trailed once after each mark (its value at the mark is all an undo
+// needs): a chain appended without marks, whose every link moves the latest time of every
+// timepoint before it, keeps a trail as long as the chain, not its square. A failed
+// add_constraint() rolls back from its own log of the call's changes.
+// remove_constraint() takes out any constraint (not only the last) and recomputes all bounds
+// (a whole-network pass: removal is rare, no search uses it).
 #include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace autonomy::planner {
@@ -53,10 +64,12 @@ class TemporalNetwork {
 
   // Adds lb <= to - from <= ub (lb may be -kInfinity, ub kInfinity). On an inconsistency the
   // constraint is NOT kept and the bounds are as before the call; the id is still consumed
-  // (ids are never reused). Requires lb <= ub (else inconsistent at once).
+  // (ids are never reused). Requires lb <= ub (else inconsistent at once). Throws
+  // std::out_of_range when from or to is not a timepoint of the network.
   [[nodiscard]] TemporalResult add_constraint(TimepointId from, TimepointId to, Time lb, Time ub,
                                               TemporalConstraintId* id = nullptr);
-  // Takes out any active constraint and recomputes all bounds (Bellman-Ford from the origin).
+  // Takes out any active constraint and recomputes all bounds (label-correcting from every
+  // timepoint); undo_to() a mark taken before puts it back.
   void remove_constraint(TemporalConstraintId id);
 
   TimeBounds bounds(TimepointId t) const { return {earliest_[t], latest_[t]}; }
@@ -86,7 +99,12 @@ class TemporalNetwork {
   struct Mark {
     std::size_t trail, timepoints, constraints;
   };
-  Mark mark() const { return {trail_.size(), earliest_.size(), constraints_.size()}; }
+  // Const for its callers, though it notes the trail's length: bounds changed after the
+  // latest mark are trailed once.
+  Mark mark() const {
+    latest_mark_trail_ = trail_.size();
+    return {trail_.size(), earliest_.size(), constraints_.size()};
+  }
   void undo_to(const Mark& m);
 
   std::size_t propagations() const { return propagations_; }
@@ -104,28 +122,74 @@ class TemporalNetwork {
     Time weight;
     TemporalConstraintId constraint;
   };
-  struct BoundChange {
-    TimepointId t;
-    bool latest;  // which bound changed
-    Time old_value;
+  // An edge as its endpoints' adjacency lists hold it: the weight inline, so a relaxation
+  // reads one list and no edge table.
+  struct Arc {
+    TimepointId other;  // out-list: the edge's head; in-list: its tail
+    Time weight;
+    std::size_t edge;
   };
-  bool propagate_from(const std::vector<TimepointId>& seeds_latest,
-                      const std::vector<TimepointId>& seeds_earliest, TemporalConstraintId added,
-                      std::vector<TemporalConstraintId>* conflict);
+  // One trail entry: a bound's old value, or a constraint taken out by remove_constraint().
+  enum class Undo : std::uint8_t { kLatest, kEarliest, kRemoval };
+  struct TrailEntry {
+    std::size_t what;  // timepoint, or constraint for kRemoval
+    Time old_value;
+    Undo kind;
+  };
+  // Where the latest phase walks (out-arcs, tightening latest times) and where the earliest
+  // phase walks (in-arcs, raising earliest times).
+  enum class Phase : std::uint8_t { kLatest, kEarliest };
+
+  bool closes_negative_cycle(std::size_t edge, std::vector<TemporalConstraintId>* conflict);
+  void explain_latest(TimepointId t, std::vector<TemporalConstraintId>* conflict) const;
+  void explain_earliest(TimepointId t, std::vector<TemporalConstraintId>* conflict) const;
+  bool propagate_edge(std::size_t edge, std::vector<TemporalConstraintId>* conflict);
+  bool run_queue(Phase phase, TimepointId seed, std::vector<TemporalConstraintId>* conflict);
+  void enqueue(TimepointId t);
+  void clear_queue();
+  void trace_conflict(Phase phase, TimepointId start,
+                      std::vector<TemporalConstraintId>* conflict) const;
   void set_latest(TimepointId t, Time v);
   void set_earliest(TimepointId t, Time v);
+  void add_arcs(std::size_t edge);
+  void erase_arcs(std::size_t edge);
   void recompute();
   std::vector<TemporalConstraintId> negative_cycle() const;
+  void check_timepoint(TimepointId t, const char* what) const;
   bool explain_ = false;
 
   Time horizon_;
   std::vector<Time> earliest_, latest_;
-  std::vector<std::vector<std::size_t>> out_, in_;  // edge indices
+  std::vector<std::vector<Arc>> out_, in_;
   std::vector<Edge> edges_;
   std::vector<Constraint> constraints_;
-  std::vector<BoundChange> trail_;
-  std::vector<std::size_t> edge_count_at_constraint_;  // edges_.size() before constraint i
+  std::vector<std::size_t> first_edge_;  // per constraint: its first edge, kNoEdge if none
+  std::vector<TrailEntry> trail_;
   std::size_t propagations_ = 0;
+
+  // The latest mark's trail length (also the target of the latest undo): a bound with a
+  // trail entry at or after it needs no other.
+  mutable std::size_t latest_mark_trail_ = 0;
+  // Every bound change of the current add_constraint(), in order, to roll a failure back.
+  std::vector<TrailEntry> call_log_;
+
+  // Per-timepoint bookkeeping, kept between calls (never cleared wholesale).
+  static constexpr std::size_t kNoEdge = static_cast<std::size_t>(-1);
+  static constexpr std::size_t kNoEntry = static_cast<std::size_t>(-1);
+  static constexpr TimepointId kNoTimepoint = static_cast<TimepointId>(-1);
+  struct Bookkeeping {
+    std::uint64_t pred_stamp = 0;  // the search or phase that set pred_edge; older is stale
+    std::size_t pred_edge = kNoEdge;
+    Time distance = 0;  // from the cycle check's start, when pred_stamp is current
+    std::size_t latest_entry = kNoEntry, earliest_entry = kNoEntry;  // newest trail entries
+    bool queued = false;
+  };
+  bool trailed_since_mark(std::size_t entry, TimepointId t, Undo kind) const;
+  std::vector<Bookkeeping> book_;
+  std::uint64_t stamp_ = 0;
+  std::vector<TimepointId> queue_;  // FIFO: entries from queue_head_ on are pending
+  std::size_t queue_head_ = 0;
+  std::vector<std::tuple<Time, Time, TimepointId>> heap_;  // the cycle check's (f, g, node)
 };
 
 }  // namespace autonomy::planner

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <random>
+#include <stdexcept>
+#include <string>
 
 namespace autonomy::planner {
 namespace {
@@ -184,6 +186,246 @@ TEST(TemporalNetwork, AgreesWithFloydWarshallOnRandomNetworks) {
   }
   EXPECT_GT(rejected, 10);
   EXPECT_GT(accepted, 100);
+}
+
+// Issue 29: the incremental network against a from-scratch recomputation, over many
+// insertions, undos and removals on random networks.
+struct ReferenceBounds {
+  bool consistent = true;
+  std::vector<Time> earliest, latest;
+};
+
+// Bellman-Ford from the origin over the active constraints (plus `extra`, a candidate), with
+// the implicit 0 <= t <= horizon edges: the bounds, or inconsistent on a negative cycle.
+ReferenceBounds recompute_from_scratch(const TemporalNetwork& tn,
+                                       const TemporalNetwork::Constraint* extra = nullptr) {
+  struct Arc {
+    std::size_t from, to;
+    Time w;
+  };
+  const std::size_t n = tn.timepoint_count();
+  std::vector<Arc> arcs;
+  auto add = [&](const TemporalNetwork::Constraint& c) {
+    if (c.ub < kInfinity) arcs.push_back({c.from, c.to, c.ub});
+    if (c.lb > -kInfinity) arcs.push_back({c.to, c.from, -c.lb});
+  };
+  for (const auto& c : tn.constraints())
+    if (c.active) add(c);
+  if (extra) add(*extra);
+  for (std::size_t t = 1; t < n; ++t) {
+    if (tn.horizon() < kInfinity) arcs.push_back({0, t, tn.horizon()});
+    arcs.push_back({t, 0, 0});
+  }
+  // dist[x]: shortest path origin -> x (latest); back[x]: shortest path x -> origin (-earliest).
+  std::vector<Time> dist(n, kInfinity), back(n, kInfinity);
+  dist[0] = back[0] = 0;
+  for (std::size_t round = 0; round <= n; ++round) {
+    bool changed = false;
+    for (const Arc& a : arcs) {
+      if (dist[a.from] < kInfinity && dist[a.from] + a.w < dist[a.to])
+        dist[a.to] = dist[a.from] + a.w, changed = true;
+      if (back[a.to] < kInfinity && back[a.to] + a.w < back[a.from])
+        back[a.from] = back[a.to] + a.w, changed = true;
+    }
+    if (!changed) {
+      ReferenceBounds r;
+      r.latest = dist;
+      for (Time b : back) r.earliest.push_back(-b);
+      return r;
+    }
+  }
+  return {false, {}, {}};
+}
+
+void expect_bounds_as_recomputed(const TemporalNetwork& tn, const std::string& where) {
+  const ReferenceBounds ref = recompute_from_scratch(tn);
+  ASSERT_TRUE(ref.consistent) << where;
+  for (TimepointId t = 0; t < tn.timepoint_count(); ++t) {
+    ASSERT_EQ(tn.latest(t), ref.latest[t]) << where << " t" << t;
+    ASSERT_EQ(tn.earliest(t), ref.earliest[t]) << where << " t" << t;
+  }
+}
+
+TEST(TemporalNetwork, IncrementalBoundsEqualRecomputationOverInsertionsUndosAndRemovals) {
+  std::mt19937 rng(29);
+  int added = 0, rejected = 0, undos = 0, removals = 0;
+  for (int round = 0; round < 12; ++round) {
+    TemporalNetwork tn(round % 3 == 0 ? kInfinity : 500);
+    const int n = 20 + 5 * round;
+    for (int i = 0; i < n; ++i) tn.add_timepoint();
+    std::vector<TemporalNetwork::Mark> marks{tn.mark()};
+    std::uniform_int_distribution<int> op(0, 19), lb(-20, 60), width(0, 80);
+    for (int step = 0; step < 400; ++step) {
+      const std::string where = "round " + std::to_string(round) + " step " + std::to_string(step);
+      const int o = op(rng);
+      if (o == 0 && marks.size() > 1) {
+        // Back to a random earlier mark (a search backtracking several levels).
+        const std::size_t k = std::uniform_int_distribution<std::size_t>(0, marks.size() - 1)(rng);
+        tn.undo_to(marks[k]);
+        marks.resize(k + 1);
+        ++undos;
+      } else if (o == 1) {
+        std::vector<TemporalConstraintId> active;
+        for (TemporalConstraintId c = 0; c < tn.constraints().size(); ++c)
+          if (tn.constraints()[c].active) active.push_back(c);
+        if (active.empty()) continue;
+        tn.remove_constraint(
+            active[std::uniform_int_distribution<std::size_t>(0, active.size() - 1)(rng)]);
+        ++removals;
+      } else if (o == 2) {
+        marks.push_back(tn.mark());
+        tn.add_timepoint();
+      } else {
+        const TimepointId a = std::uniform_int_distribution<TimepointId>(
+                              0, tn.timepoint_count() - 1)(rng),
+                          b = std::uniform_int_distribution<TimepointId>(
+                              0, tn.timepoint_count() - 1)(rng);
+        if (a == b) continue;
+        const Time l = lb(rng), u = l + width(rng);
+        const TemporalNetwork::Constraint candidate{a, b, l, u, true};
+        const bool expected = recompute_from_scratch(tn, &candidate).consistent;
+        if (o % 4 == 0) marks.push_back(tn.mark());
+        TemporalConstraintId id;
+        const TemporalResult r = tn.add_constraint(a, b, l, u, &id);
+        ASSERT_EQ(bool(r), expected) << where;
+        if (r) {
+          ++added;
+        } else {
+          ++rejected;
+          ASSERT_FALSE(r.conflict.empty());
+          EXPECT_EQ(r.conflict.front(), id) << where;  // detected at the closing constraint
+        }
+      }
+      expect_bounds_as_recomputed(tn, where);
+      if (::testing::Test::HasFatalFailure()) return;
+    }
+  }
+  EXPECT_GT(added, 2000);
+  EXPECT_GT(rejected, 100);
+  EXPECT_GT(undos, 50);
+  EXPECT_GT(removals, 100);
+}
+
+TEST(TemporalNetwork, CycleIsDetectedAtTheEdgeThatClosesItWithTheConstraintsOfTheCycle) {
+  for (bool explain : {false, true}) {
+    TemporalNetwork tn(10000);
+    tn.set_explain_conflicts(explain);
+    std::vector<TimepointId> ring;
+    for (int i = 0; i < 6; ++i) ring.push_back(tn.add_timepoint());
+    // Bystanders on both sides of the ring, which the conflict must not name.
+    const TimepointId before = tn.add_timepoint(), after = tn.add_timepoint();
+    TemporalConstraintId side1, side2;
+    ASSERT_TRUE(tn.add_constraint(before, ring[0], 5, 100, &side1));
+    ASSERT_TRUE(tn.add_constraint(ring[5], after, 5, 100, &side2));
+    std::vector<TemporalConstraintId> cycle;
+    for (int i = 0; i + 1 < 6; ++i) {
+      TemporalConstraintId c;
+      ASSERT_TRUE(tn.add_constraint(ring[i], ring[i + 1], 10, 20, &c));
+      cycle.push_back(c);
+    }
+    // ring[5] - ring[0] is in [50, 100]; ring[5] - ring[0] <= 40 closes a negative cycle.
+    const auto mark = tn.mark();
+    const auto bounds_before = tn.bounds(ring[3]);
+    TemporalConstraintId closing;
+    const TemporalResult r = tn.add_constraint(ring[0], ring[5], 0, 40, &closing);
+    ASSERT_FALSE(r);
+    EXPECT_EQ(r.conflict.front(), closing);
+    std::vector<TemporalConstraintId> got(r.conflict.begin() + 1, r.conflict.end());
+    std::sort(got.begin(), got.end());
+    EXPECT_EQ(got, cycle) << "explain " << explain;
+    // Nothing of the failed attempt is left, and the network goes on.
+    EXPECT_EQ(tn.mark().trail, mark.trail);
+    EXPECT_EQ(tn.bounds(ring[3]).earliest, bounds_before.earliest);
+    EXPECT_EQ(tn.bounds(ring[3]).latest, bounds_before.latest);
+    EXPECT_TRUE(tn.add_constraint(ring[0], ring[5], 0, 50));
+    EXPECT_EQ(tn.shortest_distance(ring[0], ring[5]), 50);
+    expect_bounds_as_recomputed(tn, "after the cycle");
+  }
+}
+
+TEST(TemporalNetwork, AddingAConstraintVisitsOnlyWhatItChanges) {
+  // A big network, then a constraint between two fresh timepoints and one that tightens a
+  // short chain: the relaxations counted stay at the size of the change.
+  TemporalNetwork tn(1000000);
+  std::mt19937 rng(3);
+  for (int i = 1; i <= 20000; ++i) {
+    tn.add_timepoint();
+    if (i > 1) {
+      ASSERT_TRUE(tn.add_constraint(std::uniform_int_distribution<TimepointId>(1, i - 1)(rng), i,
+                                    1, 50));
+    }
+  }
+  const TimepointId a = tn.add_timepoint(), b = tn.add_timepoint(), c = tn.add_timepoint();
+  const std::size_t p0 = tn.propagations();
+  ASSERT_TRUE(tn.add_constraint(a, b, 10, 20));
+  EXPECT_LE(tn.propagations() - p0, 10u);
+  ASSERT_TRUE(tn.add_constraint(b, c, 10, 20));
+  const std::size_t p1 = tn.propagations();
+  const auto m = tn.mark();
+  ASSERT_TRUE(tn.add_constraint(TemporalNetwork::origin(), c, 0, 100));
+  // a, b and c each get a new latest time; each has at most two arcs to look along.
+  EXPECT_EQ(tn.mark().trail - m.trail, 3u);
+  EXPECT_LE(tn.propagations() - p1, 12u);
+  EXPECT_EQ(tn.latest(a), 80);
+}
+
+TEST(TemporalNetwork, EachBoundIsTrailedOnceAfterAMark) {
+  // Every link of a chain under a horizon moves the latest time of every timepoint before it:
+  // the trail keeps the first change of each bound after the mark, not all of them.
+  TemporalNetwork tn(1000000);
+  const TimepointId first = tn.add_timepoint();
+  ASSERT_TRUE(tn.add_constraint(TemporalNetwork::origin(), first, 0, 10));
+  const auto m = tn.mark();
+  const auto first_bounds = tn.bounds(first);
+  TimepointId previous = first;
+  const std::size_t length = 2000;
+  for (std::size_t i = 0; i < length; ++i) {
+    const TimepointId next = tn.add_timepoint();
+    ASSERT_TRUE(tn.add_constraint(previous, next, 100, kInfinity));
+    previous = next;
+  }
+  EXPECT_EQ(tn.latest(first), 10);
+  EXPECT_EQ(tn.latest(previous - 1), 1000000 - 100);
+  EXPECT_LE(tn.mark().trail - m.trail, 2 * length + 2);
+  expect_bounds_as_recomputed(tn, "chain");
+  // A link the horizon cannot hold fails and leaves every bound as it was.
+  const auto before = tn.bounds(first + 1);
+  EXPECT_FALSE(tn.add_constraint(previous, tn.add_timepoint(), 1000000, kInfinity));
+  EXPECT_EQ(tn.bounds(first + 1).latest, before.latest);
+  expect_bounds_as_recomputed(tn, "after the failed link");
+  tn.undo_to(m);
+  EXPECT_EQ(tn.timepoint_count(), 2u);
+  EXPECT_EQ(tn.bounds(first).earliest, first_bounds.earliest);
+  EXPECT_EQ(tn.bounds(first).latest, first_bounds.latest);
+}
+
+TEST(TemporalNetwork, RemovalIsUndoneByTheMarkBeforeIt) {
+  TemporalNetwork tn(100);
+  const TimepointId a = tn.add_timepoint(), b = tn.add_timepoint();
+  TemporalConstraintId first, second;
+  ASSERT_TRUE(tn.add_constraint(TemporalNetwork::origin(), a, 20, 30, &first));
+  const auto m = tn.mark();
+  ASSERT_TRUE(tn.add_constraint(a, b, 5, 5, &second));
+  tn.remove_constraint(first);
+  EXPECT_EQ(tn.earliest(b), 5);
+  EXPECT_FALSE(tn.constraints()[first].active);
+  tn.undo_to(m);
+  EXPECT_TRUE(tn.constraints()[first].active);
+  EXPECT_EQ(tn.constraints().size(), 1u);
+  EXPECT_EQ(tn.earliest(a), 20);
+  EXPECT_EQ(tn.latest(a), 30);
+  // The restored constraint propagates again.
+  ASSERT_TRUE(tn.add_constraint(a, b, 5, 5));
+  EXPECT_EQ(tn.earliest(b), 25);
+  EXPECT_FALSE(tn.add_constraint(TemporalNetwork::origin(), b, 0, 10));
+}
+
+TEST(TemporalNetwork, UnknownTimepointsAreRefused) {
+  TemporalNetwork tn(100);
+  const TimepointId a = tn.add_timepoint();
+  EXPECT_THROW((void)tn.add_constraint(a, a + 1, 0, 1), std::out_of_range);
+  EXPECT_THROW((void)tn.add_constraint(a + 5, a, 0, 1), std::out_of_range);
+  EXPECT_TRUE(tn.constraints().empty());
 }
 
 }  // namespace
