@@ -1,45 +1,26 @@
 #include "dispatchable_network.hpp"
 
+#include "dispatchable_graph.hpp"
+
 #include <algorithm>
-#include <numeric>
+#include <array>
+#include <cstdint>
+#include <limits>
 #include <queue>
 #include <unordered_map>
 
 namespace autonomy::executive {
 namespace {
 
-constexpr Time kNone = kUnbounded;  // no path in the distance matrix
-
 bool finite(Time t) {
   return t < kUnbounded && t > -kUnbounded;
 }
 
-struct Arc {
-  std::size_t to;
-  Time weight;
-};
-
-// The plan's distance graph as it was written: a few edges per timepoint. Everything below
-// works on it instead of a dense matrix, so the closure costs n Dijkstra runs (Johnson), not
-// Floyd-Warshall's n^3: a 1,000-token plan has 2,001 timepoints.
-struct SparseGraph {
-  std::vector<std::vector<Arc>> out;
-
-  explicit SparseGraph(std::size_t n) : out(n) {}
-  void add(std::size_t from, std::size_t to, Time weight) {
-    for (Arc& a : out[from])
-      if (a.to == to) {
-        a.weight = std::min(a.weight, weight);
-        return;
-      }
-    out[from].push_back({to, weight});
-  }
-};
-
 // Bellman-Ford from a virtual source joined to every timepoint by a zero edge (queue-based).
 // Returns the potentials that make every edge weight non-negative, or the index of a
 // timepoint on a negative cycle.
-std::optional<std::vector<Time>> potentials(const SparseGraph& g, std::size_t* on_cycle) {
+std::optional<std::vector<Time>> potentials(const dispatchable_graph::SparseGraph& g,
+                                            std::size_t* on_cycle) {
   const std::size_t n = g.out.size();
   std::vector<Time> h(n, 0);
   std::vector<std::size_t> parent(n, SIZE_MAX), relaxations(n, 0);
@@ -50,7 +31,7 @@ std::optional<std::vector<Time>> potentials(const SparseGraph& g, std::size_t* o
     std::size_t u = work.front();
     work.pop();
     queued[u] = false;
-    for (const Arc& a : g.out[u]) {
+    for (const dispatchable_graph::Arc& a : g.out[u]) {
       if (h[u] + a.weight >= h[a.to]) continue;
       h[a.to] = h[u] + a.weight;
       parent[a.to] = u;
@@ -71,145 +52,282 @@ std::optional<std::vector<Time>> potentials(const SparseGraph& g, std::size_t* o
   return h;
 }
 
-// Row `source` of the closure: Dijkstra on the weights reweighted by the potentials.
-void shortest_row(const SparseGraph& g, const std::vector<Time>& h, std::size_t source,
-                  Time* row) {
+// Rigid classes: timepoints at a fixed distance from each other (D(x,y) + D(y,x) = 0). With
+// potentials h (every reduced weight w + h[u] - h[v] >= 0), x and y are rigid exactly when a
+// cycle of zero reduced weight joins them: the two shortest paths between them close a cycle of
+// weight 0, so every reduced weight on it is 0, and a zero-reduced cycle is a zero cycle. The
+// classes are the strongly connected components of the zero-reduced arcs (Tarjan). Tarjan ends a
+// component after every component it reaches, so numbering them backwards gives each zero arc
+// between two classes a lower class at its tail: class order is a topological order of the
+// zero arcs, which the per-class Dijkstra below breaks ties with.
+struct RigidClasses {
+  std::vector<std::uint32_t> of;  // timepoint -> class
+  std::size_t count = 0;
+};
+
+RigidClasses rigid_classes(const dispatchable_graph::SparseGraph& g, const std::vector<Time>& h) {
   const std::size_t n = g.out.size();
-  std::vector<Time> reduced(n, kNone);
-  using Entry = std::pair<Time, std::size_t>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> heap;
-  reduced[source] = 0;
-  heap.push({0, source});
-  while (!heap.empty()) {
-    auto [d, u] = heap.top();
-    heap.pop();
-    if (d != reduced[u]) continue;
-    for (const Arc& a : g.out[u]) {
-      Time nd = d + a.weight + h[u] - h[a.to];
-      if (nd < reduced[a.to]) {
-        reduced[a.to] = nd;
-        heap.push({nd, a.to});
-      }
-    }
-  }
-  for (std::size_t v = 0; v < n; ++v)
-    row[v] = reduced[v] == kNone ? kNone : reduced[v] - h[source] + h[v];
-}
-
-// Rigid classes: timepoints at a fixed distance from each other (D(x,y) + D(y,x) = 0). The
-// relation is an equivalence, and its classes are the strongly connected parts of every
-// shortest-path graph, which is what lets the filter below work on a DAG of classes.
-std::vector<std::size_t> rigid_classes(const std::vector<Time>& d, std::size_t n) {
-  std::vector<std::size_t> parent(n);
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](std::size_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
+  constexpr std::size_t kUnseen = SIZE_MAX;
+  std::vector<std::size_t> order(n, kUnseen), low(n, 0), stack;
+  std::vector<bool> on_stack(n, false);
+  std::vector<std::pair<std::size_t, std::size_t>> frames;  // timepoint, next arc
+  std::vector<std::size_t> component(n, 0);
+  std::size_t counter = 0, components = 0;
+  auto zero = [&](std::size_t u, const dispatchable_graph::Arc& a) {
+    return a.weight + h[u] - h[a.to] == 0;
   };
-  for (std::size_t x = 0; x < n; ++x)
-    for (std::size_t y = x + 1; y < n; ++y) {
-      Time xy = d[x * n + y], yx = d[y * n + x];
-      if (xy != kNone && yx != kNone && xy + yx == 0) parent[find(x)] = find(y);
+  for (std::size_t root = 0; root < n; ++root) {
+    if (order[root] != kUnseen) continue;
+    frames.push_back({root, 0});
+    order[root] = low[root] = counter++;
+    stack.push_back(root);
+    on_stack[root] = true;
+    while (!frames.empty()) {
+      auto& [u, next] = frames.back();
+      if (next < g.out[u].size()) {
+        const dispatchable_graph::Arc& a = g.out[u][next++];
+        if (!zero(u, a)) continue;
+        if (order[a.to] == kUnseen) {
+          order[a.to] = low[a.to] = counter++;
+          stack.push_back(a.to);
+          on_stack[a.to] = true;
+          frames.push_back({a.to, 0});
+        } else if (on_stack[a.to]) {
+          low[u] = std::min(low[u], order[a.to]);
+        }
+        continue;
+      }
+      std::size_t v = u;
+      frames.pop_back();
+      if (!frames.empty()) low[frames.back().first] = std::min(low[frames.back().first], low[v]);
+      if (low[v] != order[v]) continue;
+      std::size_t w;
+      do {
+        w = stack.back();
+        stack.pop_back();
+        on_stack[w] = false;
+        component[w] = components;
+      } while (w != v);
+      ++components;
     }
-  std::vector<std::size_t> cls(n);
-  for (std::size_t x = 0; x < n; ++x) cls[x] = find(x);
-  return cls;
+  }
+  RigidClasses r;
+  r.count = components;
+  r.of.resize(n);
+  for (std::size_t v = 0; v < n; ++v)
+    r.of[v] = static_cast<std::uint32_t>(components - 1 - component[v]);
+  return r;
 }
 
-// Which closure edges the triangle rule of Muscettola, Morris and Pollack removes:
-//  a non-negative A->C is dominated by a non-negative B->C, and a negative A->C by a negative
-//  A->B, where B lies on a shortest path from A to C (D(A,B) + D(B,C) = D(A,C)) and B is not
-//  rigidly linked to A or to C (two edges through a rigid middle can dominate each other;
-//  keeping both removes fewer edges, none wrongly).
-// Testing every middle B is n^3. Instead, per source A (negative edges) and per target C
-// (non-negative edges), flags are propagated along the tight edges of the sparse graph: a
-// timepoint learns whether a qualifying B outside its own rigid class precedes it on a shortest
-// path. Each flag changes at most twice, so a pass is O(edges) and the filter O(n * edges).
-class DominanceFilter {
- public:
-  DominanceFilter(const SparseGraph& g, const std::vector<Time>& d, std::size_t n)
-      : g_(g), d_(d), n_(n), cls_(rigid_classes(d, n)), in_(n) {
-    for (std::size_t u = 0; u < n; ++u)
-      for (const Arc& a : g.out[u]) in_[a.to].push_back({u, a.weight});
-    dominated_.assign(n * n, false);
-    for (std::size_t a = 0; a < n; ++a) negative_from(a);
-    for (std::size_t c = 0; c < n; ++c) non_negative_to(c);
+// The distance graph with every rigid class collapsed to one node and the weights reduced by
+// the potentials (all >= 0), parallel arcs merged. Since D(x,y) = D(rX,rY) - o_x + o_y for x in
+// class X at offset o_x = D(rX,x) = h[x] - h[rX] from its representative, every closure entry
+// is D(x,y) = R(X,Y) + h[y] - h[x], R the reduced distance between the classes: the closure
+// of the whole plan is the closure of this smaller graph.
+struct ClassGraph {
+  std::vector<std::size_t> first;  // CSR: arcs of class X are [first[X], first[X + 1])
+  std::vector<std::uint32_t> to;
+  std::vector<Time> weight;
+};
+
+ClassGraph class_graph(const dispatchable_graph::SparseGraph& g, const std::vector<Time>& h,
+                       const RigidClasses& rc) {
+  struct Entry {
+    std::uint32_t from, to;
+    Time weight;
+  };
+  std::vector<Entry> arcs;
+  for (std::size_t u = 0; u < g.out.size(); ++u)
+    for (const dispatchable_graph::Arc& a : g.out[u])
+      if (rc.of[u] != rc.of[a.to])
+        arcs.push_back({rc.of[u], rc.of[a.to], a.weight + h[u] - h[a.to]});
+  std::sort(arcs.begin(), arcs.end(), [](const Entry& x, const Entry& y) {
+    return x.from != y.from ? x.from < y.from : x.to != y.to ? x.to < y.to : x.weight < y.weight;
+  });
+  ClassGraph cg;
+  cg.first.assign(rc.count + 1, 0);
+  for (std::size_t i = 0; i < arcs.size(); ++i) {
+    if (i > 0 && arcs[i].from == arcs[i - 1].from && arcs[i].to == arcs[i - 1].to) continue;
+    ++cg.first[arcs[i].from + 1];
+    cg.to.push_back(arcs[i].to);
+    cg.weight.push_back(arcs[i].weight);
   }
-  bool dominated(std::size_t a, std::size_t c) const { return dominated_[a * n_ + c]; }
+  for (std::size_t x = 0; x < rc.count; ++x) cg.first[x + 1] += cg.first[x];
+  return cg;
+}
+
+// The triangle rule of Muscettola, Morris and Pollack, as the construction always applied it:
+// A->C (C not rigid with A) is dominated when some B, rigid with neither, lies on a shortest
+// path from A to C (D(A,B) + D(B,C) = D(A,C)) and either A->C >= 0 and B->C >= 0, or A->C < 0
+// and A->B < 0. In class terms (X, Y, Z the classes of A, C, B; R reduced distances) B lies on
+// a shortest path exactly when Z lies strictly inside a shortest class path from X to Y, and
+//   B->C >= 0  <=>  R(X,Z) + h[B] <= R(X,Y) + h[C],     A->B < 0  <=>  R(X,Z) + h[B] < h[A],
+// so both tests need only mu(X,Y) = min of R(X,Z) + min_{B in Z} h[B] over the classes Z inside
+// a shortest path from X to Y:
+//   A->C >= 0 is dominated  <=>  mu(X,Y) <= R(X,Y) + h[C],   A->C < 0  <=>  mu(X,Y) < h[A].
+// mu is carried along the shortest-path DAG by the Dijkstra from X itself (Tsamardinos,
+// Muscettola and Morris's predecessor-graph idea), which needs the classes taken from the queue
+// in a topological order of the tight arcs: by R, then by class number (an arc of positive
+// reduced weight raises R; those of zero weight go up in class number). Both go into one
+// integer key, K R + class with K >= classes, i.e. the arc weights K w + class(to) -
+// class(from), all >= 0; then a class's mu is complete when it leaves the queue. One Dijkstra
+// per rigid class, no n x n matrix.
+constexpr Time kNoMu = std::numeric_limits<Time>::max();
+__extension__ typedef unsigned __int128 Wide;  // keys too long for 64 bits
+
+// Monotone priority queue for Dijkstra's integer keys (radix heap, Ahuja, Mehlhorn, Orlin and
+// Tarjan 1990): an entry sits in the bucket of the highest bit where its key differs from the
+// last key taken; taking from an empty bucket 0 redistributes the first non-empty bucket.
+template <typename Key>
+class RadixQueue {
+ public:
+  void reset() { last_ = 0; }
+  bool empty() const {
+    for (const auto& b : buckets_)
+      if (!b.empty()) return false;
+    return true;
+  }
+  void push(Key key, std::uint32_t value) { buckets_[bucket(key)].push_back({key, value}); }
+  // Smallest key first; false when empty.
+  bool pop(Key* key, std::uint32_t* value) {
+    if (buckets_[0].empty()) {
+      std::size_t i = 1;
+      while (i < kBuckets && buckets_[i].empty()) ++i;
+      if (i == kBuckets) return false;
+      Key least = buckets_[i][0].first;
+      for (const auto& e : buckets_[i]) least = std::min(least, e.first);
+      last_ = least;
+      for (const auto& e : buckets_[i]) buckets_[bucket(e.first)].push_back(e);
+      buckets_[i].clear();
+    }
+    *key = buckets_[0].back().first;
+    *value = buckets_[0].back().second;
+    buckets_[0].pop_back();
+    return true;
+  }
 
  private:
-  Time D(std::size_t x, std::size_t y) const { return d_[x * n_ + y]; }
+  static constexpr std::size_t kBits = sizeof(Key) * 8, kBuckets = kBits + 1;
+  static std::size_t width(std::uint64_t v) {
+    return v == 0 ? 0 : 64 - static_cast<std::size_t>(__builtin_clzll(v));
+  }
+  std::size_t bucket(Key key) const {
+    const Key diff = key ^ last_;
+    if constexpr (sizeof(Key) > 8) {
+      const auto high = static_cast<std::uint64_t>(diff >> 64);
+      if (high != 0) return 64 + width(high);
+    }
+    return width(static_cast<std::uint64_t>(diff));
+  }
+  Key last_ = 0;
+  std::array<std::vector<std::pair<Key, std::uint32_t>>, kBuckets> buckets_;
+};
 
-  // Per timepoint: `self` = a qualifying B in its own class reaches it (through its class),
-  // `foreign` = a qualifying B of another class does. Propagated over `next`, the tight
-  // successors (forward from a source, or backward towards a target).
-  template <typename Tight, typename Flag>
-  void propagate(const std::vector<std::vector<Arc>>& adjacency, Tight tight, Flag flag) {
-    self_.assign(n_, false);
-    foreign_.assign(n_, false);
-    std::vector<std::size_t> work;
-    for (std::size_t v = 0; v < n_; ++v)
-      if (flag(v)) {
-        self_[v] = true;
-        work.push_back(v);
-      }
-    while (!work.empty()) {
-      std::size_t u = work.back();
-      work.pop_back();
-      for (const Arc& a : adjacency[u]) {
-        std::size_t v = a.to;
-        if (!tight(u, v, a.weight)) continue;
-        bool changed = false;
-        if (cls_[u] == cls_[v]) {
-          if (self_[u] && !self_[v]) self_[v] = changed = true;
-          if (foreign_[u] && !foreign_[v]) foreign_[v] = changed = true;
-        } else if ((self_[u] || foreign_[u]) && !foreign_[v]) {
-          foreign_[v] = changed = true;
+// One Dijkstra per source class over the class graph, keys of type Key (64 bits when K times
+// the longest possible distance fits, else 128).
+template <typename Key>
+class ClassRows {
+ public:
+  ClassRows(const ClassGraph& cg, std::vector<Time> min_h)
+      : dist(min_h.size()),
+        mu(min_h.size()),
+        cg_(cg),
+        min_h_(std::move(min_h)),
+        key_(min_h_.size()),
+        done_(min_h_.size()) {
+    shift_ = 0;
+    while ((std::size_t{1} << shift_) < min_h_.size()) ++shift_;
+    arc_key_.resize(cg.to.size());
+    for (std::uint32_t u = 0; u + 1 < cg.first.size(); ++u)
+      for (std::size_t i = cg.first[u]; i < cg.first[u + 1]; ++i)
+        arc_key_[i] = (static_cast<Key>(cg.weight[i]) << shift_) + Key{cg.to[i]} - Key{u};
+  }
+
+  // dist[Y] = R(X,Y) (kNoMu when unreachable), mu[Y] as above (kNoMu when no class inside).
+  void run(std::uint32_t x) {
+    const Key kUnreached = ~Key{0};
+    std::fill(key_.begin(), key_.end(), kUnreached);
+    std::fill(mu.begin(), mu.end(), kNoMu);
+    std::fill(done_.begin(), done_.end(), 0);
+    queue_.reset();
+    key_[x] = x;
+    queue_.push(key_[x], x);
+    Key kp;
+    std::uint32_t p;
+    while (queue_.pop(&kp, &p)) {
+      if (done_[p] || kp != key_[p]) continue;
+      done_[p] = 1;
+      const Time rp = static_cast<Time>((kp - p) >> shift_);
+      const Time carried = p == x ? kNoMu : std::min(mu[p], rp + min_h_[p]);
+      for (std::size_t i = cg_.first[p]; i < cg_.first[p + 1]; ++i) {
+        const std::uint32_t v = cg_.to[i];
+        const Key nk = kp + arc_key_[i];
+        if (nk < key_[v]) {
+          key_[v] = nk;
+          mu[v] = carried;
+          queue_.push(nk, v);
+        } else if (nk == key_[v] && carried < mu[v]) {
+          mu[v] = carried;
         }
-        if (changed) work.push_back(v);
+      }
+    }
+    for (std::size_t y = 0; y < dist.size(); ++y)
+      dist[y] = key_[y] == kUnreached ? kNoMu : static_cast<Time>((key_[y] - y) >> shift_);
+  }
+
+  std::vector<Time> dist, mu;
+
+ private:
+  const ClassGraph& cg_;
+  std::vector<Time> min_h_;
+  std::vector<Key> key_, arc_key_;
+  std::vector<char> done_;
+  std::size_t shift_ = 0;
+  RadixQueue<Key> queue_;
+};
+
+// Every closure edge A->C (finite distance), kept unless dominated (filter), into out[A] in
+// the order of C; the windows from the origin's row and column.
+template <typename Key>
+void closure_edges(const ClassGraph& cg, const RigidClasses& rc,
+                   const std::vector<std::vector<std::size_t>>& members, std::vector<Time> min_h,
+                   const std::vector<Time>& pot, bool filter, DispatchableNetwork* net,
+                   std::vector<std::vector<DistanceEdge>>* out) {
+  const std::size_t n = pot.size();
+  ClassRows<Key> rows(cg, std::move(min_h));
+  const std::uint32_t origin_class = rc.of[0];
+  for (std::uint32_t x = 0; x < rc.count; ++x) {
+    rows.run(x);
+    const std::vector<Time>& dist = rows.dist;
+    const std::vector<Time>& mu = rows.mu;
+    if (x == origin_class)
+      for (std::size_t c = 0; c < n; ++c)
+        if (dist[rc.of[c]] != kNoMu) net->latest[c] = dist[rc.of[c]] + pot[c] - pot[0];
+    for (std::size_t a : members[x]) {
+      if (dist[origin_class] != kNoMu) net->earliest[a] = -(dist[origin_class] + pot[0] - pot[a]);
+      const Time ha = pot[a];
+      std::vector<DistanceEdge>& list = (*out)[a];
+      for (std::size_t c = 0; c < n; ++c) {
+        const std::uint32_t y = rc.of[c];
+        const Time r = dist[y];
+        if (r == kNoMu || c == a) continue;
+        ++net->closed_edges;
+        const Time w = r + pot[c] - ha;
+        const bool dominated =
+            filter && y != x && mu[y] != kNoMu && (w >= 0 ? mu[y] <= r + pot[c] : mu[y] < ha);
+        if (!dominated) list.push_back({a, c, w});
       }
     }
   }
-
-  void negative_from(std::size_t a) {
-    bool any = false;
-    for (std::size_t c = 0; c < n_ && !any; ++c) any = c != a && D(a, c) < 0;
-    if (!any) return;
-    propagate(
-        g_.out,
-        [&](std::size_t u, std::size_t v, Time w) {
-          return D(a, u) != kNone && D(a, v) != kNone && D(a, u) + w == D(a, v);
-        },
-        [&](std::size_t b) { return D(a, b) < 0 && cls_[b] != cls_[a]; });
-    for (std::size_t c = 0; c < n_; ++c)
-      if (c != a && D(a, c) < 0 && foreign_[c]) dominated_[a * n_ + c] = true;
-  }
-
-  void non_negative_to(std::size_t c) {
-    // Backwards from C: an arc v->u of in_ stands for the plan's edge u->v.
-    propagate(
-        in_,
-        [&](std::size_t v, std::size_t u, Time w) {
-          return D(u, c) != kNone && D(v, c) != kNone && w + D(v, c) == D(u, c);
-        },
-        [&](std::size_t b) { return D(b, c) != kNone && D(b, c) >= 0 && cls_[b] != cls_[c]; });
-    for (std::size_t a = 0; a < n_; ++a)
-      if (a != c && D(a, c) != kNone && D(a, c) >= 0 && foreign_[a]) dominated_[a * n_ + c] = true;
-  }
-
-  const SparseGraph& g_;
-  const std::vector<Time>& d_;
-  std::size_t n_;
-  std::vector<std::size_t> cls_;
-  std::vector<std::vector<Arc>> in_;
-  std::vector<bool> dominated_, self_, foreign_;
-};
+}
 
 }  // namespace
 
-std::optional<DispatchableNetwork> make_dispatchable(const planner::FlexiblePlan& plan,
-                                                     std::string* error, bool filter) {
-  DispatchableNetwork net;
+namespace dispatchable_graph {
+
+std::optional<PlanGraph> plan_graph(const planner::FlexiblePlan& plan, DispatchableNetwork* out,
+                                    std::string* error) {
+  DispatchableNetwork& net = *out;
   const std::size_t n = 1 + 2 * plan.tokens.size();
   net.names.push_back("origin");
   net.token.push_back(SIZE_MAX);
@@ -260,23 +378,48 @@ std::optional<DispatchableNetwork> make_dispatchable(const planner::FlexiblePlan
                (h ? self_conflict : net.names[on_cycle]) + ")";
     return std::nullopt;
   }
-  std::vector<Time> d(n * n, kNone);
-  for (std::size_t a = 0; a < n; ++a) shortest_row(g, *h, a, &d[a * n]);
-  auto at = [&](std::size_t a, std::size_t b) { return d[a * n + b]; };
+  return PlanGraph{std::move(g), std::move(*h)};
+}
+
+}  // namespace dispatchable_graph
+
+std::optional<DispatchableNetwork> make_dispatchable(const planner::FlexiblePlan& plan,
+                                                     std::string* error, bool filter) {
+  DispatchableNetwork net;
+  auto pg = dispatchable_graph::plan_graph(plan, &net, error);
+  if (!pg) return std::nullopt;
+  const std::size_t n = net.names.size();
+  const dispatchable_graph::SparseGraph& g = pg->graph;
+  const std::vector<Time>& pot = pg->potentials;
+  const RigidClasses rc = rigid_classes(g, pot);
+  const ClassGraph cg = class_graph(g, pot, rc);
+  std::vector<Time> min_h(rc.count, kNoMu);
+  std::vector<std::vector<std::size_t>> members(rc.count);
+  for (std::size_t v = 0; v < n; ++v) {
+    min_h[rc.of[v]] = std::min(min_h[rc.of[v]], pot[v]);
+    members[rc.of[v]].push_back(v);
+  }
   net.earliest.assign(n, -kUnbounded);
   net.latest.assign(n, kUnbounded);
-  for (std::size_t a = 0; a < n; ++a) {
-    if (at(a, 0) != kNone) net.earliest[a] = -at(a, 0);
-    if (at(0, a) != kNone) net.latest[a] = at(0, a);
+  // Keys of 64 bits when K (2^shift >= classes) times the longest possible class distance, plus
+  // the class, stays below the 64-bit "unreached"; else 128.
+  std::size_t shift = 0;
+  while ((std::size_t{1} << shift) < rc.count) ++shift;
+  Wide longest = 0, heaviest = 0;
+  for (Time w : cg.weight) {
+    longest += static_cast<Wide>(w);
+    heaviest = std::max(heaviest, static_cast<Wide>(w));
   }
-  std::optional<DominanceFilter> dominance;
-  if (filter) dominance.emplace(g, d, n);
-  for (std::size_t a = 0; a < n; ++a)
-    for (std::size_t c = 0; c < n; ++c) {
-      if (a == c || at(a, c) == kNone) continue;
-      ++net.closed_edges;
-      if (!dominance || !dominance->dominated(a, c)) net.edges.push_back({a, c, at(a, c)});
-    }
+  longest = std::min(longest, heaviest * rc.count);
+  std::vector<std::vector<DistanceEdge>> out(n);
+  if (((longest + 1) << shift) + rc.count < Wide{std::numeric_limits<std::uint64_t>::max()})
+    closure_edges<std::uint64_t>(cg, rc, members, std::move(min_h), pot, filter, &net, &out);
+  else
+    closure_edges<Wide>(cg, rc, members, std::move(min_h), pot, filter, &net, &out);
+  std::size_t total = 0;
+  for (const auto& list : out) total += list.size();
+  net.edges.reserve(total);
+  for (const auto& list : out) net.edges.insert(net.edges.end(), list.begin(), list.end());
   return net;
 }
 

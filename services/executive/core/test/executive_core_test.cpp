@@ -3,6 +3,7 @@
 #include <random>
 #include <set>
 
+#include "dispatchable_every_timepoint.hpp"
 #include "executive.hpp"
 #include "mode_identification.hpp"
 #include "planner.hpp"
@@ -228,7 +229,7 @@ FlexiblePlan random_plan(std::mt19937* rng, int tokens) {
   return plan;
 }
 
-// The sparse construction (Johnson closure, dominance by flag propagation) keeps exactly the
+// The construction (one Dijkstra per rigid class, dominance carried along it) keeps exactly the
 // edges the n^3 triangle rule keeps, with the same weights and windows, and rejects exactly
 // the inconsistent plans.
 TEST(DispatchableNetwork, SameEdgesAndWindowsAsTheCubicConstructionOnRandomPlans) {
@@ -263,6 +264,181 @@ TEST(DispatchableNetwork, SameEdgesAndWindowsAsTheCubicConstructionOnRandomPlans
   // Both kinds of plan were met, so neither comparison is vacuous.
   EXPECT_GT(consistent, 100);
   EXPECT_GT(inconsistent, 10);
+}
+
+// Issue 28: the construction by rigid classes (one Dijkstra per class, dominance carried in
+// it) against the per-timepoint construction it replaced, on plans too large for the cubic
+// reference. Same edges in the same order, same weights, windows and closure size, or the same
+// refusal.
+void expect_same_network(const FlexiblePlan& plan, const std::string& what) {
+  for (bool filter : {true, false}) {
+    std::string error, old_error;
+    auto net = make_dispatchable(plan, &error, filter);
+    auto old = make_dispatchable_every_timepoint(plan, &old_error, filter);
+    ASSERT_EQ(net.has_value(), old.has_value()) << what << ": " << error << " / " << old_error;
+    if (!net) {
+      EXPECT_EQ(error, old_error) << what;
+      continue;
+    }
+    EXPECT_EQ(net->closed_edges, old->closed_edges) << what;
+    EXPECT_EQ(net->earliest, old->earliest) << what;
+    EXPECT_EQ(net->latest, old->latest) << what;
+    ASSERT_EQ(net->edges.size(), old->edges.size()) << what << " filter " << filter;
+    for (std::size_t i = 0; i < net->edges.size(); ++i) {
+      const DistanceEdge &a = net->edges[i], &b = old->edges[i];
+      ASSERT_TRUE(a.from == b.from && a.to == b.to && a.weight == b.weight)
+          << what << " filter " << filter << " edge " << i << ": " << net->names[a.from] << " -> "
+          << net->names[a.to] << " " << a.weight << " against " << old->names[b.from] << " -> "
+          << old->names[b.to] << " " << b.weight;
+    }
+  }
+}
+
+// Consistent by construction: every timepoint has a hidden time, every bound contains the
+// hidden difference; some links rigid (lb = ub), some one-sided, durations fixed or flexible,
+// timelines of meeting tokens. `scale` multiplies every time (large scales make the class
+// distances too long for 64-bit keys). With `break_it`, two rigid links A->B, B->C and a bound
+// on C->A that contradicts them: inconsistent.
+FlexiblePlan random_consistent_plan(std::mt19937* rng, int tokens, int lines, Time scale,
+                                    bool break_it) {
+  FlexiblePlan plan;
+  std::uniform_int_distribution<int> pick(0, 9);
+  std::vector<Time> start(tokens), end(tokens);
+  std::vector<Time> line_end(lines, 0);
+  for (int i = 0; i < tokens; ++i) {
+    int l = i % lines;
+    start[i] = line_end[l];
+    end[i] = start[i] + scale * (1 + pick(*rng));
+    line_end[l] = end[i];
+  }
+  Time horizon = *std::max_element(line_end.begin(), line_end.end()) + scale * 10;
+  plan.horizon = horizon;
+  auto slack = [&]() { return scale * pick(*rng); };
+  for (int i = 0; i < tokens; ++i) {
+    PlanToken t;
+    t.id = static_cast<std::uint32_t>(i);
+    t.object = "sc";
+    t.attribute = "line" + std::to_string(i % lines);
+    t.predicate = "p";
+    t.start_lb = std::max<Time>(0, start[i] - slack());
+    t.start_ub = pick(*rng) < 3 ? kUnbounded : start[i] + slack();
+    t.end_lb = 0;
+    t.end_ub = pick(*rng) < 5 ? kUnbounded : end[i] + slack();
+    Time d = end[i] - start[i];
+    bool fixed = pick(*rng) < 3;
+    t.duration_lb = fixed ? d : std::max<Time>(0, d - slack());
+    t.duration_ub = fixed ? d : pick(*rng) == 0 ? kUnbounded : d + slack();
+    plan.tokens.push_back(t);
+    std::string id = std::to_string(i);
+    if (i >= lines)
+      plan.constraints.push_back({std::to_string(i - lines) + ".end", id + ".start", 0, 0});
+  }
+  auto time_of = [&](int token, bool s) { return s ? start[token] : end[token]; };
+  std::uniform_int_distribution<int> token(0, tokens - 1);
+  int links = tokens / 2 + pick(*rng);
+  for (int k = 0; k < links; ++k) {
+    int a = token(*rng), b = token(*rng);
+    bool sa = pick(*rng) < 5, sb = pick(*rng) < 5;
+    Time diff = time_of(b, sb) - time_of(a, sa);
+    Time lb = diff - slack(), ub = diff + slack();
+    int kind = pick(*rng);
+    if (kind == 0)
+      lb = ub = diff;  // rigid across timelines
+    else if (kind < 3)
+      ub = kUnbounded;  // one-sided
+    else if (kind < 4)
+      lb = -kUnbounded;
+    plan.constraints.push_back({std::to_string(a) + (sa ? ".start" : ".end"),
+                                std::to_string(b) + (sb ? ".start" : ".end"), lb, ub});
+  }
+  if (break_it) {
+    int a = token(*rng), b = token(*rng), c = token(*rng);
+    std::string ta = std::to_string(a) + ".start", tb = std::to_string(b) + ".end",
+                tc = std::to_string(c) + ".start";
+    Time ab = end[b] - start[a], bc = start[c] - end[b];
+    plan.constraints.push_back({ta, tb, ab, ab});
+    plan.constraints.push_back({tb, tc, bc, bc});
+    plan.constraints.push_back({tc, ta, -(ab + bc) + scale, kUnbounded});
+  }
+  return plan;
+}
+
+TEST(DispatchableNetwork, SameNetworkAsThePerTimepointConstructionOnLargerRandomPlans) {
+  std::mt19937 rng(28);
+  int consistent = 0, inconsistent = 0;
+  for (int round = 0; round < 60; ++round) {
+    int tokens = 10 + static_cast<int>(rng() % 110), lines = 1 + static_cast<int>(rng() % 6);
+    FlexiblePlan plan = random_consistent_plan(&rng, tokens, lines, 1, round % 5 == 4);
+    std::string error;
+    (make_dispatchable(plan, &error) ? consistent : inconsistent)++;
+    expect_same_network(plan, "round " + std::to_string(round));
+  }
+  EXPECT_GT(consistent, 40);
+  EXPECT_GT(inconsistent, 5);
+}
+
+// Distances too long for 64-bit Dijkstra keys (a time unit of 2^45, horizons near 2^51, short
+// timelines, so many large weights and a few hundred rigid classes) take the 128-bit keys; the
+// network is the same.
+TEST(DispatchableNetwork, SameNetworkWithTimesTooLongForNarrowKeys) {
+  std::mt19937 rng(44);
+  for (int round = 0; round < 3; ++round) {
+    FlexiblePlan plan = random_consistent_plan(&rng, 150 + 20 * round, 40, Time{1} << 45, false);
+    std::string error;
+    ASSERT_TRUE(make_dispatchable(plan, &error)) << error;
+    expect_same_network(plan, "round " + std::to_string(round));
+  }
+}
+
+// The hand-written plans of this file and the bench's kind of plan.
+TEST(DispatchableNetwork, SameNetworkAsThePerTimepointConstructionOnTheExamplePlans) {
+  expect_same_network(picture_plan(), "picture");
+  expect_same_network(ds1_plan(), "ds1");
+  std::mt19937 rng(3);
+  FlexiblePlan lines;
+  lines.horizon = 2000;
+  std::uniform_int_distribution<int> coin(0, 3);
+  for (int l = 0; l < 5; ++l)
+    for (int k = 0; k < 30; ++k) {
+      bool fixed = coin(rng) == 0;
+      add_token(&lines, "sc.line" + std::to_string(l), "line" + std::to_string(l), "p", {}, 0,
+                k == 0 ? 0 : lines.horizon, fixed ? 15 : 10, fixed ? 15 : 20, "");
+      if (l > 0 && k % 4 == 3)
+        lines.constraints.push_back({std::to_string((l - 1) * 30 + k - 1) + ".end",
+                                     std::to_string(l * 30 + k) + ".start", 0, 30});
+    }
+  expect_same_network(lines, "timelines");
+}
+
+// The planner's plans for the example problems, checked against both earlier constructions.
+TEST(DispatchableNetwork, SameNetworkOnThePlannersExamplePlans) {
+  const std::string dir = PLANNER_EXAMPLES_DIR;
+  int planned = 0;
+  for (const char* name : {"camera", "rover", "field-rover"}) {
+    planner::Diagnostics errors;
+    auto model_text = planner::read_text_file(dir + "/" + name + ".model", &errors);
+    auto problem_text = planner::read_text_file(dir + "/" + name + ".problem", &errors);
+    ASSERT_TRUE(model_text && problem_text) << planner::to_string(errors);
+    auto m = planner::parse_model(*model_text, std::string(name) + ".model", &errors);
+    auto model = planner::build_domain_model(*m, &errors);
+    auto p = planner::parse_problem(*problem_text, std::string(name) + ".problem", &errors);
+    auto problem = planner::build_problem(*model, *p, &errors);
+    ASSERT_TRUE(problem) << planner::to_string(errors);
+    planner::PlanningOptions options;
+    options.termination.max_decisions = 20000;
+    planner::PlanResult result = planner::make_plan(*model, *problem, options);
+    ASSERT_TRUE(result.plan) << name << ": " << result.explanation;
+    ++planned;
+    expect_same_network(*result.plan, name);
+    ReferenceNetwork ref = reference_dispatchable(*result.plan);
+    std::string error;
+    auto net = make_dispatchable(*result.plan, &error);
+    ASSERT_TRUE(net && ref.consistent) << name << ": " << error;
+    std::vector<std::pair<std::size_t, std::size_t>> kept;
+    for (const DistanceEdge& e : net->edges) kept.push_back({e.from, e.to});
+    EXPECT_EQ(kept, ref.kept) << name;
+  }
+  EXPECT_EQ(planned, 3);
 }
 
 TEST(Dispatcher, ExecutesTimepointsInOrderAtTheirEarliestTimes) {
