@@ -14,7 +14,8 @@ int main(int argc, char** argv) {
       service::InstanceFlag::Instance,
       [&](CLI::App& app) {
         app.footer("Open http://127.0.0.1:PORT/ in a browser on this host; from another host, tunnel the port: "
-                   "ssh -L PORT:127.0.0.1:PORT HOST (docs/viewer.md).");
+                   "ssh -L PORT:127.0.0.1:PORT HOST. Foxglove-compatible viewers connect to ws://127.0.0.1:PORT/ "
+                   "(subprotocol foxglove.websocket.v1: every catalogue topic, CDR with its IDL) (docs/viewer.md).");
         app.add_option("--port", options.web.port, "TCP port of the page and its WebSocket (0: any free port)")
             ->check(CLI::Range(0, 65535))
             ->capture_default_str();
