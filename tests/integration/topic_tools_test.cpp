@@ -1,7 +1,9 @@
 // `autonomy topic echo`, `topic type` and `interface show` on a topic whose type is not in the
 // project's IDL: ddsperf (Cyclone's tool, a real foreign process) publishes DDSPerfRDataKS of its
 // own type KeyedSeq; the tool gets the type from discovery's type information and prints the
-// samples' fields; `topic pub` writes that type from JSON. Domains 137-139.
+// samples' fields; `topic pub` writes that type from JSON; `topic info` names the processes of
+// the topic's endpoints and the pairs whose QoS cannot match, `topic bw` measures its bytes, and
+// `node info` describes one of our processes (fake_service). Domains 137-139 and 179.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -9,6 +11,9 @@
 #include <algorithm>
 #include <sstream>
 
+#include "common/dds/reader.hpp"
+#include "common/dds/topics.hpp"
+#include "common/dds/writer.hpp"
 #include "tests/support/process_test.hpp"
 
 namespace autonomy::test {
@@ -19,6 +24,7 @@ using namespace std::chrono_literals;
 constexpr int kDomainForeignPub = 137;
 constexpr int kDomainForeignEcho = 138;
 constexpr int kDomainForeignType = 139;
+constexpr int kDomainInfo = 179;
 constexpr const char* kDdsperf = "/usr/bin/ddsperf";
 
 std::vector<std::string> lines_of(const std::string& text) {
@@ -115,6 +121,45 @@ TEST_F(TopicToolsTest, TopicTypeAndInterfaceShowPrintIdl) {
   run_tool("unknown", {"topic", "type", "DDSPerfRDataKZ", "--discovery-wait", "1"}, 2);
   EXPECT_NE(read_file(dir().file("unknown.err")).find("did you mean DDSPerfRDataKS"), std::string::npos)
       << read_file(dir().file("unknown.err"));
+}
+
+// ddsperf publishes 50 samples/s of 1000 bytes; this test's process holds a best-effort writer
+// and a reliable reader of one topic (a pair that cannot match).
+TEST_F(TopicToolsTest, InfoNamesProcessesAndMismatches) {
+  if (::access(kDdsperf, X_OK) != 0) GTEST_SKIP() << "ddsperf (cyclonedds-tools) is not installed";
+  join(kDomainInfo);
+  auto& pub = start("ddsperf", kDdsperf, {"-i", std::to_string(domain_), "-D", "60", "pub", "50Hz", "size", "1000"});
+  const dds::TopicSpec<msg::NavGoal> spec{"tools_test/mismatch", dds::QosClass::Stream};
+  const dds::Topic<msg::NavGoal> topic(participant(), spec);
+  const dds::Writer<msg::NavGoal> best_effort(participant(), topic, dds::QosClass::Stream);
+  const dds::Reader<msg::NavGoal> reliable(participant(), topic, dds::QosClass::Event);
+
+  // topic info on ddsperf's topic: its writer is the ddsperf process.
+  const auto info = run_tool("info", {"topic", "info", "DDSPerfRDataKS", "--discovery-wait", "1"});
+  std::string text;
+  for (const auto& l : info) text += l + "\n";
+  EXPECT_NE(text.find("Type: KeyedSeq\n"), std::string::npos) << text;
+  const auto writers = std::find(info.begin(), info.end(), "Writers: 1");
+  ASSERT_TRUE(writers != info.end() && writers + 1 != info.end()) << text;
+  EXPECT_EQ(writers[1].find("  ddsperf (pid " + std::to_string(pub.pid()) + " on "), 0u) << text;
+  EXPECT_NE(writers[1].find("reliable volatile"), std::string::npos) << text;
+
+  // topic info on the test's own pair: both endpoints named with this process's pid, the pair
+  // called out for its reliability.
+  const std::string ours = "(pid " + std::to_string(::getpid()) + " on ";
+  const auto pair = run_tool("info-mismatch", {"topic", "info", "tools_test/mismatch", "--discovery-wait", "1"});
+  std::string pair_text;
+  for (const auto& l : pair) pair_text += l + "\n";
+  const auto pw = std::find(pair.begin(), pair.end(), "Writers: 1");
+  const auto pr = std::find(pair.begin(), pair.end(), "Readers: 1");
+  ASSERT_TRUE(pw != pair.end() && pr == pw + 2 && pr + 1 != pair.end()) << pair_text;
+  EXPECT_NE(pw[1].find(ours), std::string::npos) << pair_text;
+  EXPECT_NE(pw[1].find("best-effort"), std::string::npos) << pair_text;
+  EXPECT_NE(pr[1].find(ours), std::string::npos) << pair_text;
+  EXPECT_NE(pair_text.find("QoS mismatches (these pairs do not communicate):\n"), std::string::npos) << pair_text;
+  EXPECT_NE(pair_text.find(": reliability: the reader requests reliable, the writer offers best-effort\n"),
+            std::string::npos)
+      << pair_text;
 }
 
 }  // namespace

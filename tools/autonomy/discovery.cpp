@@ -18,6 +18,33 @@ std::string to_string(const dds_guid_t& guid) {
   return s;
 }
 
+std::map<std::string, ParticipantProcess> participant_processes(const dds::Participant& participant) {
+  std::map<std::string, ParticipantProcess> out;
+  const dds::Entity reader(
+      dds::check(dds_create_reader(participant.handle(), DDS_BUILTIN_TOPIC_DCPSPARTICIPANT, nullptr, nullptr),
+                 "dds_create_reader(DCPSParticipant)"));
+  // A new built-in reader holds every participant discovered before it was made.
+  constexpr size_t kMax = 4096;
+  std::vector<void*> buffers(kMax, nullptr);
+  std::vector<dds_sample_info_t> infos(kMax);
+  const dds_return_t n = dds::check(dds_read_mask(reader.handle(), buffers.data(), infos.data(), kMax, kMax,
+                                                  DDS_ANY_SAMPLE_STATE | DDS_ANY_VIEW_STATE | DDS_ALIVE_INSTANCE_STATE),
+                                    "dds_read_mask(DCPSParticipant)");
+  for (dds_return_t i = 0; i < n; ++i) {
+    if (!infos[i].valid_data) continue;
+    const auto* p = static_cast<const dds_builtintopic_participant_t*>(buffers[i]);
+    auto property = [p](const char* name) {
+      char* value = nullptr;
+      std::string s = p->qos && dds_qget_prop(p->qos, name, &value) && value ? value : "?";
+      dds_free(value);
+      return s;
+    };
+    out[to_string(p->key)] = ParticipantProcess{property("__ProcessName"), property("__Pid"), property("__Hostname")};
+  }
+  if (n > 0) dds_return_loan(reader.handle(), buffers.data(), n);
+  return out;
+}
+
 Discovery::Discovery(const dds::Participant& participant)
     : publications_(
           dds::check(dds_create_reader(participant.handle(), DDS_BUILTIN_TOPIC_DCPSPUBLICATION, nullptr, nullptr),

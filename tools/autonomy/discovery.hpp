@@ -1,6 +1,7 @@
 #pragma once
 // Who writes and reads which topic on the domain, from the DDS built-in topics DCPSPublication
 // and DCPSSubscription. This sees every DDS process of the domain, not only ours.
+#include <map>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,18 @@ struct Endpoint {
 };
 
 std::string to_string(const dds_guid_t& guid);
+
+// A participant's process, from the properties Cyclone puts in every participant's discovery
+// data (__ProcessName, __Pid, __Hostname); "?" for what a participant does not say (another
+// DDS implementation).
+struct ParticipantProcess {
+  std::string program = "?", pid = "?", host = "?";
+  // "ddsperf (pid 9379 on vm)"
+  std::string str() const { return program + " (pid " + pid + " on " + host + ")"; }
+};
+
+// Every participant discovered so far, by to_string(its GUID).
+std::map<std::string, ParticipantProcess> participant_processes(const dds::Participant& participant);
 
 class Discovery {
  public:

@@ -62,7 +62,7 @@ int main(int argc, char** argv) {
       "pub or node wait was reached. echo and hz end with 0 on Ctrl-C.\n"
       "Environment: AUTONOMY_DOMAIN (default for --domain), CYCLONEDDS_URI (Cyclone DDS configuration, e.g. "
       "file://.../deploy/dds/loopback.xml).");
-  auto* topic = app.add_subcommand("topic", "Topics: list, echo, hz, pub, type");
+  auto* topic = app.add_subcommand("topic", "Topics: list, echo, hz, pub, type, info");
   topic->require_subcommand(1);
   auto* node = app.add_subcommand("node", "Our processes, from their heartbeats: list, wait, watch");
   node->require_subcommand(1);
@@ -74,7 +74,8 @@ int main(int argc, char** argv) {
   interface->require_subcommand(1);
 
   const std::vector<Command> commands = {add_topic_list(*topic), add_topic_echo(*topic), add_topic_hz(*topic),
-                                         add_topic_pub(*topic),  add_topic_type(*topic), add_interface_show(*interface),
+                                         add_topic_pub(*topic),  add_topic_type(*topic),
+                                         add_topic_info(*topic), add_interface_show(*interface),
                                          add_node_list(*node),   add_node_wait(*node),
                                          add_node_watch(*node),
                                          add_courier_send(*courier), add_courier_jobs(*courier),
