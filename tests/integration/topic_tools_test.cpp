@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 #include <algorithm>
+#include <regex>
 #include <sstream>
 
 #include "common/dds/reader.hpp"
@@ -125,7 +126,7 @@ TEST_F(TopicToolsTest, TopicTypeAndInterfaceShowPrintIdl) {
 
 // ddsperf publishes 50 samples/s of 1000 bytes; this test's process holds a best-effort writer
 // and a reliable reader of one topic (a pair that cannot match).
-TEST_F(TopicToolsTest, InfoNamesProcessesAndMismatches) {
+TEST_F(TopicToolsTest, InfoNamesProcessesAndBwMeasures) {
   if (::access(kDdsperf, X_OK) != 0) GTEST_SKIP() << "ddsperf (cyclonedds-tools) is not installed";
   join(kDomainInfo);
   auto& pub = start("ddsperf", kDdsperf, {"-i", std::to_string(domain_), "-D", "60", "pub", "50Hz", "size", "1000"});
@@ -160,6 +161,26 @@ TEST_F(TopicToolsTest, InfoNamesProcessesAndMismatches) {
   EXPECT_NE(pair_text.find(": reliability: the reader requests reliable, the writer offers best-effort\n"),
             std::string::npos)
       << pair_text;
+
+  // topic bw: every sample is 1000 bytes of KeyedSeq plus the 4-byte encapsulation header; the
+  // rate is within a factor 1.5 of 50 of them per second.
+  const auto bw = run_tool("bw", {"topic", "bw", "DDSPerfRDataKS", "--duration", "3.5", "--discovery-wait", "2"});
+  const std::regex report(R"(average: (\d+) B/s \(.*\)  mean: (\d+) B  min: (\d+) B  max: (\d+) B  window: (\d+))");
+  int reports = 0;
+  for (const auto& l : bw) {
+    std::smatch m;
+    if (!std::regex_match(l, m, report)) continue;
+    ++reports;
+    EXPECT_EQ(m[2].str(), "1004") << l;
+    EXPECT_EQ(m[3].str(), "1004") << l;
+    EXPECT_EQ(m[4].str(), "1004") << l;
+    if (std::stoi(m[5].str()) >= 20) {  // a rate over at least 19 intervals
+      const double rate = std::stod(m[1].str());
+      EXPECT_GT(rate, 50 * 1004 / 1.5) << l;
+      EXPECT_LT(rate, 50 * 1004 * 1.5) << l;
+    }
+  }
+  EXPECT_GE(reports, 2) << ::testing::PrintToString(bw);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@ Command add_topic_hz(CLI::App& topic);
 Command add_topic_pub(CLI::App& topic);
 Command add_topic_type(CLI::App& topic);
 Command add_topic_info(CLI::App& topic);
+Command add_topic_bw(CLI::App& topic);
 Command add_interface_show(CLI::App& interface);
 Command add_node_list(CLI::App& node);
 Command add_node_wait(CLI::App& node);

@@ -59,10 +59,10 @@ int main(int argc, char** argv) {
   app.footer(
       "Exit codes: 0 success; 1 failure (timeout, not acknowledged, DDS error); 2 usage error (bad arguments, "
       "unknown topic, JSON that does not fit the message); 130 interrupted (Ctrl-C) before the goal of "
-      "pub or node wait was reached. echo and hz end with 0 on Ctrl-C.\n"
+      "pub or node wait was reached. echo, hz and bw end with 0 on Ctrl-C.\n"
       "Environment: AUTONOMY_DOMAIN (default for --domain), CYCLONEDDS_URI (Cyclone DDS configuration, e.g. "
       "file://.../deploy/dds/loopback.xml).");
-  auto* topic = app.add_subcommand("topic", "Topics: list, echo, hz, pub, type, info");
+  auto* topic = app.add_subcommand("topic", "Topics: list, echo, hz, bw, pub, type, info");
   topic->require_subcommand(1);
   auto* node = app.add_subcommand("node", "Our processes, from their heartbeats: list, wait, watch");
   node->require_subcommand(1);
@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
   interface->require_subcommand(1);
 
   const std::vector<Command> commands = {add_topic_list(*topic), add_topic_echo(*topic), add_topic_hz(*topic),
-                                         add_topic_pub(*topic),  add_topic_type(*topic),
+                                         add_topic_bw(*topic),   add_topic_pub(*topic),  add_topic_type(*topic),
                                          add_topic_info(*topic), add_interface_show(*interface),
                                          add_node_list(*node),   add_node_wait(*node),
                                          add_node_watch(*node),

@@ -1,4 +1,4 @@
-// autonomy topic hz: the rate at which a catalogue topic's samples arrive.
+// autonomy topic hz: the rate at which a topic's samples arrive (any topic on the domain).
 #include <cmath>
 #include <cstdio>
 #include <deque>
@@ -8,6 +8,7 @@
 #include "tools/autonomy/commands.hpp"
 #include "tools/autonomy/suggest.hpp"
 #include "tools/autonomy/discovery.hpp"
+#include "tools/autonomy/report_loop.hpp"
 
 namespace autonomy::tools {
 
@@ -64,53 +65,27 @@ class RateWindow {
 };
 
 int run_hz(const HzOptions& o, Context& ctx) {
-  const auto registry = TopicRegistry::catalogue();
-  const TopicEntry* topic = registry.find(o.topic);
-  if (!topic) {
-    std::cerr << unknown_topic_message("autonomy topic hz", o.topic, registry.name_list()) << "\n";
-    return kExitUsage;
-  }
-  const auto start = Clock::now();
-  const bool has_end = o.duration_s > 0;
-  const auto end = start + seconds(o.duration_s);
+  ReportLoop loop;
+  loop.start = Clock::now();
+  loop.duration_s = o.duration_s;
 
   dds::Participant participant(o.domain);
   Interrupt interrupt(ctx.signals, participant);
-  auto discovery_wait = seconds(o.discovery_s);
-  if (has_end) discovery_wait = std::min<std::chrono::nanoseconds>(discovery_wait, seconds(o.duration_s));
-  const auto reader = open_mirroring_reader(participant, *topic, interrupt, discovery_wait, nullptr);
-
-  dds::WaitSet waitset(participant);
-  waitset.attach(reader->data_condition(), 1);
-  waitset.attach(interrupt.condition(), 2);
-
+  int failed = kExitOk;
+  const auto reader = open_counting_reader(participant, interrupt, "autonomy topic hz", o.topic, o.domain,
+                                           discovery_wait_within(o.discovery_s, o.duration_s), &failed);
+  if (!reader) return failed;
   RateWindow window(o.window);
-  uint64_t reported_total = 0;
-  auto next_report = Clock::now() + std::chrono::seconds(1);
-  for (;;) {
-    const auto samples = reader->take(false);
+  loop.data_condition = reader->data_condition();
+  loop.take = [&] {
+    const auto samples = reader->take();
     const auto now = Clock::now();
     for (const auto& s : samples)
       if (s.valid) window.add(now);
-    if (interrupt.requested()) return kExitOk;
-    if (now >= next_report) {
-      print_line(window.total() == reported_total ? std::string("no new messages") : window.report());
-      reported_total = window.total();
-      next_report += std::chrono::seconds(1);
-      if (next_report < now) next_report = now + std::chrono::seconds(1);
-    }
-    if (has_end && now >= end) {
-      if (window.total() == 0) {
-        char line[100];
-        std::snprintf(line, sizeof(line), "no messages received in %g s", o.duration_s);
-        print_line(line);
-      }
-      return kExitOk;
-    }
-    auto wake = next_report;
-    if (has_end) wake = std::min(wake, end);
-    waitset.wait(std::max<std::chrono::nanoseconds>(wake - Clock::now(), std::chrono::nanoseconds::zero()));
-  }
+    return window.total();
+  };
+  loop.report = [&] { return window.report(); };
+  return run_report_loop(participant, interrupt, loop);
 }
 
 }  // namespace
@@ -119,10 +94,11 @@ Command add_topic_hz(CLI::App& topic) {
   auto o = std::make_shared<HzOptions>();
   auto* cmd = topic.add_subcommand(
       "hz",
-      "Print, every second, the rate of a catalogue topic's samples as they arrive here: average rate, "
-      "min/max interval and standard deviation over the last --window intervals.");
+      "Print, every second, the rate of a topic's samples as they arrive here (any topic on the domain: a topic not "
+      "in the catalogue is read with the type its endpoints announce in discovery): average rate, min/max interval "
+      "and standard deviation over the last --window intervals.");
   add_domain_option(cmd, o->domain);
-  cmd->add_option("topic", o->topic, "Topic name, e.g. autonomy/robot/state")->required();
+  cmd->add_option("topic", o->topic, "Topic name, e.g. autonomy/robot/state or any topic on the domain")->required();
   cmd->add_option("-w,--window", o->window, "Number of intervals the statistics cover")
       ->check(CLI::Range(size_t{1}, size_t{10'000'000}))
       ->capture_default_str();
@@ -133,7 +109,8 @@ Command add_topic_hz(CLI::App& topic) {
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   const std::string topics = "\nTopics of the catalogue: " + TopicRegistry::catalogue().names() + ".";
-  cmd->footer("Exit codes: 0 after --duration or Ctrl-C; 1 DDS error; 2 unknown topic or bad arguments." + topics);
+  cmd->footer("Exit codes: 0 after --duration or Ctrl-C; 1 type not obtainable, or DDS error; 2 unknown topic or bad "
+              "arguments." + topics);
   return {cmd, [o](Context& ctx) { return run_hz(*o, ctx); }};
 }
 
