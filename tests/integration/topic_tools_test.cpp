@@ -125,10 +125,12 @@ TEST_F(TopicToolsTest, TopicTypeAndInterfaceShowPrintIdl) {
 }
 
 // ddsperf publishes 50 samples/s of 1000 bytes; this test's process holds a best-effort writer
-// and a reliable reader of one topic (a pair that cannot match).
-TEST_F(TopicToolsTest, InfoNamesProcessesAndBwMeasures) {
+// and a reliable reader of one topic (a pair that cannot match); fake_service is one of ours.
+TEST_F(TopicToolsTest, InfoBwAndNodeInfoNameProcessesAndMeasure) {
   if (::access(kDdsperf, X_OK) != 0) GTEST_SKIP() << "ddsperf (cyclonedds-tools) is not installed";
   join(kDomainInfo);
+  auto& fake = start("fake", AUTONOMY_FAKE_SERVICE_BIN,
+                     {"--instance", "ti", "--domain", std::to_string(domain_), "--log-dir", dir().path()});
   auto& pub = start("ddsperf", kDdsperf, {"-i", std::to_string(domain_), "-D", "60", "pub", "50Hz", "size", "1000"});
   const dds::TopicSpec<msg::NavGoal> spec{"tools_test/mismatch", dds::QosClass::Stream};
   const dds::Topic<msg::NavGoal> topic(participant(), spec);
@@ -181,6 +183,28 @@ TEST_F(TopicToolsTest, InfoNamesProcessesAndBwMeasures) {
     }
   }
   EXPECT_GE(reports, 2) << ::testing::PrintToString(bw);
+
+  // node info: fake_service's pid and host, and the topics it writes and reads.
+  const auto node = run_tool("node-info", {"node", "info", "fake/ti", "--wait", "5"});
+  std::string node_text;
+  for (const auto& l : node) node_text += l + "\n";
+  EXPECT_NE(node_text.find("node: fake/ti\n"), std::string::npos) << node_text;
+  EXPECT_NE(node_text.find("\n  pid: " + std::to_string(fake.pid()) + "\n"), std::string::npos) << node_text;
+  EXPECT_NE(node_text.find("\n  program: fake_service\n"), std::string::npos) << node_text;
+  const auto writes = node_text.find("  writes (");
+  const auto reads = node_text.find("  reads (");
+  ASSERT_TRUE(writes != std::string::npos && reads != std::string::npos && writes < reads) << node_text;
+  const std::string written = node_text.substr(writes, reads - writes);
+  EXPECT_NE(written.find("\n    autonomy/heartbeat  autonomy::Heartbeat  reliable transient-local"), std::string::npos)
+      << node_text;
+  EXPECT_NE(written.find("\n    autonomy/nav/goal_status  autonomy::GoalStatus  reliable transient-local"),
+            std::string::npos)
+      << node_text;
+  EXPECT_EQ(node_text.find("DDSPerf"), std::string::npos) << node_text;  // ddsperf's are not fake's
+  // An unknown name: usage error naming the nearest process.
+  run_tool("node-unknown", {"node", "info", "fake/tj", "--wait", "1"}, 2);
+  EXPECT_NE(read_file(dir().file("node-unknown.err")).find("did you mean fake/ti?"), std::string::npos)
+      << read_file(dir().file("node-unknown.err"));
 }
 
 }  // namespace

@@ -13,6 +13,7 @@ Command add_topic_info(CLI::App& topic);
 Command add_topic_bw(CLI::App& topic);
 Command add_interface_show(CLI::App& interface);
 Command add_node_list(CLI::App& node);
+Command add_node_info(CLI::App& node);
 Command add_node_wait(CLI::App& node);
 Command add_node_watch(CLI::App& node);
 Command add_courier_send(CLI::App& courier);

@@ -64,7 +64,7 @@ int main(int argc, char** argv) {
       "file://.../deploy/dds/loopback.xml).");
   auto* topic = app.add_subcommand("topic", "Topics: list, echo, hz, bw, pub, type, info");
   topic->require_subcommand(1);
-  auto* node = app.add_subcommand("node", "Our processes, from their heartbeats: list, wait, watch");
+  auto* node = app.add_subcommand("node", "Our processes, from their heartbeats: list, info, wait, watch");
   node->require_subcommand(1);
   auto* courier = app.add_subcommand("courier", "The courier service: send, jobs, cancel; knowledge (what it learned)");
   courier->require_subcommand(1);
@@ -76,7 +76,7 @@ int main(int argc, char** argv) {
   const std::vector<Command> commands = {add_topic_list(*topic), add_topic_echo(*topic), add_topic_hz(*topic),
                                          add_topic_bw(*topic),   add_topic_pub(*topic),  add_topic_type(*topic),
                                          add_topic_info(*topic), add_interface_show(*interface),
-                                         add_node_list(*node),   add_node_wait(*node),
+                                         add_node_list(*node),   add_node_info(*node),   add_node_wait(*node),
                                          add_node_watch(*node),
                                          add_courier_send(*courier), add_courier_jobs(*courier),
                                          add_courier_cancel(*courier), add_courier_knowledge(*courier),
