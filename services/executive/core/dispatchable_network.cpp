@@ -287,7 +287,11 @@ class ClassRows {
 };
 
 // Every closure edge A->C (finite distance), kept unless dominated (filter), into out[A] in
-// the order of C; the windows from the origin's row and column.
+// the order of C; the windows from the origin's row and column. With A in X, C in Y != X,
+// R = R(X,Y) and mu = mu(X,Y) finite, the rule above keeps A->C exactly when
+// R + h[C] < mu and h[A] <= mu (a negative A->C has R + h[C] < h[A]; a non-negative one,
+// R + h[C] >= h[A]): the kept targets in Y are those of least h, so per class only a prefix of
+// its timepoints sorted by h is looked at, not all n.
 template <typename Key>
 void closure_edges(const ClassGraph& cg, const RigidClasses& rc,
                    const std::vector<std::vector<std::size_t>>& members, std::vector<Time> min_h,
@@ -295,6 +299,11 @@ void closure_edges(const ClassGraph& cg, const RigidClasses& rc,
                    std::vector<std::vector<DistanceEdge>>* out) {
   const std::size_t n = pot.size();
   ClassRows<Key> rows(cg, std::move(min_h));
+  std::vector<std::vector<std::size_t>> by_h = members;
+  for (auto& list : by_h)
+    std::sort(list.begin(), list.end(), [&](std::size_t p, std::size_t q) {
+      return pot[p] != pot[q] ? pot[p] < pot[q] : p < q;
+    });
   const std::uint32_t origin_class = rc.of[0];
   for (std::uint32_t x = 0; x < rc.count; ++x) {
     rows.run(x);
@@ -307,16 +316,29 @@ void closure_edges(const ClassGraph& cg, const RigidClasses& rc,
       if (dist[origin_class] != kNoMu) net->earliest[a] = -(dist[origin_class] + pot[0] - pot[a]);
       const Time ha = pot[a];
       std::vector<DistanceEdge>& list = (*out)[a];
-      for (std::size_t c = 0; c < n; ++c) {
-        const std::uint32_t y = rc.of[c];
-        const Time r = dist[y];
-        if (r == kNoMu || c == a) continue;
-        ++net->closed_edges;
-        const Time w = r + pot[c] - ha;
-        const bool dominated =
-            filter && y != x && mu[y] != kNoMu && (w >= 0 ? mu[y] <= r + pot[c] : mu[y] < ha);
-        if (!dominated) list.push_back({a, c, w});
+      if (!filter) {
+        for (std::size_t c = 0; c < n; ++c)
+          if (c != a && dist[rc.of[c]] != kNoMu)
+            list.push_back({a, c, dist[rc.of[c]] + pot[c] - ha});
+        net->closed_edges += list.size();
+        continue;
       }
+      for (std::uint32_t y = 0; y < rc.count; ++y) {
+        const Time r = dist[y], m = mu[y];
+        if (r == kNoMu) continue;
+        net->closed_edges += members[y].size() - (y == x ? 1 : 0);
+        if (y == x || m == kNoMu) {
+          for (std::size_t c : members[y])
+            if (c != a) list.push_back({a, c, r + pot[c] - ha});
+        } else if (ha <= m) {
+          for (std::size_t c : by_h[y]) {
+            if (r + pot[c] >= m) break;
+            list.push_back({a, c, r + pot[c] - ha});
+          }
+        }
+      }
+      std::sort(list.begin(), list.end(),
+                [](const DistanceEdge& p, const DistanceEdge& q) { return p.to < q.to; });
     }
   }
 }

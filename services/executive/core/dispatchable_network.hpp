@@ -42,8 +42,8 @@ struct DispatchableNetwork {
 // timepoint or its constraints are inconsistent (a negative cycle). filter = false keeps every
 // edge of the closure (the baseline the filter is checked and measured against).
 // Cost: one Dijkstra per rigid class (timepoints at fixed distances, one node) on the plan's
-// collapsed graph, dominance decided inside it, plus a pass over the n^2 closure entries; no
-// n x n matrix (about 50 ms at 1,000 tokens, 190 ms at 2,000: docs/executive.md).
+// collapsed graph, dominance decided inside it; no n x n matrix (about 50 ms at 1,000 tokens,
+// 190 ms at 2,000: docs/executive.md).
 std::optional<DispatchableNetwork> make_dispatchable(const planner::FlexiblePlan& plan,
                                                      std::string* error, bool filter = true);
 
