@@ -265,7 +265,16 @@ TEST_F(ViewerTest, PageInHeadlessChromiumDrawsTheMovingRobotTheClosedDoorAndAJob
                                     "http://127.0.0.1:" + std::to_string(port) + "/", "--chromium", chromium, "--door",
                                     "d1", "--job", "job-1", "--screenshot", dir().file("viewer.png")};
   auto& check = start("viewer_page_check", node, args, false);
+  // r1 keeps driving while Chromium starts (under load that takes longer than the 6 m drive to the
+  // first goal, and the page must see it move): a new goal every 4 s, west and east in turn.
+  auto last_goal = std::chrono::steady_clock::now();
+  int leg = 0;
   ASSERT_TRUE(await("the page shows job-1", [&] {
+    if (std::chrono::steady_clock::now() - last_goal > 4s) {
+      ++leg;
+      send_goal("leg-" + std::to_string(leg), leg % 2 == 1 ? 3.0 : 8.0, 3.0);
+      last_goal = std::chrono::steady_clock::now();
+    }
     return read_file(check.log_file()).find("job job-1 seen: queued") != std::string::npos || !check.running();
   })) << check.log_tail();
   job.state = msg::JobState::Underway;
