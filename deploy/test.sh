@@ -14,12 +14,13 @@ case ${1:-} in
 esac
 
 bash "$repo/deploy/install-deps.sh"
-# Test-only: the independent MCAP readers of the recording test (npm's @mcap/core and
-# @foxglove/omgidl-serialization, pinned by tests/node/package-lock.json), never in the runtime
-# install. Without node the recording test says so and skips that part.
+# Test-only npm packages, pinned by tests/node/package-lock.json, never in the runtime install:
+# the independent MCAP readers of the recording test (@mcap/core, @foxglove/omgidl-serialization)
+# and the Foxglove WebSocket client of the viewer test (@foxglove/ws-protocol, ws). Without node
+# those tests say so and skip that part.
 if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
   DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends nodejs npm ||
-    echo "test: nodejs/npm could not be installed; the MCAP validation by independent readers will be skipped" >&2
+    echo "test: nodejs/npm could not be installed; the checks by independent readers (MCAP, Foxglove) will be skipped" >&2
 fi
 if command -v npm >/dev/null 2>&1; then
   npm ci --prefix "$repo/tests/node" --no-audit --no-fund --loglevel=error
