@@ -3,7 +3,9 @@
 // own type KeyedSeq; the tool gets the type from discovery's type information and prints the
 // samples' fields; `topic pub` writes that type from JSON; `topic info` names the processes of
 // the topic's endpoints and the pairs whose QoS cannot match, `topic bw` measures its bytes, and
-// `node info` describes one of our processes (fake_service). Domains 137-139 and 179.
+// `node info` describes one of our processes (fake_service); `topic echo` reads a type with a
+// string key (NavGoal on a topic outside the catalogue) by its discovered type. Domains 137-139,
+// 179 and 199.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -26,6 +28,7 @@ constexpr int kDomainForeignPub = 137;
 constexpr int kDomainForeignEcho = 138;
 constexpr int kDomainForeignType = 139;
 constexpr int kDomainInfo = 179;
+constexpr int kDomainStringKey = 199;
 constexpr const char* kDdsperf = "/usr/bin/ddsperf";
 
 std::vector<std::string> lines_of(const std::string& text) {
@@ -122,6 +125,32 @@ TEST_F(TopicToolsTest, TopicTypeAndInterfaceShowPrintIdl) {
   run_tool("unknown", {"topic", "type", "DDSPerfRDataKZ", "--discovery-wait", "1"}, 2);
   EXPECT_NE(read_file(dir().file("unknown.err")).find("did you mean DDSPerfRDataKS"), std::string::npos)
       << read_file(dir().file("unknown.err"));
+}
+
+// A string key through the discovered-type path: Cyclone 0.10.2's dds_create_topic_descriptor
+// marks such a key fixed-size, and the tool aborted (realloc(): invalid pointer in
+// dds_stream_extract_key_from_data) on the first sample. Two instances of NavGoal, written
+// transient-local before the tool starts, on a topic name the catalogue does not know.
+TEST_F(TopicToolsTest, EchoReadsADiscoveredTypeWithAStringKey) {
+  join(kDomainStringKey);
+  const dds::TopicSpec<msg::NavGoal> spec{"tools_test/string_key", dds::QosClass::State};
+  const dds::Topic<msg::NavGoal> topic(participant(), spec);
+  const dds::Writer<msg::NavGoal> writer(participant(), topic);
+  // Keys longer than 16 bytes serialized (the fixed-key buffer) and a short one.
+  writer.write(msg::NavGoal{"robot-with-a-rather-long-identifier", "g1", 1.5, -2.0, 0.0, ""});
+  writer.write(msg::NavGoal{"r2", "g2", 3.0, 4.0, 0.0, ""});
+  const auto lines = run_tool("echo-string-key", {"topic", "echo", "tools_test/string_key", "--count", "2",
+                                                  "--timeout", "10", "--discovery-wait", "5"});
+  ASSERT_EQ(lines.size(), 2u) << read_file(dir().file("echo-string-key.err"));
+  std::vector<std::string> robots;
+  for (const auto& line : lines) {
+    const auto j = nlohmann::json::parse(line);
+    robots.push_back(j.value("robot_id", ""));
+    const bool short_key = robots.back() == "r2";
+    EXPECT_EQ(j.value(short_key ? "y" : "x", 0.0), short_key ? 4.0 : 1.5) << line;
+  }
+  std::sort(robots.begin(), robots.end());
+  EXPECT_EQ(robots, (std::vector<std::string>{"r2", "robot-with-a-rather-long-identifier"}));
 }
 
 // ddsperf publishes 50 samples/s of 1000 bytes; this test's process holds a best-effort writer

@@ -46,6 +46,53 @@ class BuiltinLoan {
   int n_ = 0;
 };
 
+// Whether the serialized form of a key field of this type can vary in size (a string, a
+// sequence or a union in it). Of a struct used as a key: its key members, or all of them when
+// none is marked.
+bool discovered_topic_key_varies(const Type& type) {
+  switch (type.kind) {
+    case Kind::String:
+    case Kind::Sequence:
+    case Kind::Union:
+      return true;
+    case Kind::Array:
+      return type.element && discovered_topic_key_varies(*type.element);
+    case Kind::Struct: {
+      const bool any_marked =
+          std::any_of(type.members.begin(), type.members.end(), [](const Member& m) { return m.key; });
+      return std::any_of(type.members.begin(), type.members.end(), [&](const Member& m) {
+        return (m.key || !any_marked) && m.type && discovered_topic_key_varies(*m.type);
+      });
+    }
+    default:
+      return false;
+  }
+}
+
+// Cyclone 0.10.2's dds_create_topic_descriptor sets DDS_TOPIC_FIXED_KEY(_XCDR2) ("the serialized
+// key fits in 16 bytes") for a key with a string in it (eclipse-cyclonedds/cyclonedds#1637 and
+// #2185; not on Cyclone master). Cyclone then serializes such a key into a 16-byte buffer inside
+// the sample and, when it does not fit, realloc()s that buffer: "realloc(): invalid pointer" on
+// the first sample of a string-keyed topic. The descriptor's fields are const: a copy with the
+// flags cleared, which owns the one Cyclone built (its keys and ops are shared).
+std::shared_ptr<dds_topic_descriptor_t> discovered_topic_fix_key_flags(dds_topic_descriptor_t* built, const Type& type) {
+  std::shared_ptr<dds_topic_descriptor_t> owner(built, [](dds_topic_descriptor_t* d) { dds_delete_topic_descriptor(d); });
+  const bool key_varies =
+      std::any_of(type.members.begin(), type.members.end(),
+                  [](const Member& m) { return m.key && m.type && discovered_topic_key_varies(*m.type); });
+  constexpr uint32_t kFixedKeyFlags = DDS_TOPIC_FIXED_KEY | DDS_TOPIC_FIXED_KEY_XCDR2;
+  if (!key_varies || (built->m_flagset & kFixedKeyFlags) == 0) return owner;
+  auto* copy = new dds_topic_descriptor_t{built->m_size,        built->m_align,   built->m_flagset & ~kFixedKeyFlags,
+                                          built->m_nkeys,       built->m_typename, built->m_keys,
+                                          built->m_nops,        built->m_ops,      built->m_meta,
+                                          built->type_information, built->type_mapping,
+                                          built->restrict_data_representation};
+  return std::shared_ptr<dds_topic_descriptor_t>(copy, [owner](dds_topic_descriptor_t* d) mutable {
+    delete d;
+    owner.reset();
+  });
+}
+
 }  // namespace
 
 TopicTypeFinder::TopicTypeFinder(dds_entity_t participant)
@@ -81,7 +128,7 @@ std::optional<DiscoveredTopic> TopicTypeFinder::find(const std::string& topic, d
       const dds_return_t rc = dds_create_topic_descriptor(DDS_FIND_SCOPE_GLOBAL, participant_, info, timeout, &descriptor);
       if (rc != DDS_RETCODE_OK)
         throw TypeLookupError(std::string("dds_create_topic_descriptor: ") + dds_strretcode(rc));
-      t.descriptor.reset(descriptor, [](dds_topic_descriptor_t* d) { dds_delete_topic_descriptor(d); });
+      t.descriptor = discovered_topic_fix_key_flags(descriptor, *t.type);
       return t;
     }
   }
