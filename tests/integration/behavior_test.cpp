@@ -284,7 +284,7 @@ TEST_F(BehaviorTest, MissionReachesItsEndState) {
   ASSERT_TRUE(await("mission finished", [&] {
     mission.poll();
     states.poll();
-    return !mission.all().empty() && mission.all().back().finished;
+    return !mission.all().empty() && mission.all().back().event == "finished";
   }, 90s)) << text();
 
   std::vector<std::string> events;
@@ -484,10 +484,12 @@ TEST_F(BehaviorTest, KilledMidMissionContinuesFromItsJournal) {
   ASSERT_FALSE(seen("transition", "to_goal")) << "the pause ended before the kill: " << text();
 
   auto& second = start_behavior("r1", args, true, "behavior-r1-second");
+  // The "finished" event, not the first sample with finished set: the transition into the final
+  // state, published in the same tick just before it, carries finished too.
   ASSERT_TRUE(await("mission finished after the restart", [&] {
     mission.poll();
     states.poll();
-    return !mission.all().empty() && mission.all().back().finished;
+    return !mission.all().empty() && mission.all().back().event == "finished";
   }, 90s)) << text();
   // mission/status is a state topic (keep-last 1 per robot): the restarted writer's first events
   // may go out before this reader has matched it, and then only the newest arrives. What did
