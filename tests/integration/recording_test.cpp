@@ -6,11 +6,13 @@
 //   ------  -----------------------------------------------
 //    197    RecordingTest.ALockstepRunIsReadByIndependentReaders
 //    198    RecordingTest.ARecorderKilledLeavesItsChunksReadable
+//     52    RecordingTest.ALockstepRunReplaysExactlyAndAnotherWorldDiffers
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <csignal>
 #include <cstdlib>
 #include <fstream>
@@ -29,6 +31,7 @@ using namespace std::chrono_literals;
 
 constexpr int kDomainIndependentReaders = 197;
 constexpr int kDomainKilled = 198;
+constexpr int kDomainReplay = 52;
 
 // What a recording holds, read with the project's reader.
 struct Contents {
@@ -203,6 +206,82 @@ TEST_F(RecordingTest, ARecorderKilledLeavesItsChunksReadable) {
   if (c.by_topic.count("autonomy/robot/state"))
     for (const auto& s : decode_all<msg::RobotState>(c.by_topic.at("autonomy/robot/state"), "autonomy/robot/state"))
       EXPECT_EQ(s.robot_id, "r1");
+}
+
+// Replay (issue 26): a lockstep run recorded from before the world started, fed back by
+// `autonomy replay` into a fresh simulator (the behavior and the test's goal left out: the
+// recorded commands stand in for them) reproduces every recorded robot state, clock and event
+// tick by tick. Fed into a world with an obstacle in the robot's way, it names the first state
+// that differs.
+TEST_F(RecordingTest, ALockstepRunReplaysExactlyAndAnotherWorldDiffers) {
+  join(kDomainReplay);
+  Recorder<msg::Heartbeat> beats(participant(), dds::topics::heartbeat);
+  Recorder<msg::GoalStatus> goals(participant(), dds::topics::goal_status);
+  dds::Topic<msg::NavGoal> goal_topic(participant(), dds::topics::nav_goal);
+  dds::Writer<msg::NavGoal> goal_writer(participant(), goal_topic);
+  const std::string file = dir().file("run.mcap");
+  auto& recorder = start_recorder(file);
+  ASSERT_TRUE(await("the recorder's readers", [&] { return log_says(recorder, "Ctrl-C stops"); }));
+  auto& simulator = start_simulator({"--wait-for", "behavior/r1"}, true, "simulator-recorded");
+  auto& behavior = start_behavior("r1");
+  ASSERT_TRUE(await_ready(beats, behavior));
+  ASSERT_TRUE(goal_writer.wait_for_readers(2, kDeadline));
+  goal_writer.write({"r1", "replay-goal", 18.0, 2.0, 0.0, ""});
+  ASSERT_TRUE(await("goal replay-goal reached", [&] {
+    goals.poll();
+    for (const auto& g : goals.all())
+      if (g.goal_id == "replay-goal" && g.state == msg::GoalState::Reached) return true;
+    return false;
+  }, 60s)) << states_text(goals.all());
+  std::this_thread::sleep_for(300ms);
+  recorder.signal(SIGINT);
+  const auto recorded = recorder.wait_for_exit(10s);
+  ASSERT_TRUE(recorded && recorded->exited && recorded->code == 0);
+  stop_watching(simulator);
+  stop_watching(behavior);
+  behavior.kill_and_wait();
+  simulator.kill_and_wait();
+  const auto c = read_recording(file);
+  const auto states = decode_all<msg::RobotState>(c.by_topic.at("autonomy/robot/state"), "autonomy/robot/state");
+  ASSERT_GT(states.size(), 20u);
+
+  auto replay = [&](const std::string& name, std::vector<std::string> simulator_args) {
+    simulator_args.insert(simulator_args.end(), {"--wait-for", "replay"});
+    auto& fresh = start_simulator(simulator_args, false, "simulator-" + name);
+    auto& tool = start(name, AUTONOMY_AUTONOMY_BIN, {"replay", file, "--domain", std::to_string(domain_)}, false);
+    const auto ended = tool.wait_for_exit(120s);
+    fresh.kill_and_wait();
+    return std::make_pair(ended, read_file(dir().file(name + ".out")));
+  };
+  // The same world: every recorded output back, exit 0.
+  const auto [same, same_out] = replay("replay-same", {});
+  ASSERT_TRUE(same.has_value()) << same_out;
+  EXPECT_TRUE(same->exited && same->code == 0) << same->describe() << "\n" << same_out;
+  EXPECT_NE(same_out.find("replay matches the recording"), std::string::npos) << same_out;
+  EXPECT_NE(same_out.find("autonomy/robot/state: " + std::to_string(states.size()) + " matched"), std::string::npos)
+      << "every recorded state (" << states.size() << ") compared and matched:\n" << same_out;
+  EXPECT_NE(same_out.find("autonomy/robot/cmd_vel ("), std::string::npos) << "the commands are inputs:\n" << same_out;
+
+  // A world with a crate where r1 was half-way: the first state that differs is at or before the
+  // tick r1 stood there, and the tool names it.
+  const msg::RobotState& half_way = states[states.size() / 2];
+  std::string crated = read_file(std::string(AUTONOMY_SOURCE_DIR) + "/deploy/scenarios/demo.pbtxt");
+  const auto world_end = crated.find("\n}\n", crated.find("world {"));
+  ASSERT_NE(world_end, std::string::npos);
+  std::ostringstream crate;
+  crate << "\n  obstacles { min_x: " << half_way.x - 0.2 << " min_y: " << half_way.y - 0.2 << " max_x: " << half_way.x + 0.2
+        << " max_y: " << half_way.y + 0.2 << " }";
+  crated.insert(world_end, crate.str());
+  write_file(dir().file("crated.pbtxt"), crated);
+  const auto [other, other_out] = replay("replay-crated", {"--config", dir().file("crated.pbtxt")});
+  ASSERT_TRUE(other.has_value()) << other_out;
+  EXPECT_TRUE(other->exited && other->code == 1) << other->describe() << "\n" << other_out;
+  const std::string said = "replay differs from the recording: autonomy/robot/state at tick ";
+  const auto at = other_out.find(said);
+  ASSERT_NE(at, std::string::npos) << other_out;
+  const int64_t tick = std::stoll(other_out.substr(at + said.size()));
+  EXPECT_GT(tick, states.front().tick) << other_out;
+  EXPECT_LE(tick, half_way.tick) << other_out;
 }
 
 }  // namespace

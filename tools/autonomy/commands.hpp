@@ -23,6 +23,7 @@ Command add_courier_knowledge(CLI::App& courier);
 Command add_plan(CLI::App& app);
 Command add_record(CLI::App& app);
 Command add_play(CLI::App& app);
+Command add_replay(CLI::App& app);
 Command add_bag_info(CLI::App& bag);
 
 }  // namespace autonomy::tools

@@ -80,7 +80,7 @@ int main(int argc, char** argv) {
                                          add_node_watch(*node),
                                          add_courier_send(*courier), add_courier_jobs(*courier),
                                          add_courier_cancel(*courier), add_courier_knowledge(*courier),
-                                         add_plan(app), add_record(app), add_play(app), add_bag_info(*bag)};
+                                         add_plan(app), add_record(app), add_play(app), add_replay(app), add_bag_info(*bag)};
   if (const int bad = check_command_words(app, argc, argv); bad != 0) return bad;
   try {
     app.parse(argc, argv);

@@ -44,6 +44,7 @@ class RawReader {
   void take(std::vector<RawSample>& out);
   dds_entity_t data_condition() const { return condition_.handle(); }
   const RecordableTopic& topic() const { return topic_; }
+  dds_entity_t topic_handle() const { return topic_entity_.handle(); }  // for its type (xtypes)
 
  private:
   RecordableTopic topic_;
@@ -70,6 +71,7 @@ class RawWriter {
   RawWriter(const dds::Participant& participant, const RecordableTopic& topic, const dds_qos_t* qos);
   void write(const std::string& cdr);  // throws std::runtime_error / dds::DdsError
   uint32_t matched_readers() const;
+  dds_entity_t topic_handle() const { return topic_entity_.handle(); }
 
  private:
   RecordableTopic topic_;
