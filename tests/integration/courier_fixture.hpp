@@ -62,7 +62,7 @@ class CourierTest : public ProcessTest {
                                      "--wait-for", "courier/main", "--wait-for", "test/commands", "--trajectory",
                                      dir().file("trajectory.csv")};
     for (const auto& name : wait_for_too) args.insert(args.end(), {"--wait-for", name});
-    start_simulator(args);
+    simulator_ = &start_simulator(args);
     behavior_ = &start_behavior("rhino", {"--config", scenario_});
     courier_ = &start_courier();
   }
@@ -264,6 +264,7 @@ class CourierTest : public ProcessTest {
   }
 
   std::string scenario_, journal_;
+  ChildProcess* simulator_ = nullptr;
   ChildProcess* behavior_ = nullptr;
   ChildProcess* courier_ = nullptr;
   std::optional<Recorder<msg::Heartbeat>> beats_;

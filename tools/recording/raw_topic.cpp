@@ -116,6 +116,12 @@ void RawWriter::write(const std::string& cdr) {
   dds::check(dds_write(writer_.handle(), sample.get()), "dds_write " + topic_.name);
 }
 
+uint32_t RawReader::matched_writers() const {
+  dds_subscription_matched_status_t st{};
+  dds::check(dds_get_subscription_matched_status(reader_.handle(), &st), "dds_get_subscription_matched_status");
+  return st.current_count;
+}
+
 uint32_t RawWriter::matched_readers() const {
   dds_publication_matched_status_t st{};
   dds::check(dds_get_publication_matched_status(writer_.handle(), &st), "dds_get_publication_matched_status");

@@ -45,6 +45,7 @@ class RawReader {
   dds_entity_t data_condition() const { return condition_.handle(); }
   const RecordableTopic& topic() const { return topic_; }
   dds_entity_t topic_handle() const { return topic_entity_.handle(); }  // for its type (xtypes)
+  uint32_t matched_writers() const;
 
  private:
   RecordableTopic topic_;

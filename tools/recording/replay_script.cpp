@@ -122,6 +122,9 @@ ReplayScript::ReplayScript(std::vector<RecordedSample> inputs, std::vector<Recor
   }
   std::stable_sort(outputs_.begin(), outputs_.end(),
                    [](const Expected& a, const Expected& b) { return a.due < b.due; });
+  if (!clock_ticks_.empty()) last_tick_ = clock_ticks_.back();
+  if (!inputs_.empty()) last_tick_ = std::max(last_tick_, inputs_.back().due);
+  for (const auto& e : outputs_) last_tick_ = std::max(last_tick_, e.tick);
 }
 
 std::optional<int64_t> ReplayScript::next_clock_after(int64_t tick) const {

@@ -77,6 +77,9 @@ class ReplayScript {
   // The recorded clock ticks, ascending; the first one after `tick` (nullopt: none).
   const std::vector<int64_t>& clock_ticks() const { return clock_ticks_; }
   std::optional<int64_t> next_clock_after(int64_t tick) const;
+  // The tick the fresh world must reach: the last recorded clock, or a later tick an input is
+  // due at or an output is stamped with (the recorder may have taken those after its last clock).
+  int64_t last_tick() const { return last_tick_; }
   // Recorded outputs to check (those stamped with a tick).
   std::size_t outputs() const { return outputs_.size(); }
 
@@ -99,6 +102,7 @@ class ReplayScript {
   };
   std::vector<ReplayInput> inputs_;
   std::vector<int64_t> clock_ticks_;
+  int64_t last_tick_ = kAtStart;
   std::vector<Expected> outputs_;  // by due, then log time
   std::size_t next_unchecked_ = 0;
   std::size_t matched_ = 0;

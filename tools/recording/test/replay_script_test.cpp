@@ -48,6 +48,7 @@ TEST(ReplayScript, InputsAreDueAtTheirTickTheClockShownOrTheWakeAndAcksGoLast) {
   EXPECT_EQ(s.next_clock_after(1), 9);
   EXPECT_EQ(s.next_clock_after(4), 9);
   EXPECT_FALSE(s.next_clock_after(9).has_value());
+  EXPECT_EQ(s.last_tick(), 9);
 }
 
 TEST(ReplayScript, OutputsAreDueAtTheNextClockAndMatchedExactlyWithoutTheWorldId) {
@@ -79,12 +80,14 @@ TEST(ReplayScript, OutputsAreDueAtTheNextClockAndMatchedExactlyWithoutTheWorldId
 }
 
 TEST(ReplayScript, OutputsReceivedAfterTheLastClockAreCheckedAtTheEnd) {
-  ReplayScript s({}, {state(39, "r1", 3, 2.0)}, {clock(40, 3)});
+  ReplayScript s({}, {state(39, "r1", 3, 2.0), state(45, "r1", 5, 2.5)}, {clock(40, 3)});
+  EXPECT_EQ(s.last_tick(), 5) << "the world must reach the last state recorded, after the last clock";
   EXPECT_FALSE(s.check_due_by(3).has_value());
   EXPECT_TRUE(s.check_due_by(INT64_MAX).has_value());
   s.fresh_output("autonomy/robot/state", 3, Json{{"robot_id", "r1"}, {"tick", 3}, {"x", 2.0}});
+  s.fresh_output("autonomy/robot/state", 5, Json{{"robot_id", "r1"}, {"tick", 5}, {"x", 2.5}});
   EXPECT_FALSE(s.check_due_by(INT64_MAX).has_value());
-  EXPECT_EQ(s.outputs_by_topic(), (std::map<std::string, std::size_t>{{"autonomy/robot/state", 1}}));
+  EXPECT_EQ(s.outputs_by_topic(), (std::map<std::string, std::size_t>{{"autonomy/robot/state", 2}}));
 }
 
 TEST(ReplayScript, WorldContentDropsTheWorldIdAtAnyDepth) {
