@@ -245,6 +245,17 @@ TEST_F(RecordingTest, ALockstepRunReplaysExactlyAndAnotherWorldDiffers) {
   const auto states = decode_all<msg::RobotState>(c.by_topic.at("autonomy/robot/state"), "autonomy/robot/state");
   ASSERT_GT(states.size(), 20u);
 
+  // No world yet: the tool says how to start one, from the recorded simulator's heartbeat.
+  auto& early = start("replay-early", AUTONOMY_AUTONOMY_BIN,
+                      {"replay", file, "--domain", std::to_string(domain_), "--world-wait", "1"}, false);
+  const auto early_end = early.wait_for_exit(30s);
+  ASSERT_TRUE(early_end && early_end->exited && early_end->code == 1);
+  EXPECT_NE(read_file(dir().file("replay-early.out"))
+                .find("start one with the recorded scenario, in lockstep, waiting for the replay:\n  simulator "
+                      "--mode lockstep --wait-for replay --domain " + std::to_string(domain_)),
+            std::string::npos)
+      << read_file(dir().file("replay-early.out"));
+
   auto replay = [&](const std::string& name, std::vector<std::string> simulator_args) {
     simulator_args.insert(simulator_args.end(), {"--wait-for", "replay"});
     auto& fresh = start_simulator(simulator_args, false, "simulator-" + name);

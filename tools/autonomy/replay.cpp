@@ -14,6 +14,7 @@
 #include <memory>
 #include <set>
 
+#include "common/dds/message_types.hpp"
 #include "common/mcap/reader.hpp"
 #include "tools/autonomy/commands.hpp"
 #include "tools/autonomy/discovery.hpp"
@@ -78,6 +79,27 @@ struct ReplayTopic {
   std::size_t recorded = 0;
 };
 
+// How to start the fresh world: the recorded simulator's scenario (its heartbeat's detail).
+std::string simulator_command(const std::map<std::string, uint16_t>& channel_of,
+                              std::map<uint16_t, std::vector<mcap::Message>>& messages, const std::string& participant,
+                              int domain) {
+  std::string config;
+  const auto* heartbeat = recording::find_recordable("autonomy/heartbeat");
+  if (const auto it = channel_of.find("autonomy/heartbeat"); it != channel_of.end() && heartbeat)
+    for (const auto& m : messages[it->second]) {
+      try {
+        recording::DecodedSample d(heartbeat->descriptor, m.data);
+        const auto h = dds::DdsType<msg::Heartbeat>::from_c(*static_cast<const dds::DdsType<msg::Heartbeat>::C*>(d.get()));
+        if (h.service == "simulator" && !h.detail.empty()) config = h.detail;
+      } catch (const std::runtime_error&) {
+      }
+    }
+  std::string command = "simulator";
+  if (config.empty()) command += " --config <the recorded scenario>";
+  else if (config.rfind("builtin:", 0) != 0) command += " --config " + config;
+  return command + " --mode lockstep --wait-for " + participant + " --domain " + std::to_string(domain);
+}
+
 std::optional<int64_t> tick_of(const Json& value) {
   if (value.is_object() && value.contains("tick") && value.at("tick").is_number_integer())
     return value.at("tick").get<int64_t>();
@@ -107,13 +129,14 @@ int run_replay(const ReplayOptions& o, Context& ctx) {
   dds::Participant participant(o.domain);
   Interrupt interrupt(ctx.signals, participant);
   Discovery discovery(participant);
-  std::cerr << "autonomy replay: waiting for a fresh world on domain " << o.domain << " (simulator in lockstep, "
-            << "--wait-for " << o.participant << ")\n";
+  const std::string start_world = simulator_command(channel_of, messages, o.participant, o.domain);
+  std::cerr << "autonomy replay: waiting for a fresh world on domain " << o.domain << " (" << start_world << ")\n";
   const auto world = discover_world(discovery, interrupt, participant, o.world_wait_s);
   if (!world) {
     if (interrupt.requested()) return kExitInterrupted;
     std::cerr << "autonomy replay: no world on domain " << o.domain << " within " << o.world_wait_s
-              << " s: start the simulator with the recorded scenario and --wait-for " << o.participant << "\n";
+              << " s: start one with the recorded scenario, in lockstep, waiting for the replay:\n  " << start_world
+              << "\n";
     return kExitFailed;
   }
 
