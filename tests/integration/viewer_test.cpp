@@ -241,8 +241,9 @@ TEST_F(ViewerTest, PortInUseIsAClearError) {
 
 // The page in a real browser (Debian's chromium, headless, driven by tests/node/viewer_page_check.js
 // over the DevTools pipe): no console errors, r1 drawn at a new position between two reads, d1
-// drawn closed, and a courier job's state change shown in the jobs table (the test writes the
-// job's states as the courier would: queued, then underway once the page shows it queued).
+// drawn closed, a courier job's state change shown in the jobs table (the test writes the job's
+// states as the courier would: queued, then underway once the page shows it queued), and a
+// planner's latest plan drawn as a timeline with a bar per token.
 // Skipped where node or chromium is missing (deploy/test.sh installs both).
 TEST_F(ViewerTest, PageInHeadlessChromiumDrawsTheMovingRobotTheClosedDoorAndAJobChange) {
   const std::string node = viewer_find_program("node");
@@ -259,11 +260,37 @@ TEST_F(ViewerTest, PageInHeadlessChromiumDrawsTheMovingRobotTheClosedDoorAndAJob
   job.from = "A-111";
   job.to = "A-120";
   job_writer.write(job);
+  // A planner's latest plan (transient-local, as the planner keeps it): two timelines, three tokens.
+  dds::Topic<msg::LatestPlan> plan_topic(participant(), dds::topics::planner_plan);
+  dds::Writer<msg::LatestPlan> plan_writer(participant(), plan_topic);
+  msg::LatestPlan latest;
+  latest.requester = "executive/test";
+  latest.request_id = "req-1";
+  latest.engine = "chronological";
+  latest.plan.horizon = 100;
+  latest.plan.makespan = 60;
+  auto token = [](uint32_t id, const std::string& object, const std::string& predicate, int64_t start, int64_t end,
+                  int64_t end_ub) {
+    msg::PlanToken t;
+    t.id = id;
+    t.object = object;
+    t.attribute = "mode";
+    t.predicate = predicate;
+    t.start_lb = t.start_ub = start;
+    t.end_lb = end;
+    t.end_ub = end_ub;
+    return t;
+  };
+  latest.plan.tokens = {token(0, "camera", "ready", 0, 10, 20), token(1, "camera", "imaging", 10, 40, 50),
+                        token(2, "engine", "thrusting", 5, 60, 60)};
+  latest.plan.timelines = {{"camera.mode", {0, 1}}, {"engine.mode", {2}}};
+  plan_writer.write(latest);
   const uint16_t port = start_world_with_viewer();
   ASSERT_NE(port, 0);
   std::vector<std::string> args = {std::string(AUTONOMY_SOURCE_DIR) + "/tests/node/viewer_page_check.js", "--url",
                                     "http://127.0.0.1:" + std::to_string(port) + "/", "--chromium", chromium, "--door",
-                                    "d1", "--job", "job-1", "--screenshot", dir().file("viewer.png")};
+                                    "d1", "--job", "job-1", "--plan", "executive/test:3", "--screenshot",
+                                    dir().file("viewer.png")};
   auto& check = start("viewer_page_check", node, args, false);
   // r1 keeps driving while Chromium starts (under load that takes longer than the 6 m drive to the
   // first goal, and the page must see it move): a new goal every 4 s, west and east in turn.

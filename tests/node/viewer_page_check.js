@@ -4,7 +4,7 @@
 // in, fd 4 out, messages ended by NUL), so it needs no npm package and no WebSocket in node.
 //
 //   node viewer_page_check.js --url http://127.0.0.1:PORT/ [--chromium /usr/bin/chromium]
-//        [--door ID] [--job ID] [--screenshot FILE.png] [--timeout-s 60]
+//        [--door ID] [--job ID] [--plan REQUESTER:TOKENS] [--screenshot FILE.png] [--timeout-s 60]
 //
 // Checks, printing one line each and a JSON summary last; exit code 0 when all hold, 1 otherwise:
 //   - the page loads and receives frames without console errors or uncaught exceptions;
@@ -12,7 +12,9 @@
 //   - with --door ID: the door is drawn closed (the page's state says closed and the canvas pixel
 //     at the middle of its leaf has the closed leaf's colour);
 //   - with --job ID: the courier job's state shown in the jobs table changes (the check prints
-//     "job ID seen: STATE" when it first shows, so a test can then change the state).
+//     "job ID seen: STATE" when it first shows, so a test can then change the state);
+//   - with --plan REQUESTER:TOKENS: the requester's latest plan is drawn as a timeline with that
+//     many token bars, and the canvas pixel in the middle of each bar has the bar's colour.
 "use strict";
 const { spawn } = require("child_process");
 const fs = require("fs");
@@ -20,13 +22,14 @@ const os = require("os");
 const path = require("path");
 
 function parseArgs(argv) {
-  const out = { chromium: "/usr/bin/chromium", door: "", job: "", screenshot: "", timeoutS: 60, url: "" };
+  const out = { chromium: "/usr/bin/chromium", door: "", job: "", plan: "", screenshot: "", timeoutS: 60, url: "" };
   for (let i = 2; i < argv.length; i++) {
     const a = argv[i], v = argv[i + 1];
     if (a === "--url") out.url = v;
     else if (a === "--chromium") out.chromium = v;
     else if (a === "--door") out.door = v;
     else if (a === "--job") out.job = v;
+    else if (a === "--plan") out.plan = v;
     else if (a === "--screenshot") out.screenshot = v;
     else if (a === "--timeout-s") out.timeoutS = Number(v);
     else { console.error(`viewer_page_check: unknown argument ${a}`); process.exit(2); }
@@ -161,6 +164,22 @@ async function main() {
         later = await evaluate(shownState);
       }
       check(`job ${args.job} state change drawn`, !!first && later !== first, `${first} -> ${later}`);
+    }
+
+    if (args.plan) {
+      const at = args.plan.lastIndexOf(":");
+      const requester = args.plan.slice(0, at), tokens = Number(args.plan.slice(at + 1));
+      const drawn = await waitFor(`the plan of ${requester} as a timeline`, `(() => {
+        const c = [...document.querySelectorAll("canvas.plan-timeline")].find(c => c.dataset.requester === ${JSON.stringify(requester)});
+        if (!c || !c.bars || !c.bars.length) return null;
+        const g = c.getContext("2d");
+        return c.bars.map(b => {
+          const p = g.getImageData(Math.round(b.x + b.w / 2), Math.round(b.y + b.h / 2), 1, 1).data;
+          return { predicate: b.predicate, filled: p[3] > 0 && !(p[0] > 240 && p[1] > 240 && p[2] > 240) };
+        });
+      })()`).catch(e => e.message);
+      const ok = Array.isArray(drawn) && drawn.length === tokens && drawn.every(b => b.filled);
+      check(`plan of ${requester} drawn as a timeline of ${tokens} tokens`, ok, JSON.stringify(drawn));
     }
 
     if (args.screenshot) {
