@@ -351,10 +351,11 @@ void SimulatorNode::on_timer() {
     // --wait-for participants, those already there cannot be late, and the ack timeout counts
     // from the end of the hold (a participant registered seconds after the simulator started
     // was dropped at once, and a replay's recorded participants with it).
-    if (holding_start()) barrier_.begin_tick(tick_, now_s);
+    const bool holding = holding_start();
+    if (holding) barrier_.begin_tick(tick_, now_s);
     // A quiet tick waits for nobody's ack.
-    for (const auto& p : quiet_ || holding_start() ? std::vector<std::string>{}
-                                                   : barrier_.expire(tick_, now_s, options_.settings.ack_timeout_s)) {
+    for (const auto& p : quiet_ || holding ? std::vector<std::string>{}
+                                           : barrier_.expire(tick_, now_s, options_.settings.ack_timeout_s)) {
       ++participants_dropped_;
       lockstep_changed(p, true,
                        fmt::format("it did not acknowledge tick {} within the ack timeout ({} s); {}", tick_,

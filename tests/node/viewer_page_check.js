@@ -14,7 +14,8 @@
 //   - with --job ID: the courier job's state shown in the jobs table changes (the check prints
 //     "job ID seen: STATE" when it first shows, so a test can then change the state);
 //   - with --plan REQUESTER:TOKENS: the requester's latest plan is drawn as a timeline with that
-//     many token bars, and the canvas pixel in the middle of each bar has the bar's colour.
+//     many token bars, and the canvas pixel in the middle of each bar is painted (not the
+//     white background).
 "use strict";
 const { spawn } = require("child_process");
 const fs = require("fs");
