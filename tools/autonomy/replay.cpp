@@ -34,7 +34,7 @@ using recording::RecordedSample;
 
 constexpr const char* kClockTopic = "autonomy/clock";
 constexpr const char* kRegistrationTopic = "autonomy/lockstep/registration";
-constexpr const char* kAckTopic = "autonomy/lockstep/ack";
+constexpr const char* kAckTopic = recording::kLockstepAckTopic;
 
 struct ReplayOptions {
   int domain = 0;

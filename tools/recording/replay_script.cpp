@@ -63,7 +63,7 @@ std::string OutputMismatch::describe() const {
 }
 
 ReplayScript::ReplayScript(std::vector<RecordedSample> inputs, std::vector<RecordedSample> outputs,
-                           std::vector<RecordedSample> clocks, const ReplayProtocol& protocol) {
+                           std::vector<RecordedSample> clocks) {
   by_log_time(inputs);
   by_log_time(outputs);
   std::vector<std::pair<uint64_t, int64_t>> clock_at;  // (publish time, tick), by publish time
@@ -84,7 +84,7 @@ ReplayScript::ReplayScript(std::vector<RecordedSample> inputs, std::vector<Recor
   // Each participant's acks in the order written: a repeated one is due at the next one's tick.
   std::map<std::string, std::vector<std::size_t>> acks_of;
   for (std::size_t i = 0; i < inputs.size(); ++i)
-    if (inputs[i].topic == protocol.ack_topic && inputs[i].tick)
+    if (inputs[i].topic == kLockstepAckTopic && inputs[i].tick)
       acks_of[inputs[i].value.value("participant", "")].push_back(i);
   std::vector<std::optional<int64_t>> woke_at(inputs.size());
   for (const auto& [participant, acks] : acks_of)
@@ -106,7 +106,7 @@ ReplayScript::ReplayScript(std::vector<RecordedSample> inputs, std::vector<Recor
   std::vector<Ordered> ordered;
   for (std::size_t i = 0; i < inputs.size(); ++i) {
     auto& s = inputs[i];
-    const bool ack = s.topic == protocol.ack_topic;
+    const bool ack = s.topic == kLockstepAckTopic;
     const int64_t due = woke_at[i] ? *woke_at[i] : s.tick ? *s.tick : shown_at(s.publish_time);
     ordered.push_back({{due, s.topic, std::move(s.cdr)}, ack, i});
   }

@@ -47,11 +47,8 @@ struct ReplayInput {
   std::string cdr;
 };
 
-// The topics a replay treats specially: the world's clock and the lockstep acknowledgements.
-struct ReplayProtocol {
-  std::string clock_topic = "autonomy/clock";
-  std::string ack_topic = "autonomy/lockstep/ack";
-};
+// The lockstep acknowledgements: the one input topic a replay orders specially.
+inline constexpr const char* kLockstepAckTopic = "autonomy/lockstep/ack";
 
 // A value without the members that name the run rather than the world (world_id, at any depth).
 Json world_content(Json value);
@@ -70,7 +67,7 @@ class ReplayScript {
   // the recorded clock samples. Any order: sorted here by log time (one topic's samples keep
   // the order they were written in).
   ReplayScript(std::vector<RecordedSample> inputs, std::vector<RecordedSample> outputs,
-               std::vector<RecordedSample> clocks, const ReplayProtocol& protocol = {});
+               std::vector<RecordedSample> clocks);
 
   // Every input in the order to republish it, with the tick it is due at.
   const std::vector<ReplayInput>& inputs() const { return inputs_; }
