@@ -3,13 +3,36 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <optional>
 
 namespace autonomy::xtypes {
 
 namespace {
 
+// "string \"abc\"", "number 7", "an array": what an error message says it found.
+std::string describe(const Json& j) {
+  switch (j.type()) {
+    case Json::value_t::object: return "an object";
+    case Json::value_t::array: return "an array";
+    case Json::value_t::string: return "string " + j.dump();
+    case Json::value_t::boolean: return "boolean " + j.dump();
+    case Json::value_t::number_integer: case Json::value_t::number_unsigned: case Json::value_t::number_float:
+      return "number " + j.dump();
+    default: return j.dump();
+  }
+}
+
 [[noreturn]] void bad(const std::string& path, const std::string& expected, const Json& got) {
-  throw CdrError((path.empty() ? std::string("message") : path) + ": expected " + expected + ", got " + got.dump());
+  throw CdrError((path.empty() ? std::string("message") : path) + ": expected " + expected + ", got " + describe(got));
+}
+
+// A number written with a fraction that has none (12.0) is the integer: JSON from other tools
+// (and JavaScript) does not tell 12 from 12.0. nullopt for anything else.
+std::optional<Json> whole_number(const Json& j) {
+  if (!j.is_number_float()) return std::nullopt;
+  const double d = j.get<double>();
+  if (!(std::trunc(d) == d) || std::fabs(d) >= 9.2e18) return std::nullopt;
+  return d < 0 ? Json(static_cast<int64_t>(d)) : Json(static_cast<uint64_t>(d));
 }
 
 std::string decode_base64(const std::string& text, const std::string& path) {
@@ -81,9 +104,11 @@ class CdrEncoder {
       case Kind::UInt32: return integer(j, path, 4, 0, UINT32_MAX);
       case Kind::Int64: return integer(j, path, 8, std::numeric_limits<int64_t>::min(), std::numeric_limits<int64_t>::max());
       case Kind::UInt64: {
-        if (j && !j->is_number_unsigned() && !(j->is_number_integer() && j->get<int64_t>() >= 0))
-          bad(path, "an unsigned integer", *j);
-        const uint64_t v = j ? j->get<uint64_t>() : 0;
+        const std::optional<Json> whole = j ? whole_number(*j) : std::nullopt;
+        const Json* given = whole ? &*whole : j;
+        if (given && !given->is_number_unsigned() && !(given->is_number_integer() && given->get<int64_t>() >= 0))
+          bad(path, "an unsigned integer", *given);
+        const uint64_t v = given ? given->get<uint64_t>() : 0;
         put(v, 8);
         return v;
       }
@@ -137,10 +162,12 @@ class CdrEncoder {
   }
 
  private:
-  Json integer(const Json* j, const std::string& path, size_t n, int64_t lo, int64_t hi) {
+  Json integer(const Json* given, const std::string& path, size_t n, int64_t lo, int64_t hi) {
     int64_t v = 0;
+    const std::optional<Json> whole = given ? whole_number(*given) : std::nullopt;
+    const Json* j = whole ? &*whole : given;
     if (j) {
-      if (!j->is_number_integer()) bad(path, "an integer", *j);
+      if (!j->is_number_integer()) bad(path, "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]", *j);
       if (j->is_number_unsigned() && j->get<uint64_t>() > static_cast<uint64_t>(hi))
         throw CdrError(path + ": " + j->dump() + " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
       v = j->get<int64_t>();
@@ -312,6 +339,17 @@ class CdrEncoder {
 };
 
 }  // namespace
+
+Json parse_json(const std::string& text) {
+  try {
+    return Json::parse(text);
+  } catch (const Json::parse_error& e) {
+    // nlohmann's text starts with "[json.exception.parse_error.101] parse error at line 1, ...".
+    std::string what = e.what();
+    if (const auto p = what.find("] "); p != std::string::npos) what = what.substr(p + 2);
+    throw CdrError("invalid JSON: " + what);
+  }
+}
 
 Encoded json_to_cdr(const Type& type, const Json& j) {
   static_assert(sizeof(uint32_t) == 4);

@@ -16,7 +16,10 @@ struct Encoded {
   Json complete;    // the JSON with every member (what the walker prints for cdr, octets as numbers)
 };
 
-// Throws CdrError.
+// Throws CdrError. Numbers with a fraction of zero (12.0) are taken for integer members.
 Encoded json_to_cdr(const Type& type, const Json& j);
+
+// Text as JSON; throws CdrError("invalid JSON: <where and why>").
+Json parse_json(const std::string& text);
 
 }  // namespace autonomy::xtypes

@@ -1,8 +1,8 @@
 #pragma once
 // One walker for every type: a serialized sample (CDR as on the wire, with its 4-byte
 // encapsulation header; XCDR1 or XCDR2, either byte order; final, appendable and mutable types)
-// printed as JSON by its type tree (type_tree.hpp). It prints what tools/json's per-message
-// tables printed: members in order, enums as lower-case names, non-finite floats as the strings
+// printed as JSON by its type tree (type_tree.hpp), for every topic (`autonomy topic echo`, the
+// viewer's panels): members in order, enums as lower-case names, non-finite floats as the strings
 // "nan", "inf", "-inf"; unions as {"_d": discriminator, "<case name>": value}; absent
 // optional members left out; bitmasks as the list of set flag names.
 #include <nlohmann/json.hpp>
@@ -22,7 +22,7 @@ class CdrError : public std::runtime_error {
 };
 
 // How sequences and arrays of octets print: {"length": n, "base64": "..."} (default),
-// {"length": n, "hex": "0a1b..."}, or an array of numbers (what tools/json printed).
+// {"length": n, "hex": "0a1b..."}, or an array of numbers.
 enum class BytesStyle { Base64, Hex, Numbers };
 
 struct WalkOptions {

@@ -95,6 +95,21 @@ std::shared_ptr<dds_topic_descriptor_t> discovered_topic_fix_key_flags(dds_topic
 
 }  // namespace
 
+DiscoveredTopic compiled_topic(dds_entity_t participant, const std::string& name, const dds_topic_descriptor_t* descriptor) {
+  DiscoveredTopic t;
+  t.name = name;
+  t.type_name = descriptor->m_typename;
+  // Cyclone's descriptor built from type objects mishandles string keys (see above): the
+  // compiled one is used for reading and writing, the type objects only for the tree.
+  t.descriptor = std::shared_ptr<dds_topic_descriptor_t>(const_cast<dds_topic_descriptor_t*>(descriptor),
+                                                         [](dds_topic_descriptor_t*) {});
+  // Creating the topic registers its type in the domain's type library (local: no lookup waits).
+  const dds::Entity topic(
+      dds::check(dds_create_topic(participant, descriptor, name.c_str(), nullptr, nullptr), "dds_create_topic " + name));
+  t.type = TypeLookup(participant, DDS_SECS(1)).resolve_entity(topic.handle());
+  return t;
+}
+
 TopicTypeFinder::TopicTypeFinder(dds_entity_t participant)
     : participant_(participant),
       publications_(dds::check(dds_create_reader(participant, DDS_BUILTIN_TOPIC_DCPSPUBLICATION, nullptr, nullptr),

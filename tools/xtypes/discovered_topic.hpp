@@ -22,6 +22,12 @@ struct DiscoveredTopic {
   std::shared_ptr<dds_topic_descriptor_t> descriptor;
 };
 
+// A topic whose type this process has compiled in (an idlc descriptor, with the type
+// information idlc generated): its type as Cyclone's type library holds it once the topic is
+// created, the same tree a foreign type gets, so one walker prints both. descriptor is not
+// owned (idlc's are static). Throws TypeLookupError, dds::DdsError.
+DiscoveredTopic compiled_topic(dds_entity_t participant, const std::string& name, const dds_topic_descriptor_t* descriptor);
+
 class TopicTypeFinder {
  public:
   explicit TopicTypeFinder(dds_entity_t participant);

@@ -12,9 +12,11 @@
 #include "tools/xtypes/cdr_json.hpp"
 #include "tools/xtypes/field_path.hpp"
 #include "tools/xtypes/type_idl.hpp"
+#include "tools/xtypes/test/type_builders.hpp"
 
 namespace autonomy::xtypes {
 namespace {
+using namespace ::autonomy::xtypes::test;
 
 // Builds a sample the way a CDR writer does: alignment from the end of the 4-byte header.
 class CdrBytes {
@@ -57,27 +59,6 @@ class CdrBytes {
   std::string out_;
 };
 
-TypePtr prim(Kind k) { return make_type(k); }
-TypePtr seq(TypePtr e) {
-  auto t = make_type(Kind::Sequence);
-  t->element = std::move(e);
-  return t;
-}
-TypePtr strukt(const std::string& name, std::vector<Member> members, Extensibility ext = Extensibility::Final) {
-  auto t = make_type(Kind::Struct);
-  t->name = name;
-  t->members = std::move(members);
-  t->extensibility = ext;
-  return t;
-}
-Member mem(const std::string& name, TypePtr t, uint32_t id = 0, bool key = false) {
-  Member m;
-  m.name = name;
-  m.type = std::move(t);
-  m.id = id;
-  m.key = key;
-  return m;
-}
 TypePtr goal_state() {
   auto e = make_type(Kind::Enum);
   e->name = "autonomy::GoalState";
