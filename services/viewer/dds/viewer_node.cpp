@@ -19,6 +19,14 @@ namespace {
 // writer leaves the picture; other topics keep their last value (a closed door stays closed).
 bool viewer_instance_gone(dds::InstanceState s) { return s != dds::InstanceState::Alive; }
 
+// A panel's key: the values of the sample's key members ("ds1"; several joined with '/').
+std::string panel_key(const xtypes::Json& key) {
+  std::string out;
+  for (const auto& [name, value] : key.items())
+    out += (out.empty() ? "" : "/") + (value.is_string() ? value.get<std::string>() : value.dump());
+  return out;
+}
+
 }  // namespace
 
 ViewerNode::ViewerNode(service::Service& service, ViewerNodeOptions options)
@@ -32,11 +40,7 @@ ViewerNode::ViewerNode(service::Service& service, ViewerNodeOptions options)
       goal_statuses_(service.participant(), dds::topics::goal_status),
       itineraries_(service.participant(), dds::topics::itinerary),
       links_(service.participant(), dds::topics::radio_link),
-      jobs_(service.participant(), dds::topics::courier_job_status),
-      telemetry_(service.participant(), dds::topics::spacecraft_telemetry),
-      faults_(service.participant(), dds::topics::truth_spacecraft_fault),
-      executives_(service.participant(), dds::topics::executive_status),
-      plans_(service.participant(), dds::topics::planner_plan) {
+      jobs_(service.participant(), dds::topics::courier_job_status) {
   if (!(options_.rate_hz > 0.0 && options_.rate_hz <= 100.0))
     throw std::invalid_argument("viewer: --rate must be in (0, 100] frames per second");
   // Every catalogue topic as a Foxglove channel: CDR samples, the type's self-contained IDL.
@@ -75,10 +79,10 @@ ViewerNode::ViewerNode(service::Service& service, ViewerNodeOptions options)
   follow(itineraries_);
   follow(links_);
   follow(jobs_);
-  follow_panel(telemetry_, "spacecraft", [](const msg::SpacecraftTelemetry& t) { return t.spacecraft; });
-  follow_panel(faults_, "faults", [](const msg::SpacecraftFaultState& f) { return f.fault_id; });
-  follow_panel(executives_, "executive", [](const msg::ExecutiveStatus& e) { return e.executive; });
-  follow_panel(plans_, "plans", [](const msg::LatestPlan& p) { return p.requester; });
+  follow_panel(dds::topics::spacecraft_telemetry.name, "spacecraft");
+  follow_panel(dds::topics::truth_spacecraft_fault.name, "faults");
+  follow_panel(dds::topics::executive_status.name, "executive");
+  follow_panel(dds::topics::planner_plan.name, "plans");
   const auto period = std::chrono::nanoseconds(static_cast<int64_t>(1e9 / options_.rate_hz));
   loop.every(period, [this] { push_frames(); });
   loop.every(std::chrono::milliseconds(20), [this] { pump_foxglove(); });
@@ -101,14 +105,23 @@ void ViewerNode::follow(Subscription<T>& subscription) {
   });
 }
 
-template <typename T, typename KeyOf>
-void ViewerNode::follow_panel(Subscription<T>& subscription, const char* group, KeyOf key_of) {
-  service_.loop().on_samples<T>(subscription.reader, [this, group, key_of](std::vector<dds::Sample<T>> samples) {
-    for (const auto& s : samples) {
-      if (viewer_instance_gone(s.instance_state))
-        panels_.erase(group, key_of(s.value));
-      else if (s.valid)
-        panels_.apply(s.value);
+void ViewerNode::follow_panel(const std::string& topic, const char* group) {
+  const recording::RecordableTopic* ours = recording::find_recordable(topic);
+  if (!ours) throw std::logic_error("viewer: panel topic " + topic + " is not in the catalogue");
+  const auto& participant = service_.participant();
+  auto reader = std::make_unique<xtypes::JsonReader>(
+      participant.handle(), xtypes::compiled_topic(participant.handle(), ours->name, ours->descriptor),
+      dds::make_qos(ours->qos).get());
+  xtypes::JsonReader* r = reader.get();
+  panel_readers_.push_back(std::move(reader));
+  service_.loop().on_condition(r->data_condition(), [this, r, group] {
+    for (const auto& s : r->take()) {
+      if (!s.error.empty())
+        spdlog::warn("viewer: a sample of {} does not fit its type: {}", r->topic().name, s.error);
+      else if (s.valid && s.instance_state == DDS_IST_ALIVE)
+        panels_.apply(group, panel_key(s.key), s.json);
+      else if (s.instance_state != DDS_IST_ALIVE && !s.key.empty())
+        panels_.erase(group, panel_key(s.key));
     }
   });
 }

@@ -4,7 +4,9 @@
 // courier job states) into a WorldView, and pushes frames to the web pages at most `rate_hz`
 // times a second, only when something changed (and once a second regardless, so that a page
 // sees the viewer is alive). Spacecraft telemetry and faults, executive status and the
-// planner's latest plans go to the side panels (Panels), at most twice a second. It writes nothing but its heartbeat; it joins a running set at any
+// planner's latest plans go to the side panels (Panels), at most twice a second (read as CDR and
+// walked with their type information, tools/xtypes: the panels show what `autonomy topic echo`
+// prints). It writes nothing but its heartbeat; it joins a running set at any
 // time because every topic it reads for state is transient-local (a late joiner gets the last
 // sample of each key), except goals, whose positions it learns from the next goal sent.
 //
@@ -19,6 +21,7 @@
 #include "services/viewer/core/world_view.hpp"
 #include "services/viewer/web/web_server.hpp"
 #include "tools/recording/raw_topic.hpp"
+#include "tools/xtypes/json_reader.hpp"
 
 #include <chrono>
 #include <map>
@@ -52,9 +55,9 @@ class ViewerNode {
   };
   template <typename T>
   void follow(Subscription<T>& subscription);
-  // A side panel's topic: the latest sample of each key; a disposed or lost one leaves.
-  template <typename T, typename KeyOf>
-  void follow_panel(Subscription<T>& subscription, const char* group, KeyOf key_of);
+  // A side panel's topic (a catalogue topic): the latest sample of each key; a disposed or lost
+  // one leaves.
+  void follow_panel(const std::string& topic, const char* group);
   void push_frames();
   // Readers for the Foxglove subscriptions made or deleted as they come and go; their samples
   // sent.
@@ -72,10 +75,7 @@ class ViewerNode {
   Subscription<msg::RadioLink> links_;
   Subscription<msg::CourierJobStatus> jobs_;
   Panels panels_;
-  Subscription<msg::SpacecraftTelemetry> telemetry_;
-  Subscription<msg::SpacecraftFaultState> faults_;
-  Subscription<msg::ExecutiveStatus> executives_;
-  Subscription<msg::LatestPlan> plans_;
+  std::vector<std::unique_ptr<xtypes::JsonReader>> panel_readers_;
   std::vector<const recording::RecordableTopic*> foxglove_topics_;  // by channel id - 1
   std::unique_ptr<WebServer> server_;
   std::map<uint64_t, std::unique_ptr<recording::RawReader>> foxglove_readers_;  // by stream

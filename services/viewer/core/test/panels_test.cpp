@@ -9,22 +9,15 @@ namespace {
 TEST(PanelsTest, KeepsTheLatestSampleOfEachKeyAndForgetsErasedOnes) {
   Panels panels;
   EXPECT_EQ(panels.frame(), (nlohmann::json{{"type", "panels"}}));
-  msg::SpacecraftFaultState fault;
-  fault.fault_id = "f1";
-  fault.kind = "stuck_on";
-  fault.active = true;
-  panels.apply(fault);
-  fault.active = false;
-  fault.ended_by = "reset";
-  panels.apply(fault);
-  msg::ExecutiveStatus status;
-  status.executive = "main";
-  status.state = "executing";
-  panels.apply(status);
+  panels.apply("faults", "f1", {{"fault_id", "f1"}, {"kind", "stuck_on"}, {"active", true}, {"ended_by", ""}});
+  panels.apply("faults", "f1", {{"fault_id", "f1"}, {"kind", "stuck_on"}, {"active", false}, {"ended_by", "reset"}});
+  panels.apply("executive", "main", {{"executive", "main"}, {"state", "executing"}});
   const uint64_t before = panels.version();
+  EXPECT_EQ(before, 3u);
 
   const auto f = panels.frame();
   EXPECT_EQ(f["type"], "panels");
+  ASSERT_EQ(f["faults"].size(), 1u);
   EXPECT_FALSE(f["faults"]["f1"]["active"].get<bool>());
   EXPECT_EQ(f["faults"]["f1"]["ended_by"], "reset");
   EXPECT_EQ(f["executive"]["main"]["state"], "executing");
@@ -33,6 +26,7 @@ TEST(PanelsTest, KeepsTheLatestSampleOfEachKeyAndForgetsErasedOnes) {
   EXPECT_GT(panels.version(), before);
   EXPECT_TRUE(panels.frame()["faults"].empty());
   panels.erase("faults", "unknown");  // nothing to forget: no change
+  panels.erase("nothing", "f1");
   EXPECT_EQ(panels.version(), before + 1);
 }
 
