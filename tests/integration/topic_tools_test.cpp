@@ -4,19 +4,22 @@
 // samples' fields; `topic pub` writes that type from JSON; `topic info` names the processes of
 // the topic's endpoints and the pairs whose QoS cannot match, `topic bw` measures its bytes, and
 // `node info` describes one of our processes (fake_service); `topic echo` reads a type with a
-// string key (NavGoal on a topic outside the catalogue) by its discovered type. Domains 137-139,
-// 179 and 199.
+// string key (NavGoal on a topic outside the catalogue) by its discovered type; `topic pub` and
+// `topic echo` on a catalogue topic go through the same walker, with the type idlc compiled in.
+// Domains 137-139, 179, 199 and 208.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
 #include <algorithm>
+#include <cmath>
 #include <regex>
 #include <sstream>
 
 #include "common/dds/reader.hpp"
 #include "common/dds/topics.hpp"
 #include "common/dds/writer.hpp"
+#include "tests/support/dds_observer.hpp"
 #include "tests/support/process_test.hpp"
 
 namespace autonomy::test {
@@ -29,6 +32,7 @@ constexpr int kDomainForeignEcho = 138;
 constexpr int kDomainForeignType = 139;
 constexpr int kDomainInfo = 179;
 constexpr int kDomainStringKey = 199;
+constexpr int kDomainCatalogue = 208;
 constexpr const char* kDdsperf = "/usr/bin/ddsperf";
 
 std::vector<std::string> lines_of(const std::string& text) {
@@ -234,6 +238,54 @@ TEST_F(TopicToolsTest, InfoBwAndNodeInfoNameProcessesAndMeasure) {
   run_tool("node-unknown", {"node", "info", "fake/tj", "--wait", "1"}, 2);
   EXPECT_NE(read_file(dir().file("node-unknown.err")).find("did you mean fake/ti?"), std::string::npos)
       << read_file(dir().file("node-unknown.err"));
+}
+
+// A catalogue topic: pub checks and serializes the JSON by the type idlc compiled in (the walker's
+// inverse), a typed reader of the project gets the values, echo prints them back by the walker.
+TEST_F(TopicToolsTest, PubAndEchoOnACatalogueTopicGoThroughTheWalker) {
+  join(kDomainCatalogue);
+  Recorder<msg::GoalStatus> statuses(participant(), dds::topics::goal_status);
+  auto& echo = start("echo", AUTONOMY_AUTONOMY_BIN,
+                     {"topic", "echo", "autonomy/nav/goal_status", "--count", "1", "--timeout", "40", "--domain",
+                      std::to_string(domain_)},
+                     /*must_keep_running=*/false, /*separate_stderr=*/true);
+  // A writer that writes nothing, to see echo's reader matched (beside the recorder) before pub
+  // publishes.
+  const dds::Topic<msg::GoalStatus> topic(participant(), dds::topics::goal_status);
+  const dds::Writer<msg::GoalStatus> probe(participant(), topic);
+  ASSERT_TRUE(await("echo's reader", [&] { return probe.matched_readers() >= 2; }));
+  run_tool("pub", {"topic", "pub", "autonomy/nav/goal_status",
+                   R"({"robot_id":"r1","goal_id":"g1","state":"preempted","tick":12.0,"distance_to_goal":"inf"})",
+                   "--wait", "10"});
+  ASSERT_TRUE(await("the status in the typed reader", [&] { return !statuses.poll().empty() || !statuses.all().empty(); }));
+  const msg::GoalStatus& got = statuses.all().front();
+  EXPECT_EQ(got.robot_id, "r1");
+  EXPECT_EQ(got.goal_id, "g1");
+  EXPECT_EQ(got.state, msg::GoalState::Preempted);
+  EXPECT_EQ(got.tick, 12);
+  EXPECT_TRUE(std::isinf(got.distance_to_goal) && got.distance_to_goal > 0);
+  EXPECT_EQ(got.reason, "");  // left out: empty
+
+  const auto ended = echo.wait_for_exit(60s);
+  ASSERT_TRUE(ended.has_value() && ended->exited && ended->code == 0) << read_file(dir().file("echo.err"));
+  const auto lines = lines_of(read_file(echo.log_file()));
+  ASSERT_EQ(lines.size(), 1u) << read_file(echo.log_file());
+  EXPECT_EQ(lines[0], R"({"robot_id":"r1","goal_id":"g1","state":"preempted","reason":"","tick":12,"distance_to_goal":"inf"})");
+
+  // JSON that does not fit: exit 2, the member path, what was expected and found, the type's members.
+  run_tool("pub-enum", {"topic", "pub", "autonomy/nav/goal_status", R"({"robot_id":"r1","state":"lost"})", "--wait", "0"}, 2);
+  const std::string enum_error = read_file(dir().file("pub-enum.err"));
+  EXPECT_NE(enum_error.find("state: expected one of accepted, active, reached, blocked, preempted, rejected, cancelled, "
+                            "got string \"lost\""),
+            std::string::npos)
+      << enum_error;
+  EXPECT_NE(enum_error.find("autonomy/nav/goal_status carries autonomy::GoalStatus {@key robot_id, goal_id, state, "
+                            "reason, tick, distance_to_goal}"),
+            std::string::npos)
+      << enum_error;
+  run_tool("pub-key", {"topic", "pub", "autonomy/nav/goal_status", R"({"goal_id":"g1"})", "--wait", "0"}, 2);
+  EXPECT_NE(read_file(dir().file("pub-key.err")).find("robot_id: missing key member"), std::string::npos)
+      << read_file(dir().file("pub-key.err"));
 }
 
 }  // namespace

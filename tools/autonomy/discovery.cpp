@@ -134,19 +134,21 @@ std::vector<Endpoint> wait_for_writers(const Discovery& discovery, const std::st
   }
 }
 
-std::unique_ptr<AnyReader> open_mirroring_reader(const dds::Participant& participant, const TopicEntry& topic,
-                                                 const Interrupt& interrupt, std::chrono::nanoseconds wait,
-                                                 std::string* why) {
+std::unique_ptr<xtypes::JsonReader> open_mirroring_reader(const dds::Participant& participant,
+                                                          const xtypes::DiscoveredTopic& topic,
+                                                          dds::QosClass without_writers, const Interrupt& interrupt,
+                                                          std::chrono::nanoseconds wait,
+                                                          const xtypes::WalkOptions& options, std::string* why) {
   Discovery discovery(participant);
   const auto writers = wait_for_writers(discovery, topic.name, interrupt, participant, wait);
-  const dds::Qos qos = mirror_writers_qos(topic, writers);
+  const dds::Qos qos = mirror_writers_qos(without_writers, writers);
   if (why) {
     const EndpointQos chosen = EndpointQos::of(qos.get(), false);
-    *why = writers.empty() ? "no writer discovered yet; reader QoS of class " + std::string(dds::to_string(topic.qos))
+    *why = writers.empty() ? "no writer discovered yet; reader QoS of class " + std::string(dds::to_string(without_writers))
                            : std::to_string(writers.size()) + " writer(s) discovered; reader QoS mirrors them";
     *why += ": " + chosen.str();
   }
-  return topic.make_reader(participant, qos.get());
+  return std::make_unique<xtypes::JsonReader>(participant.handle(), topic, qos.get(), options);
 }
 
 }  // namespace autonomy::tools

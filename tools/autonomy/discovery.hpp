@@ -2,13 +2,14 @@
 // Who writes and reads which topic on the domain, from the DDS built-in topics DCPSPublication
 // and DCPSSubscription. This sees every DDS process of the domain, not only ours.
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "common/dds/entity.hpp"
 #include "common/dds/participant.hpp"
 #include "tools/autonomy/common.hpp"
-#include "tools/autonomy/topic_registry.hpp"
+#include "tools/xtypes/json_reader.hpp"
 
 namespace autonomy::tools {
 
@@ -59,18 +60,18 @@ class Discovery {
 // reliable; the weaker choice when they differ, so that every writer matches. Without writers,
 // the catalogue's class. History is keep-last, deep enough for a tool that prints or counts.
 dds::Qos mirror_writers_qos(dds::QosClass without_writers, const std::vector<Endpoint>& writers);
-inline dds::Qos mirror_writers_qos(const TopicEntry& topic, const std::vector<Endpoint>& writers) {
-  return mirror_writers_qos(topic.qos, writers);
-}
 
 // Waits up to wait for writers of topic to be discovered (a little longer once the first one is
 // seen, for others discovered in the same moment); returns them, empty if none or interrupted.
 std::vector<Endpoint> wait_for_writers(const Discovery& discovery, const std::string& topic, const Interrupt& interrupt,
                                        const dds::Participant& participant, std::chrono::nanoseconds wait);
 
-// Reader for a catalogue topic with mirror_writers_qos; describes its choice in *why.
-std::unique_ptr<AnyReader> open_mirroring_reader(const dds::Participant& participant, const TopicEntry& topic,
-                                                 const Interrupt& interrupt, std::chrono::nanoseconds wait,
-                                                 std::string* why);
+// A reader of any topic (the catalogue's or another process's) with mirror_writers_qos, its
+// samples walked as JSON; waits up to wait for writers and describes its choice in *why.
+std::unique_ptr<xtypes::JsonReader> open_mirroring_reader(const dds::Participant& participant,
+                                                          const xtypes::DiscoveredTopic& topic,
+                                                          dds::QosClass without_writers, const Interrupt& interrupt,
+                                                          std::chrono::nanoseconds wait,
+                                                          const xtypes::WalkOptions& options, std::string* why);
 
 }  // namespace autonomy::tools

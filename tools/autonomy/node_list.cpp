@@ -4,13 +4,13 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 
 #include "common/dds/topics.hpp"
 #include "tools/autonomy/commands.hpp"
 #include "tools/autonomy/processes.hpp"
 #include "tools/autonomy/text.hpp"
-#include "tools/json/msg_json.hpp"
 
 namespace autonomy::tools {
 
@@ -114,7 +114,7 @@ int run(const Options& o, Context& ctx) {
   };
 
   if (o.json) {
-    json::Json out = json::Json::array();
+    nlohmann::ordered_json out = nlohmann::ordered_json::array();
     for (const auto& [key, l] : listed) {
       const auto& b = l.row->last;
       out.push_back({{"service", b.service},
@@ -133,7 +133,7 @@ int run(const Options& o, Context& ctx) {
                      {"clock_samples_ignored", b.clock_samples_ignored},
                      {"detail", b.detail}});
     }
-    print_line(out.dump(-1, ' ', false, json::Json::error_handler_t::replace));
+    print_line(out.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace));
     return kExitOk;
   }
 

@@ -12,6 +12,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 
 #include "common/dds/message_types.hpp"
@@ -22,7 +23,6 @@
 #include "tools/autonomy/liveliness.hpp"
 #include "tools/autonomy/lockstep_feed.hpp"
 #include "tools/autonomy/processes.hpp"
-#include "tools/json/msg_json.hpp"
 
 namespace autonomy::tools {
 
@@ -80,13 +80,13 @@ std::string describe(const LivelinessEvent& e) {
          e.process.host + ": " + detail;
 }
 
-json::Json to_json(const LivelinessEvent& e) {
+nlohmann::ordered_json to_json(const LivelinessEvent& e) {
   return {{"event", to_string(e.kind)},     {"service", e.process.service}, {"instance", e.process.instance},
           {"host", e.process.host},         {"pid", e.process.pid},         {"silent_s", e.silent_s},
           {"limit_s", e.limit_s},           {"last_state", msg::to_string(e.last.state)}};
 }
 
-json::Json to_json(const msg::LockstepChange& c) {
+nlohmann::ordered_json to_json(const msg::LockstepChange& c) {
   return {{"event", event_name(c)}, {"participant", c.participant}, {"tick", c.tick},
           {"number", c.number},     {"reason", c.reason}};
 }
@@ -184,7 +184,7 @@ int run_watch(const WatchOptions& o, Context& ctx) {
   while (!interrupt.requested()) {
     table.update(reader.take(), monotonic_ns());
     for (const auto& e : monitor.check(table, monotonic_ns(), is_gone)) {
-      print_line(o.json ? to_json(e).dump(-1, ' ', false, json::Json::error_handler_t::replace) : describe(e));
+      print_line(o.json ? to_json(e).dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) : describe(e));
     }
     if (status_reader)
       for (const auto& st : status_reader->take()) {
@@ -195,7 +195,7 @@ int run_watch(const WatchOptions& o, Context& ctx) {
             std::fprintf(stderr, "autonomy node watch: %llu lockstep changes were missed\n",
                          static_cast<unsigned long long>(missed));
           missed = 0;
-          print_line(o.json ? to_json(c).dump(-1, ' ', false, json::Json::error_handler_t::replace) : tools::describe(c));
+          print_line(o.json ? to_json(c).dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) : tools::describe(c));
         }
       }
     if (relay) relay->publish(monitor.silent(table));

@@ -6,6 +6,7 @@
 #include "tools/autonomy/discovered_reader.hpp"
 #include "tools/autonomy/discovery.hpp"
 #include "tools/autonomy/suggest.hpp"
+#include "tools/autonomy/topic_registry.hpp"
 #include "tools/recording/raw_topic.hpp"
 #include "tools/xtypes/type_lookup.hpp"
 
@@ -60,10 +61,7 @@ std::unique_ptr<xtypes::CdrReader> open_counting_reader(const dds::Participant& 
   if (const auto* ours = recording::find_recordable(topic)) {
     // The compiled descriptor: Cyclone 0.10.2's descriptor built from type objects aborts in
     // key extraction on the first sample of a type with a string key (autonomy/heartbeat).
-    found.name = ours->name;
-    found.type_name = ours->type_name;
-    found.descriptor = std::shared_ptr<dds_topic_descriptor_t>(const_cast<dds_topic_descriptor_t*>(ours->descriptor),
-                                                               [](dds_topic_descriptor_t*) {});
+    found = xtypes::compiled_topic(participant.handle(), ours->name, ours->descriptor);
     without_writers = ours->qos;
   } else {
     std::optional<xtypes::DiscoveredTopic> discovered;

@@ -1,12 +1,15 @@
-// autonomy topic echo: a catalogue topic's samples as JSON lines.
+// autonomy topic echo: any topic's samples as JSON lines, printed by the walker from the topic's type.
 #include <iostream>
 #include <memory>
 
+#include "common/dds/error.hpp"
 #include "tools/autonomy/commands.hpp"
 #include "tools/autonomy/discovered_reader.hpp"
 #include "tools/autonomy/discovery.hpp"
 #include "tools/autonomy/suggest.hpp"
+#include "tools/autonomy/topic_registry.hpp"
 #include "tools/xtypes/field_path.hpp"
+#include "tools/xtypes/json_reader.hpp"
 #include "tools/xtypes/type_lookup.hpp"
 
 namespace autonomy::tools {
@@ -41,13 +44,12 @@ bool field_fits(const EchoOptions& o, const xtypes::Type& type) {
   }
 }
 
-std::string dump(const json::Json& j) { return j.dump(-1, ' ', false, json::Json::error_handler_t::replace); }
+std::string dump(const xtypes::Json& j) { return j.dump(-1, ' ', false, xtypes::Json::error_handler_t::replace); }
 
 enum Tag : dds_attach_t { kData = 1, kInterrupt = 2, kStatus = 3 };
 
 int run_echo(const EchoOptions& o, Context& ctx) {
-  const auto registry = TopicRegistry::catalogue();
-  const TopicEntry* topic = registry.find(o.topic);
+  const TopicEntry* ours = TopicRegistry::catalogue().find(o.topic);
   const auto start = std::chrono::steady_clock::now();
   const bool has_deadline = o.timeout_s > 0;
   const auto deadline = start + seconds(o.timeout_s);
@@ -57,40 +59,35 @@ int run_echo(const EchoOptions& o, Context& ctx) {
   std::string why;
   auto discovery_wait = seconds(o.discovery_s);
   if (has_deadline) discovery_wait = std::min<std::chrono::nanoseconds>(discovery_wait, seconds(o.timeout_s));
-  std::unique_ptr<AnyReader> reader;
-  std::string type_name;
-  if (topic) {
-    // The catalogue's own types: printed by their tables, the type (for --field) from the
-    // type information idlc compiled in.
-    reader = open_mirroring_reader(participant, *topic, interrupt, discovery_wait, &why);
-    type_name = topic->type_name;
-    if (!o.field.empty() &&
-        !field_fits(o, *xtypes::TypeLookup(participant.handle(), DDS_SECS(1)).resolve_entity(reader->handle())))
-      return kExitUsage;
-  } else {
-    // Any other topic: its type from discovery, its samples through the generic walker.
-    xtypes::WalkOptions walk;
-    walk.bytes = bytes_style_of(o.bytes);
-    OpenedDiscoveredTopic opened;
-    try {
-      opened = open_discovered_topic(participant, o.topic, interrupt, discovery_wait, walk, &why);
-    } catch (const xtypes::TypeLookupError& e) {
-      std::cerr << "autonomy topic echo: " << o.topic << ": " << e.what() << "\n";
-      return kExitFailed;
-    }
-    if (interrupt.requested()) return kExitOk;
-    if (!opened.reader) {
-      auto names = registry.name_list();
-      for (auto& n : discovered_topic_names(participant)) names.push_back(n);
-      std::cerr << unknown_topic_message("autonomy topic echo", o.topic, names)
-                << " (not in the catalogue, and no process on domain " << o.domain << " has an endpoint of it within "
-                << o.discovery_s << " s; --discovery-wait waits longer)\n";
-      return kExitUsage;
-    }
-    if (!field_fits(o, *opened.type)) return kExitUsage;
-    reader = std::move(opened.reader);
-    type_name = opened.type_name;
+  // The type: the catalogue's compiled in, any other topic's from discovery. Either way the
+  // samples are printed by the one walker.
+  std::optional<xtypes::DiscoveredTopic> topic;
+  try {
+    topic = find_any_topic(participant, o.topic, interrupt, discovery_wait);
+  } catch (const xtypes::TypeLookupError& e) {
+    std::cerr << "autonomy topic echo: " << o.topic << ": " << e.what() << "\n";
+    return kExitFailed;
   }
+  if (interrupt.requested()) return kExitOk;
+  if (!topic) {
+    auto names = TopicRegistry::catalogue().name_list();
+    for (auto& n : discovered_topic_names(participant)) names.push_back(n);
+    std::cerr << unknown_topic_message("autonomy topic echo", o.topic, names) << " (not in the catalogue, and no process on domain "
+              << o.domain << " has an endpoint of it within " << o.discovery_s
+              << " s; --discovery-wait waits longer)\n";
+    return kExitUsage;
+  }
+  if (!field_fits(o, *topic->type)) return kExitUsage;
+  xtypes::WalkOptions walk;
+  walk.bytes = bytes_style_of(o.bytes);
+  // What is left of the discovery wait (finding another process's topic took some of it) for
+  // the writers whose QoS the reader mirrors.
+  const auto writers_wait =
+      std::max<std::chrono::nanoseconds>(std::chrono::nanoseconds::zero(), start + discovery_wait - std::chrono::steady_clock::now());
+  const auto reader = open_mirroring_reader(participant, *topic, ours ? ours->qos : dds::QosClass::Event, interrupt,
+                                            writers_wait, walk, &why);
+  if (interrupt.requested()) return kExitOk;
+  const std::string type_name = topic->type_name;
   const std::string topic_name = o.topic;
   if (o.verbose) std::cerr << "autonomy topic echo: " << topic_name << " (" << type_name << "): " << why << "\n";
 
@@ -101,7 +98,7 @@ int run_echo(const EchoOptions& o, Context& ctx) {
   waitset.attach(reader->handle(), kStatus);
 
   int64_t printed = 0;
-  auto emit = [&](const json::Json& j) {  // true once --count lines are out
+  auto emit = [&](const xtypes::Json& j) {  // true once --count lines are out
     if (!o.field.empty() && !j.contains("instance_state")) {
       try {
         print_line(dump(xtypes::select_field(j, o.field)));
@@ -119,14 +116,17 @@ int run_echo(const EchoOptions& o, Context& ctx) {
     const auto samples = reader->take(true);
     for (size_t i = 0; i < samples.size(); ++i) {
       const auto& s = samples[i];
+      if (!s.error.empty())
+        std::cerr << "autonomy topic echo: a sample of " << topic_name << " does not fit its type " << type_name << ": "
+                  << s.error << "\n";
       if (s.valid && !s.json.is_null() && emit(s.json)) return kExitOk;
       // A disposed instance (its writer retracted it, or stopped cleanly) is news, printed once
       // after the instance's last sample of the batch: Cyclone reports the disposal on that
       // sample when it was still unread, else as a sample without data. An instance that only
       // lost its writers (no_writers) is not printed, as ros2 topic echo would not.
       const bool last_of_instance = i + 1 == samples.size() || samples[i + 1].key != s.key;
-      if (last_of_instance && s.instance_state == dds::InstanceState::Disposed) {
-        json::Json line = json::Json::object();
+      if (last_of_instance && s.instance_state == DDS_IST_NOT_ALIVE_DISPOSED) {
+        xtypes::Json line = xtypes::Json::object();
         line["instance_state"] = "disposed";
         for (const auto& [k, v] : s.key.items()) line[k] = v;
         if (emit(line)) return kExitOk;
@@ -160,16 +160,16 @@ Command add_topic_echo(CLI::App& topic) {
   auto o = std::make_shared<EchoOptions>();
   auto* cmd = topic.add_subcommand(
       "echo",
-      "Print a topic's samples, one JSON object per line (every field; enums as lower-case names). A topic that is "
-      "not in the catalogue is read with the type its writers announce in discovery (XTypes type information) "
-      "and printed by the generic walker (octet sequences as {\"length\", \"base64\"}). "
+      "Print a topic's samples, one JSON object per line (every field; enums as lower-case names; octet sequences "
+      "as {\"length\", \"base64\"}), printed by the one generic walker from the topic's XTypes type information: "
+      "the catalogue's compiled in, any other topic's as its writers announce it in discovery. "
       "A sample that only reports a disposed instance prints {\"instance_state\":\"disposed\", <key fields>} "
       "(and counts as a sample). The reader mirrors the QoS of the writers it discovers (durability, reliability), so "
       "the current state of state topics shows at once.");
   add_domain_option(cmd, o->domain);
   cmd->add_option("topic", o->topic, "Topic name, e.g. autonomy/robot/state or any topic on the domain (see `autonomy topic list`)")->required();
   cmd->add_option("--field", o->field, "Print only this member: a.b, points[2].x (checked against the type)");
-  cmd->add_option("--bytes", o->bytes, "Octet sequences of other processes' types as base64, hex or array (of numbers)")
+  cmd->add_option("--bytes", o->bytes, "Octet sequences as base64, hex or array (of numbers)")
       ->check(CLI::IsMember({"base64", "hex", "array"}))
       ->capture_default_str();
   cmd->add_option("-n,--count", o->count, "Exit 0 after this many samples (0: no limit)")

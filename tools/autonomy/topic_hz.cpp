@@ -9,6 +9,7 @@
 #include "tools/autonomy/suggest.hpp"
 #include "tools/autonomy/discovery.hpp"
 #include "tools/autonomy/report_loop.hpp"
+#include "tools/autonomy/topic_registry.hpp"
 
 namespace autonomy::tools {
 

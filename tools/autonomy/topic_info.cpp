@@ -11,6 +11,7 @@
 #include "tools/autonomy/commands.hpp"
 #include "tools/autonomy/discovery.hpp"
 #include "tools/autonomy/suggest.hpp"
+#include "tools/autonomy/topic_registry.hpp"
 
 namespace autonomy::tools {
 

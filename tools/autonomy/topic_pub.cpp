@@ -1,4 +1,4 @@
-// autonomy topic pub: write JSON as a catalogue topic's message.
+// autonomy topic pub: write JSON as any topic's message, checked and serialized by the topic's type.
 #include <iostream>
 #include <memory>
 
@@ -67,74 +67,44 @@ bool robot_served(Interrupt& interrupt, const dds::Participant& participant, con
   }
 }
 
-// A topic that is not in the catalogue: its type from discovery (an endpoint of another process
-// must be there), the JSON checked and completed by that type. nullptr after printing why.
-std::unique_ptr<AnyWriter> open_discovered_writer(const PubOptions& o, const dds::Participant& participant,
-                                                  Interrupt& interrupt, json::Json& message, int& exit_code) {
-  std::optional<xtypes::DiscoveredTopic> found;
+int run_pub(const PubOptions& o, Context& ctx) {
+  const TopicEntry* ours = TopicRegistry::catalogue().find(o.topic);
+  dds::Participant participant(o.domain);
+  Interrupt interrupt(ctx.signals, participant);
+  // The type: the catalogue's compiled in, any other topic's from discovery (an endpoint of
+  // another process must be there). Either way the JSON is checked and completed by that type.
+  std::optional<xtypes::DiscoveredTopic> topic;
   try {
-    found = find_discovered_topic(participant, o.topic, interrupt, seconds(o.wait_s));
+    topic = find_any_topic(participant, o.topic, interrupt, seconds(o.wait_s));
   } catch (const xtypes::TypeLookupError& e) {
     std::cerr << "autonomy topic pub: " << o.topic << ": " << e.what() << "\n";
-    exit_code = kExitFailed;
-    return nullptr;
+    return kExitFailed;
   }
-  if (!found) {
+  if (!topic) {
+    if (interrupt.requested()) return kExitInterrupted;
     auto names = TopicRegistry::catalogue().name_list();
     for (auto& n : discovered_topic_names(participant)) names.push_back(n);
     std::cerr << unknown_topic_message("autonomy topic pub", o.topic, names) << " (not in the catalogue, and no process on domain "
               << o.domain << " has an endpoint of it within " << o.wait_s << " s)\n";
-    exit_code = kExitUsage;
-    return nullptr;
+    return kExitUsage;
   }
+  xtypes::Encoded message;
   try {
-    message = xtypes::json_to_cdr(*found->type, json::parse(o.json_text)).complete;
-  } catch (const std::exception& e) {  // xtypes::CdrError, or a JSON syntax error
-    std::string members;
-    for (const auto& m : found->type->members) members += std::string(members.empty() ? "" : ", ") + (m.key ? "@key " : "") + m.name;
-    std::cerr << "autonomy topic pub: " << e.what() << "\n  " << o.topic << " carries " << found->type_name << " {"
-              << members << "} (`autonomy topic type " << o.topic << "` prints it)\n";
-    exit_code = kExitUsage;
-    return nullptr;
+    message = xtypes::json_to_cdr(*topic->type, xtypes::parse_json(o.json_text));
+  } catch (const xtypes::CdrError& e) {
+    std::cerr << "autonomy topic pub: " << e.what() << "\n  "
+              << o.topic << " carries " << topic->type_name << " " << member_list(*topic->type) << " (`autonomy topic type "
+              << o.topic << "` prints it)\n";
+    return kExitUsage;
   }
-  Discovery discovery(participant);
-  dds::Qos qos = mirror_writers_qos(dds::QosClass::Event, discovery.writers_of(o.topic));
+
+  // The catalogue's class, or the QoS of the topic's writers. No dispose when this short-lived
+  // writer goes: its readers see the instance lose its writer (no_writers), not a retraction of
+  // what was published.
+  dds::Qos qos = ours ? dds::make_qos(ours->qos)
+                      : mirror_writers_qos(dds::QosClass::Event, Discovery(participant).writers_of(o.topic));
   dds_qset_writer_data_lifecycle(qos.get(), false);
-  return std::make_unique<DiscoveredWriter>(participant, *found, qos.get());
-}
-
-int run_pub(const PubOptions& o, Context& ctx) {
-  const auto registry = TopicRegistry::catalogue();
-  const TopicEntry* topic = registry.find(o.topic);
-  json::Json message;
-  if (topic) {
-    try {
-      message = topic->normalize(json::parse(o.json_text));
-    } catch (const json::JsonError& e) {
-      std::string keys;
-      for (const auto& k : topic->key_fields) keys += (keys.empty() ? "" : ", ") + k;
-      std::cerr << "autonomy topic pub: " << e.what() << "\n  " << topic->name << " carries " << topic->message_name
-                << " {";
-      for (size_t i = 0; i < topic->fields.size(); ++i) std::cerr << (i ? ", " : "") << topic->fields[i];
-      std::cerr << "}" << (keys.empty() ? "" : "; required key fields: " + keys) << "\n";
-      return kExitUsage;
-    }
-  }
-
-  dds::Participant participant(o.domain);
-  Interrupt interrupt(ctx.signals, participant);
-  std::unique_ptr<AnyWriter> writer;
-  if (topic) {
-    // The class's QoS, but no dispose when this short-lived writer goes: its readers see the
-    // instance lose its writer (no_writers), not a retraction of what was published.
-    dds::Qos qos = dds::make_qos(topic->qos);
-    dds_qset_writer_data_lifecycle(qos.get(), false);
-    writer = topic->make_writer(participant, qos.get());
-  } else {
-    int exit_code = kExitOk;
-    writer = open_discovered_writer(o, participant, interrupt, message, exit_code);
-    if (!writer) return interrupt.requested() ? kExitInterrupted : exit_code;
-  }
+  const auto writer = std::make_unique<TopicWriter>(participant, *topic, qos.get());
   const std::string topic_name = o.topic;
 
   // Volatile samples written before a reader is matched are lost: wait for one.
@@ -148,7 +118,7 @@ int run_pub(const PubOptions& o, Context& ctx) {
 
   // A goal for a robot that nobody drives would vanish in silence (no status ever comes): say so.
   if (const char* service = robot_service_of(topic_name); service && !o.anyway) {
-    const std::string robot = message.value("robot_id", "");
+    const std::string robot = message.complete.value("robot_id", "");
     std::set<std::string> served;
     if (!robot_served(interrupt, participant, service, robot, wait_deadline, served)) {
       if (interrupt.requested()) return kExitInterrupted;
@@ -166,8 +136,8 @@ int run_pub(const PubOptions& o, Context& ctx) {
   const auto period = seconds(o.rate_hz > 0 ? 1.0 / o.rate_hz : 0.0);
   auto next = std::chrono::steady_clock::now();
   for (int64_t i = 1; until_interrupted || i <= o.count; ++i) {
-    writer->write(message);
-    if (!o.quiet) print_line("publishing #" + std::to_string(i) + ": " + message.dump());
+    writer->write(message.cdr);
+    if (!o.quiet) print_line("publishing #" + std::to_string(i) + ": " + message.complete.dump());
     if (!until_interrupted && i == o.count) break;
     next += period;
     const auto left = next - std::chrono::steady_clock::now();
@@ -199,9 +169,10 @@ Command add_topic_pub(CLI::App& topic) {
   auto o = std::make_shared<PubOptions>();
   auto* cmd = topic.add_subcommand(
       "pub",
-      "Publish a message given as JSON on a topic, with the topic's QoS class. A topic that is not in the catalogue "
-      "takes its type from discovery (a process must have an endpoint of it; the QoS mirrors its writers). Key fields are "
-      "required; other fields left out take the message's defaults. Waits for a reader (--wait), and before "
+      "Publish a message given as JSON on a topic, with the topic's QoS class. The JSON is checked against the topic's "
+      "XTypes type: the catalogue's compiled in; any other topic's from discovery (a process must have an endpoint of "
+      "it; the QoS mirrors its writers). Key fields are required; other fields left out take zero, \"\" or the first "
+      "enum name. Waits for a reader (--wait), and before "
       "exiting for every matched reader to acknowledge (reliable topics). The writer lives only while "
       "pub runs: late joiners of a state topic get the message only until then (--count 0 keeps it up).\n"
       "Example: autonomy topic pub autonomy/nav/goal '{\"robot_id\":\"r1\",\"goal_id\":\"g1\",\"x\":17,\"y\":9}'");
