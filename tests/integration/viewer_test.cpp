@@ -242,8 +242,9 @@ TEST_F(ViewerTest, PortInUseIsAClearError) {
 // The page in a real browser (Debian's chromium, headless, driven by tests/node/viewer_page_check.js
 // over the DevTools pipe): no console errors, r1 drawn at a new position between two reads, d1
 // drawn closed, a courier job's state change shown in the jobs table (the test writes the job's
-// states as the courier would: queued, then underway once the page shows it queued), and a
-// planner's latest plan drawn as a timeline with a bar per token.
+// states as the courier would: queued, then underway once the page shows it queued), a
+// planner's latest plan drawn as a timeline with a bar per token, and the executive's events
+// drawn against that plan (a bar per executed token).
 // Skipped where node or chromium is missing (deploy/test.sh installs both).
 TEST_F(ViewerTest, PageInHeadlessChromiumDrawsTheMovingRobotTheClosedDoorAndAJobChange) {
   const std::string node = viewer_find_program("node");
@@ -287,10 +288,26 @@ TEST_F(ViewerTest, PageInHeadlessChromiumDrawsTheMovingRobotTheClosedDoorAndAJob
   plan_writer.write(latest);
   const uint16_t port = start_world_with_viewer();
   ASSERT_NE(port, 0);
+  // The executive running req-1 (events are volatile: written once the viewer reads them): the
+  // camera ready from 0 to 1 s, imaging from 1 s on, the engine thrusting from 1 s on, a violation
+  // at 2 s; three executed tokens, two of them running.
+  dds::Topic<msg::ExecutiveEvent> event_topic(participant(), dds::topics::executive_event);
+  dds::Writer<msg::ExecutiveEvent> event_writer(participant(), event_topic);
+  ASSERT_TRUE(event_writer.wait_for_readers(1, kDeadline)) << "the viewer does not read executive events";
+  uint64_t number = 0;
+  auto executive_event = [&](int64_t t_s, const std::string& kind, const std::string& text) {
+    event_writer.write({"executive/test", ++number, t_s, t_s * 1000000000LL, kind, text, "req-1"});
+  };
+  executive_event(0, "plan_executing", "req-1: plan for [0, 100) s executing");
+  executive_event(0, "started", "camera.mode == ready() #0");
+  executive_event(1, "ended", "camera.mode == ready() #0");
+  executive_event(1, "started", "camera.mode == imaging() #1");
+  executive_event(1, "started", "engine.mode == thrusting() #2");
+  executive_event(2, "violation", "engine.mode: thrusting ended early");
   std::vector<std::string> args = {std::string(AUTONOMY_SOURCE_DIR) + "/tests/node/viewer_page_check.js", "--url",
                                     "http://127.0.0.1:" + std::to_string(port) + "/", "--chromium", chromium, "--door",
-                                    "d1", "--job", "job-1", "--plan", "executive/test:3", "--screenshot",
-                                    dir().file("viewer.png")};
+                                    "d1", "--job", "job-1", "--plan", "executive/test:3", "--executed",
+                                    "executive/test:3", "--screenshot", dir().file("viewer.png")};
   auto& check = start("viewer_page_check", node, args, false);
   // r1 keeps driving while Chromium starts (under load that takes longer than the 6 m drive to the
   // first goal, and the page must see it move): a new goal every 4 s, west and east in turn.

@@ -4,7 +4,8 @@
 // in, fd 4 out, messages ended by NUL), so it needs no npm package and no WebSocket in node.
 //
 //   node viewer_page_check.js --url http://127.0.0.1:PORT/ [--chromium /usr/bin/chromium]
-//        [--door ID] [--job ID] [--plan REQUESTER:TOKENS] [--screenshot FILE.png] [--timeout-s 60]
+//        [--door ID] [--job ID] [--plan REQUESTER:TOKENS] [--executed EXECUTIVE:TOKENS]
+//        [--screenshot FILE.png] [--timeout-s 60]
 //
 // Checks, printing one line each and a JSON summary last; exit code 0 when all hold, 1 otherwise:
 //   - the page loads and receives frames without console errors or uncaught exceptions;
@@ -15,7 +16,10 @@
 //     "job ID seen: STATE" when it first shows, so a test can then change the state);
 //   - with --plan REQUESTER:TOKENS: the requester's latest plan is drawn as a timeline with that
 //     many token bars, and the canvas pixel in the middle of each bar is painted (not the
-//     white background).
+//     white background);
+//   - with --executed EXECUTIVE:TOKENS: the executive's planned-against-executed chart draws its
+//     current plan's bars and that many executed-token bars, the middle pixel of each painted
+//     (not the row's grey or white background); the JSON lists each bar (running or not).
 "use strict";
 const { spawn } = require("child_process");
 const fs = require("fs");
@@ -23,7 +27,7 @@ const os = require("os");
 const path = require("path");
 
 function parseArgs(argv) {
-  const out = { chromium: "/usr/bin/chromium", door: "", job: "", plan: "", screenshot: "", timeoutS: 60, url: "" };
+  const out = { chromium: "/usr/bin/chromium", door: "", job: "", plan: "", executed: "", screenshot: "", timeoutS: 60, url: "" };
   for (let i = 2; i < argv.length; i++) {
     const a = argv[i], v = argv[i + 1];
     if (a === "--url") out.url = v;
@@ -31,6 +35,7 @@ function parseArgs(argv) {
     else if (a === "--door") out.door = v;
     else if (a === "--job") out.job = v;
     else if (a === "--plan") out.plan = v;
+    else if (a === "--executed") out.executed = v;
     else if (a === "--screenshot") out.screenshot = v;
     else if (a === "--timeout-s") out.timeoutS = Number(v);
     else { console.error(`viewer_page_check: unknown argument ${a}`); process.exit(2); }
@@ -181,6 +186,22 @@ async function main() {
       })()`).catch(e => e.message);
       const ok = Array.isArray(drawn) && drawn.length === tokens && drawn.every(b => b.filled);
       check(`plan of ${requester} drawn as a timeline of ${tokens} tokens`, ok, JSON.stringify(drawn));
+    }
+
+    if (args.executed) {
+      const at = args.executed.lastIndexOf(":");
+      const executive = args.executed.slice(0, at), tokens = Number(args.executed.slice(at + 1));
+      const painted = "p[3] > 0 && !(p[0] > 235 && p[1] > 235 && p[2] > 235)";
+      const drawn = await waitFor(`${tokens} executed tokens of ${executive}`, `(() => {
+        const c = [...document.querySelectorAll("canvas.execution")].find(c => c.dataset.executive === ${JSON.stringify(executive)});
+        if (!c || !c.executed || c.executed.length < ${tokens} || !c.planned.length) return null;
+        const g = c.getContext("2d"), mid = b => g.getImageData(Math.round(b.x + b.w / 2), Math.round(b.y + b.h / 2), 1, 1).data;
+        return { planned: c.planned.map(b => { const p = mid(b); return ${painted}; }),
+                 executed: c.executed.map(b => { const p = mid(b); return { token: b.token, running: b.running, filled: ${painted} }; }) };
+      })()`).catch(e => e.message);
+      const ok = drawn && Array.isArray(drawn.executed) && drawn.executed.length === tokens &&
+                 drawn.executed.every(b => b.filled) && drawn.planned.length > 0 && drawn.planned.every(f => f);
+      check(`${executive}'s plan drawn against ${tokens} executed tokens`, !!ok, JSON.stringify(drawn));
     }
 
     if (args.screenshot) {

@@ -1,6 +1,8 @@
 #include "services/viewer/core/frames.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <set>
 
 namespace autonomy::viewer {
 
@@ -97,6 +99,88 @@ json job_json(const JobView& v) {
           {"tick", j.tick},
           {"order", v.first_seen},
           {"history", std::move(history)}};
+}
+
+
+double viewer_seconds(int64_t ns) { return viewer_mm(static_cast<double>(ns) * 1e-9); }
+
+// A plan's bound in simulated seconds; null when it has none (magnitude >= 2^52).
+json plan_bound(int64_t origin_s, int64_t bound) {
+  if (bound >= (int64_t{1} << 52) || bound <= -(int64_t{1} << 52)) return nullptr;
+  return origin_s + bound;
+}
+
+json executed_plan_json(const std::string& id, const ExecutiveTrace& trace) {
+  const auto found = trace.plans.find(id);
+  if (found == trace.plans.end()) return {{"id", id}, {"known", false}};  // ran, but not heard
+  const msg::LatestPlan& p = found->second;
+  const int64_t origin = p.plan_origin;
+  json timelines = json::array();
+  for (const msg::PlanTimeline& line : p.plan.timelines) {
+    json tokens = json::array();
+    for (uint32_t i : line.tokens) {
+      if (i >= p.plan.tokens.size()) continue;  // checked by the executive; never drawn wrong
+      const msg::PlanToken& t = p.plan.tokens[i];
+      tokens.push_back({{"id", t.id},
+                        {"predicate", t.predicate},
+                        {"parameters", t.parameters},
+                        {"start", {plan_bound(origin, t.start_lb), plan_bound(origin, t.start_ub)}},
+                        {"end", {plan_bound(origin, t.end_lb), plan_bound(origin, t.end_ub)}}});
+    }
+    timelines.push_back({{"name", line.name}, {"tokens", std::move(tokens)}});
+  }
+  return {{"id", id},
+          {"known", true},
+          {"origin_s", origin},
+          {"horizon_s", plan_bound(origin, p.plan.horizon)},
+          {"timelines", std::move(timelines)}};
+}
+
+json executive_trace_json(const ExecutiveTrace& trace, std::size_t plans) {
+  // The plans it ran last; before it runs one, the latest it was given.
+  std::vector<std::string> shown(trace.plan_order.end() - std::min(plans, trace.plan_order.size()),
+                                 trace.plan_order.end());
+  if (shown.empty() && !trace.plans_heard.empty()) shown.push_back(trace.plans_heard.back());
+  const std::set<std::string> shown_set(shown.begin(), shown.end());
+  json plan_list = json::array();
+  for (const std::string& id : shown) plan_list.push_back(executed_plan_json(id, trace));
+  json executed = json::array();
+  std::optional<int64_t> since;  // the earliest time drawn: marks before it are not sent
+  for (const ExecutedToken& t : trace.tokens) {
+    if (!shown_set.count(t.plan_id)) continue;
+    const auto first = t.start_ns ? t.start_ns : t.end_ns;
+    if (first) since = since ? std::min(*since, *first) : *first;
+    executed.push_back({{"plan", t.plan_id},
+                        {"token", t.token},
+                        {"timeline", t.timeline},
+                        {"value", t.value},
+                        {"start_s", t.start_ns ? json(viewer_seconds(*t.start_ns)) : json(nullptr)},
+                        {"end_s", t.end_ns ? json(viewer_seconds(*t.end_ns)) : json(nullptr)},
+                        {"cut", t.cut}});
+  }
+  for (const auto& p : plan_list)
+    if (p.contains("origin_s")) {
+      const int64_t origin_ns = p["origin_s"].get<int64_t>() * 1000000000LL;
+      since = since ? std::min(*since, origin_ns) : origin_ns;
+    }
+  json marks = json::array();
+  constexpr std::size_t kMarksSent = 100;
+  for (auto it = trace.marks.rbegin(); it != trace.marks.rend() && marks.size() < kMarksSent; ++it) {
+    if (since && it->sim_time_ns < *since) break;
+    marks.push_back({{"t_s", viewer_seconds(it->sim_time_ns)},
+                     {"tick", it->tick},
+                     {"kind", it->kind},
+                     {"text", it->text},
+                     {"plan", it->plan_id}});
+  }
+  std::reverse(marks.begin(), marks.end());
+  return {{"plan_id", trace.plan_id},
+          {"latest_s", viewer_seconds(trace.latest_ns)},
+          {"lost", trace.lost},
+          {"refused", trace.refused},
+          {"plans", std::move(plan_list)},
+          {"executed", std::move(executed)},
+          {"marks", std::move(marks)}};
 }
 
 }  // namespace
@@ -200,6 +284,16 @@ nlohmann::json state_frame(const WorldView& view, uint64_t sequence) {
           {"doors", std::move(doors)},
           {"links", std::move(links)},
           {"jobs", std::move(jobs)}};
+}
+
+nlohmann::json execution_frame(const ExecutionTraces& traces, std::size_t plans) {
+  json executives = json::object();
+  for (const auto& [name, trace] : traces.executives()) {
+    // A requester of plans that never told what it did is no executive to draw.
+    if (trace.last_number == 0 && trace.tokens.empty() && trace.marks.empty()) continue;
+    executives[name] = executive_trace_json(trace, plans);
+  }
+  return {{"type", "execution"}, {"executives", std::move(executives)}};
 }
 
 }  // namespace autonomy::viewer

@@ -40,7 +40,10 @@ ViewerNode::ViewerNode(service::Service& service, ViewerNodeOptions options)
       goal_statuses_(service.participant(), dds::topics::goal_status),
       itineraries_(service.participant(), dds::topics::itinerary),
       links_(service.participant(), dds::topics::radio_link),
-      jobs_(service.participant(), dds::topics::courier_job_status) {
+      jobs_(service.participant(), dds::topics::courier_job_status),
+      plans_(service.participant(), dds::topics::planner_plan),
+      executive_events_(service.participant(), dds::topics::executive_event),
+      plan_replies_(service.participant(), dds::topics::planner_reply) {
   if (!(options_.rate_hz > 0.0 && options_.rate_hz <= 100.0))
     throw std::invalid_argument("viewer: --rate must be in (0, 100] frames per second");
   // Every catalogue topic as a Foxglove channel: CDR samples, the type's self-contained IDL.
@@ -83,6 +86,21 @@ ViewerNode::ViewerNode(service::Service& service, ViewerNodeOptions options)
   follow_panel(dds::topics::truth_spacecraft_fault.name, "faults");
   follow_panel(dds::topics::executive_status.name, "executive");
   follow_panel(dds::topics::planner_plan.name, "plans");
+  // A plan also goes to the executed timelines (a disposed one stays there: its executive may
+  // still run it).
+  loop.on_samples<msg::LatestPlan>(plans_.reader, [this](std::vector<dds::Sample<msg::LatestPlan>> samples) {
+    for (const auto& s : samples)
+      if (s.valid) execution_.apply(s.value);
+  });
+  loop.on_samples<msg::PlanningReply>(plan_replies_.reader, [this](std::vector<dds::Sample<msg::PlanningReply>> samples) {
+    for (const auto& s : samples)
+      if (s.valid) execution_.apply(s.value);
+  });
+  loop.on_samples<msg::ExecutiveEvent>(executive_events_.reader,
+                                       [this](std::vector<dds::Sample<msg::ExecutiveEvent>> samples) {
+                                         for (const auto& s : samples)
+                                           if (s.valid) execution_.apply(s.value);
+                                       });
   const auto period = std::chrono::nanoseconds(static_cast<int64_t>(1e9 / options_.rate_hz));
   loop.every(period, [this] { push_frames(); });
   loop.every(std::chrono::milliseconds(20), [this] { pump_foxglove(); });
@@ -165,6 +183,11 @@ void ViewerNode::push_frames() {
     panels_version_sent_ = panels_.version();
     last_panels_sent_ = now;
     server_->publish(FrameKind::Panels, panels_.frame().dump());
+  }
+  if (execution_.version() != execution_version_sent_ && now - last_execution_sent_ >= std::chrono::milliseconds(500)) {
+    execution_version_sent_ = execution_.version();
+    last_execution_sent_ = now;
+    server_->publish(FrameKind::Execution, execution_frame(execution_).dump());
   }
   const bool changed = view_.state_version() != state_version_sent_;
   if (!changed && now - last_state_sent_ < std::chrono::seconds(1)) return;

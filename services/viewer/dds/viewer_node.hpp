@@ -6,9 +6,11 @@
 // sees the viewer is alive). Spacecraft telemetry and faults, executive status and the
 // planner's latest plans go to the side panels (Panels), at most twice a second (read as CDR and
 // walked with their type information, tools/xtypes: the panels show what `autonomy topic echo`
-// prints). It writes nothing but its heartbeat; it joins a running set at any
-// time because every topic it reads for state is transient-local (a late joiner gets the last
-// sample of each key), except goals, whose positions it learns from the next goal sent.
+// prints); the executive's events, with the planner's plans and replies, go to its
+// planned-against-executed timelines (ExecutionTraces), as often. It writes nothing but its
+// heartbeat; it joins a running set at any time because every topic it reads for state is
+// transient-local (a late joiner gets the last sample of each key), except goals, whose positions
+// it learns from the next goal sent, and the executive's events (it shows what ran since).
 //
 // Foxglove clients (docs/viewer.md) are offered every topic of the catalogue as a channel, with
 // its type's IDL (tools/recording); each subscription is a reader of its own, taking the samples
@@ -17,6 +19,7 @@
 #include "common/dds/reader.hpp"
 #include "common/dds/topics.hpp"
 #include "common/service/service.hpp"
+#include "services/viewer/core/execution_trace.hpp"
 #include "services/viewer/core/panels.hpp"
 #include "services/viewer/core/world_view.hpp"
 #include "services/viewer/web/web_server.hpp"
@@ -76,6 +79,10 @@ class ViewerNode {
   Subscription<msg::CourierJobStatus> jobs_;
   Panels panels_;
   std::vector<std::unique_ptr<xtypes::JsonReader>> panel_readers_;
+  Subscription<msg::LatestPlan> plans_;  // for the executed timelines
+  ExecutionTraces execution_;
+  Subscription<msg::ExecutiveEvent> executive_events_;
+  Subscription<msg::PlanningReply> plan_replies_;  // every plan, also those the latest replaced
   std::vector<const recording::RecordableTopic*> foxglove_topics_;  // by channel id - 1
   std::unique_ptr<WebServer> server_;
   std::map<uint64_t, std::unique_ptr<recording::RawReader>> foxglove_readers_;  // by stream
@@ -85,6 +92,8 @@ class ViewerNode {
   uint64_t state_version_sent_ = 0;
   uint64_t panels_version_sent_ = 0;
   std::chrono::steady_clock::time_point last_panels_sent_{};
+  uint64_t execution_version_sent_ = 0;
+  std::chrono::steady_clock::time_point last_execution_sent_{};
   uint64_t frames_sent_ = 0;
   std::chrono::steady_clock::time_point last_state_sent_{};
 };

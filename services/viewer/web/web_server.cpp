@@ -347,10 +347,12 @@ struct WebServer::Impl {
         response->result(http::status::ok);
         response->set(http::field::content_type, "text/html; charset=utf-8");
         response->body() = server_.page;
-      } else if (target == "/map.json" || target == "/state.json" || target == "/panels.json") {
-        const FrameKind kind = target == "/map.json"     ? FrameKind::Map
-                               : target == "/state.json" ? FrameKind::State
-                                                         : FrameKind::Panels;
+      } else if (target == "/map.json" || target == "/state.json" || target == "/panels.json" ||
+                 target == "/execution.json") {
+        const FrameKind kind = target == "/map.json"      ? FrameKind::Map
+                               : target == "/state.json"  ? FrameKind::State
+                               : target == "/panels.json" ? FrameKind::Panels
+                                                          : FrameKind::Execution;
         const Frame& frame = server_.latest[static_cast<int>(kind)];
         response->result(frame ? http::status::ok : http::status::service_unavailable);
         response->set(http::field::content_type, "application/json");

@@ -21,8 +21,8 @@
 namespace autonomy::viewer {
 
 // The kinds of frames, in the order a connection sends its unsent ones.
-enum class FrameKind { Map = 0, State = 1, Panels = 2 };
-inline constexpr int kFrameKinds = 3;
+enum class FrameKind { Map = 0, State = 1, Panels = 2, Execution = 3 };
+inline constexpr int kFrameKinds = 4;
 
 struct WebServerOptions {
   std::string bind_address = "127.0.0.1";

@@ -671,6 +671,14 @@ TEST(Executive, WithoutFaultsCommandsThePlanInOrderAndFinishes) {
   EXPECT_FALSE(exec->aborted());
   EXPECT_FALSE(r.has("violation"));
   EXPECT_EQ(r.count("fault abort_and_replan") + r.count("fault reset"), 0u);
+  // A token's start and end name it "timeline == predicate(args) #id": the viewer maps them to
+  // the plan's tokens by that (services/viewer/core/execution_trace.hpp).
+  std::vector<std::string> picture;
+  for (const auto& e : r.events)
+    if ((e.kind == "started" || e.kind == "ended") && e.text.find("picture") != std::string::npos)
+      picture.push_back(e.kind + " " + e.text);
+  EXPECT_EQ(picture, (std::vector<std::string>{"started sc.camera == picture(asteroid) #1",
+                                               "ended sc.camera == picture(asteroid) #1"}));
 }
 
 TEST(Executive, CameraStuckOnAbortsSafesAndRequestsAPlanFromTheCurrentState) {
