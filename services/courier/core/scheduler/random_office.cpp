@@ -119,6 +119,11 @@ SchedulingProblem random_office(const OfficeSpec& spec) {
                             spec.now_s + 10.0 * dice.in(1, std::max(1, spec.tight_max_s / 10))}};
   for (int k = 0; k < std::min(spec.closed_rooms, spec.rooms); ++k)
     p.travel.cut_off(static_cast<std::size_t>(dice.in(1, spec.rooms)));
+  if (spec.late_arrival_percent > 0)
+    for (Person& person : p.people)
+      if (dice.percent(spec.late_arrival_percent))
+        person.presence = {
+            {spec.now_s + 10.0 * dice.in(1, std::max(1, spec.late_max_s / 10)), 17.0 * 3600.0}};
   return p;
 }
 

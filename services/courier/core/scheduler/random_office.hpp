@@ -12,7 +12,8 @@
 // Harder instances (off by default; a spec that leaves them off gives the same instance for a
 // seed as before they existed, their dice are rolled after everything else): people with one
 // short presence window around now (some leave before a courier can get there, some clash with
-// each other), and rooms whose door is closed (TravelMatrix::cut_off of their desk).
+// each other), rooms whose door is closed (TravelMatrix::cut_off of their desk), and people who
+// arrive only after now.
 #include "services/courier/core/scheduler/scheduling_problem.hpp"
 
 #include <cstdint>
@@ -34,6 +35,10 @@ struct OfficeSpec {
   int tight_presence_percent = 0;
   int tight_max_s = 600;
   int closed_rooms = 0;  // rooms cut off at random (their desk; never the mail station)
+  // Share of people who come in only later: present from now + 10..late_max_s to 17:00 (the
+  // courier waits for them). Rolled after the closed rooms.
+  int late_arrival_percent = 0;
+  int late_max_s = 600;
   double now_s = 9.0 * 3600.0;
   std::uint64_t seed = 1;
 };

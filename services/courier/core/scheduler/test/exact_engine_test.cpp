@@ -71,6 +71,27 @@ TEST(ExactEngineBounds, EqualsTheDpWithTightDeadlines) {
   expect_exact_equals_dp(six_jobs(100, false), 311, 10);
 }
 
+TEST(ExactEngineBounds, EqualsTheDpWhenSomePeopleComeOrLeaveSoon) {
+  // Most people always present, some arriving or leaving within 1-15 minutes. An earlier label
+  // may cut a later, cheaper one of its state by its head start only while no stop left can
+  // wait for a window (the head start is then kept by every job left); where a stop left waits
+  // for someone to arrive, both labels wait and the head start is lost.
+  // Seeds 101-180 hold three offices (122, 157, 180) where the head start priced without that
+  // condition cuts the optimum.
+  OfficeSpec spec = six_jobs(30, false);
+  spec.jobs = 7;
+  spec.late_arrival_percent = 40;
+  spec.late_max_s = 900;
+  expect_exact_equals_dp(spec, 101, 80);
+  spec.late_arrival_percent = 0;
+  spec.tight_presence_percent = 40;
+  expect_exact_equals_dp(spec, 513, 12);
+  // Loose and larger: many labels of one state at different times, priced by their head start.
+  OfficeSpec loose = six_jobs(20, false);
+  loose.jobs = 8;
+  expect_exact_equals_dp(loose, 521, 6);
+}
+
 TEST(ExactEngineBounds, EqualsTheDpWithObjectsAboardAndLookAlikes) {
   OfficeSpec spec = six_jobs(20, false);
   spec.capacity = 2;
