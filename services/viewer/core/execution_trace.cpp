@@ -100,6 +100,7 @@ void ExecutionTraces::apply(const msg::LatestPlan& plan) {
   while (trace.plans_heard.size() > limits_.plans) {
     auto old = std::find_if(trace.plans_heard.begin(), trace.plans_heard.end(),
                             [&](const std::string& id) { return id != trace.plan_id; });
+    if (old == trace.plans_heard.end()) break;  // only the executing one (a limit of 0)
     trace.plans.erase(*old);
     trace.plans_heard.erase(old);
   }
