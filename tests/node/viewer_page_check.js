@@ -19,7 +19,8 @@
 //     white background);
 //   - with --executed EXECUTIVE:TOKENS: the executive's planned-against-executed chart draws its
 //     current plan's bars and that many executed-token bars, the middle pixel of each painted
-//     (not the row's grey or white background); the JSON lists each bar (running or not).
+//     (not the row's grey or white background), and the mouse over the first one names it; the
+//     JSON lists each bar (running or not) and that tooltip.
 "use strict";
 const { spawn } = require("child_process");
 const fs = require("fs");
@@ -196,11 +197,15 @@ async function main() {
         const c = [...document.querySelectorAll("canvas.execution")].find(c => c.dataset.executive === ${JSON.stringify(executive)});
         if (!c || !c.executed || c.executed.length < ${tokens} || !c.planned.length) return null;
         const g = c.getContext("2d"), mid = b => g.getImageData(Math.round(b.x + b.w / 2), Math.round(b.y + b.h / 2), 1, 1).data;
-        return { planned: c.planned.map(b => { const p = mid(b); return ${painted}; }),
+        // The mouse over the first executed bar names it (the chart's tooltip).
+        const r = c.getBoundingClientRect(), b0 = c.executed[0];
+        c.dispatchEvent(new MouseEvent("mousemove", { bubbles: true, clientX: r.left + b0.x + b0.w / 2, clientY: r.top + b0.y + b0.h / 2 }));
+        return { planned: c.planned.map(b => { const p = mid(b); return ${painted}; }), hover: c.title,
                  executed: c.executed.map(b => { const p = mid(b); return { token: b.token, running: b.running, filled: ${painted} }; }) };
       })()`).catch(e => e.message);
       const ok = drawn && Array.isArray(drawn.executed) && drawn.executed.length === tokens &&
-                 drawn.executed.every(b => b.filled) && drawn.planned.length > 0 && drawn.planned.every(f => f);
+                 drawn.executed.every(b => b.filled) && drawn.planned.length > 0 && drawn.planned.every(f => f) &&
+                 drawn.hover.includes(" #" + drawn.executed[0].token + ":");
       check(`${executive}'s plan drawn against ${tokens} executed tokens`, !!ok, JSON.stringify(drawn));
     }
 
