@@ -61,6 +61,7 @@ class ScenarioChecker {
     robots(file, root, out.world);
     places(file, root, out);
     waypoints(file, root, out);
+    parking(file, root, out);
     radio(file, root, out);
     office(file, root, out);
     if (file.has_spacecraft())
@@ -407,6 +408,28 @@ class ScenarioChecker {
         continue;
       }
       out.waypoints.push_back({w.name(), position});
+    }
+  }
+
+  // Where a robot parks must be free space (a waypoint only inside the world): a spot in a wall
+  // would send every idle courier of a fleet into it.
+  void parking(const config::Scenario& file, const Locator& root, Scenario& out) {
+    std::map<std::string, int> seen;
+    for (int i = 0; i < file.parking_size(); ++i) {
+      const config::Waypoint& w = file.parking(i);
+      const Locator at = root.nested("parking", i);
+      if (!unique_name("parking spot", w.name(), at.at("name"), seen)) continue;
+      const std::string who = "parking spot '" + w.name() + "'";
+      if (!w.has_position()) {
+        error(at.self(), who + ": position is missing");
+        continue;
+      }
+      const geometry::Vec2 position{w.position().x(), w.position().y()};
+      if (const auto problem = point_problem(position, out.world)) {
+        error(at.at("position"), who + " at " + point_text(position.x(), position.y()) + " " + *problem);
+        continue;
+      }
+      out.parking.push_back({w.name(), position});
     }
   }
 

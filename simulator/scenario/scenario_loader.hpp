@@ -21,6 +21,7 @@ struct Scenario {
   std::vector<RoomSpec> rooms;
   std::vector<PlaceSpec> places;
   std::vector<WaypointSpec> waypoints;
+  std::vector<WaypointSpec> parking;  // Scenario.parking: where a fleet's idle couriers wait
   RadioSettings radio;
   // The office (people, objects, loading stations) when the file declares any, checked: its
   // places are the file's rooms (kind room, at the centre of their bounds) and places.

@@ -116,6 +116,7 @@ CourierOfficeResult load_courier_office(const std::string& scenario_path) {
       if (!hallway) office.floor.door_of_room.emplace(room, d.id);
     }
   }
+  for (const auto& p : scenario.parking) office.floor.parking.push_back({p.name, p.position.x(), p.position.y()});
   for (const auto& r : world.robots_at_start)
     if (r.kind == "courier") office.robots.push_back(robot_of(r));
   for (const auto& r : world.known_robots)

@@ -47,6 +47,7 @@ INSTANTIATE_TEST_SUITE_P(Files, BadScenario,
                                            "place_unknown_room.pbtxt", "place_in_obstacle.pbtxt",
                                            "duplicate_waypoint.pbtxt", "bad_sensor.pbtxt",
                                            "bad_area.pbtxt", "bad_radio.pbtxt", "syntax_error.pbtxt",
+                                           "parking_in_obstacle.pbtxt", "duplicate_parking.pbtxt",
                                            // The office: people, objects, loading stations.
                                            "person_unknown_desk.pbtxt", "duplicate_person.pbtxt",
                                            "presence_backwards.pbtxt", "presence_overlap.pbtxt",
@@ -59,7 +60,7 @@ INSTANTIATE_TEST_SUITE_P(Files, BadScenario,
 TEST(BadScenarioFiles, EveryFileInTheFolderIsListed) {
   int files = 0;
   for (const auto& entry : fs::directory_iterator(kBad)) files += entry.path().extension() == ".pbtxt";
-  EXPECT_EQ(files, 26);  // 15 of the world, 11 of the office
+  EXPECT_EQ(files, 28);  // 17 of the world, 11 of the office
 }
 
 Scenario load_shipped(const std::string& name) {
@@ -83,6 +84,9 @@ TEST(ShippedScenarios, OfficeFloorHasTheCourierPapersRoomsDoorsAndPlaces) {
   bool michael = false;
   for (const PlaceSpec& p : s.places) michael |= p.name == "michael-desk" && p.room == "A-120";
   EXPECT_TRUE(michael);
+  ASSERT_EQ(s.parking.size(), 4u);  // the hallway's dead ends and two empty offices
+  EXPECT_EQ(s.parking[0].name, "hall-west-end");
+  EXPECT_DOUBLE_EQ(s.parking[1].position.x(), 39.4);
   World world(s.world);
   const auto rhino = world.robot_spec("rhino");
   ASSERT_TRUE(rhino.has_value());

@@ -103,13 +103,19 @@ DayPlan plan_day(const config::Scenario& office, const DaySettings& settings, st
     if (!habit && d.has_script()) d.clear_script();
   }
 
-  // The couriers: the first robot and copies of it beside it in the hallway.
+  // The couriers: the first robot and copies of it. A fleet starts on the office's parking spots
+  // (where its idle robots wait, out of the way), the ones beyond them beside the first robot in
+  // the hallway; a lone courier starts where the scenario puts it.
   const config::Robot first = sc.robots(0);
   sc.clear_robots();
-  for (int k = 0; k < std::max(1, settings.couriers); ++k) {
+  const int couriers = std::max(1, settings.couriers);
+  for (int k = 0; k < couriers; ++k) {
     config::Robot r = first;
-    if (k > 0) {
-      r.set_id(first.id() + std::to_string(k + 1));
+    if (k > 0) r.set_id(first.id() + std::to_string(k + 1));
+    if (couriers > 1 && k < sc.parking_size()) {
+      r.mutable_start()->set_x(sc.parking(k).position().x());
+      r.mutable_start()->set_y(sc.parking(k).position().y());
+    } else if (k > 0) {
       r.mutable_start()->set_x(first.start().x() + 1.5 * k);
     }
     *sc.add_robots() = r;

@@ -576,6 +576,7 @@ void CourierExecutive::send_goal(Robot& robot, const std::string& place, double 
   if (!p) return;
   robot.goal_id = robot.id + "/" + place + "/" + settings_.id_tag + "." + std::to_string(++robot.goal_seq);
   robot.goal_place = place;
+  robot.parking.clear();  // at work: the spot is free for whoever is idle first
   robot.goal_from = robot.at_place;
   robot.goal_sent_s = now_s;
   robot.goal_answered = false;

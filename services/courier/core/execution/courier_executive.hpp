@@ -63,7 +63,8 @@ struct ExecutiveSettings {
   std::int64_t day = 1;
 };
 
-// The goal place of a robot driving home (where it joined the fleet); no place of the floor.
+// The goal place of a robot driving to where it parks (a parking spot of the floor, or home:
+// where it joined the fleet); no place of the floor.
 inline constexpr char kHomePlace[] = "@home";
 // The goal place of a robot waiting in sight of a door: "@lookout A-120" (Floor::door_lookouts).
 inline constexpr char kLookoutPrefix[] = "@lookout ";
@@ -245,6 +246,8 @@ class CourierExecutive {
     // there, out of the others' way (a robot stopped in the hallway blocks a doorway).
     bool home_known = false;
     double home_x = 0.0, home_y = 0.0;
+    // The parking spot it holds (Floor::parking) from being parked until it is sent elsewhere.
+    std::string parking;
   };
 
   void reschedule(double now_s);
@@ -268,8 +271,16 @@ class CourierExecutive {
   void reconsider_returns(const std::string& door_id, double now_s);
   // Sends `robot` to the lookout of `door` (when the floor has one and it is not there).
   void watch_door(Robot& robot, const std::string& door, double now_s);
-  // Nothing to do: home (several robots) or stop (cancel a goal no longer needed). fleet.cpp.
+  // Nothing to do: to a parking spot or home (several robots), or stop (cancel a goal no longer
+  // needed). fleet.cpp.
   void park(Robot& robot, double now_s);
+  struct ParkingPlace {
+    double x = 0.0, y = 0.0;
+    std::string spot;  // "" for the robot's home
+  };
+  // Where an idle robot of a fleet waits: the spot it holds, else the nearest spot that no other
+  // robot holds or stands at (it then holds it), else where it joined the fleet. fleet.cpp.
+  std::optional<ParkingPlace> parking_place(Robot& robot);
   void send_goal(Robot& robot, const std::string& place, double now_s);
   void send_handover(Robot& robot, const PlanStop& stop, double now_s);
   bool at(const Robot& robot, const std::string& place) const;

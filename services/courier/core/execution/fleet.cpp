@@ -81,21 +81,53 @@ void CourierExecutive::on_pose(const std::string& robot, double x, double y) {
   }
 }
 
+namespace {
+// A robot this close to its parking place is parked (the goal tolerance of a place is smaller).
+constexpr double kParkedM = 1.0;
+}  // namespace
+
+std::optional<CourierExecutive::ParkingPlace> CourierExecutive::parking_place(Robot& robot) {
+  for (const auto& spot : floor_.parking)
+    if (spot.name == robot.parking) return ParkingPlace{spot.x, spot.y, spot.name};
+  const Floor::ParkingSpot* best = nullptr;
+  double best_m = std::numeric_limits<double>::infinity();
+  for (const auto& spot : floor_.parking) {
+    bool taken = false;
+    for (const auto& [id, other] : robots_) {
+      if (id == robot.id) continue;
+      taken = taken || other.parking == spot.name ||
+              (other.pose_known && std::hypot(other.x - spot.x, other.y - spot.y) <= kParkedM);
+    }
+    const double m = robot.pose_known ? std::hypot(robot.x - spot.x, robot.y - spot.y) : 0.0;
+    if (!taken && m < best_m) {
+      best = &spot;
+      best_m = m;
+    }
+  }
+  if (best) {
+    robot.parking = best->name;
+    return ParkingPlace{best->x, best->y, best->name};
+  }
+  if (robot.home_known) return ParkingPlace{robot.home_x, robot.home_y, ""};
+  return std::nullopt;
+}
+
 void CourierExecutive::park(Robot& robot, double now_s) {
-  constexpr double kAtHomeM = 1.0;
-  const bool away = robot.home_known && std::hypot(robot.x - robot.home_x, robot.y - robot.home_y) > kAtHomeM;
-  if (robots_.size() > 1 && away) {
-    if (robot.goal_place == kHomePlace) return;  // on its way
-    robot.goal_id = robot.id + "/home/" + settings_.id_tag + "." + std::to_string(++robot.goal_seq);
+  if (robots_.size() > 1 && robot.goal_place == kHomePlace) return;  // on its way
+  const std::optional<ParkingPlace> parking = robots_.size() > 1 && robot.pose_known ? parking_place(robot) : std::nullopt;
+  if (parking && std::hypot(robot.x - parking->x, robot.y - parking->y) > kParkedM) {
+    const bool spot = !parking->spot.empty();
+    robot.goal_id = robot.id + (spot ? "/park/" : "/home/") + settings_.id_tag + "." + std::to_string(++robot.goal_seq);
     robot.goal_place = kHomePlace;
     robot.goal_sent_s = now_s;
     robot.goal_answered = false;
     robot.at_place.clear();
-    orders_.goals.push_back({robot.id, robot.goal_id, robot.home_x, robot.home_y, settings_.goal_tolerance_m});
+    orders_.goals.push_back({robot.id, robot.goal_id, parking->x, parking->y, settings_.goal_tolerance_m});
     char where[64];
-    std::snprintf(where, sizeof where, "(%.1f, %.1f)", robot.home_x, robot.home_y);
+    std::snprintf(where, sizeof where, "(%.1f, %.1f)", parking->x, parking->y);
     event(ExecutionEvent::Kind::heading,
-          robot.id + " heads home to " + where + ", out of the way: nothing for it now (" + clock_text(now_s) + ")");
+          robot.id + (spot ? " parks at " + parking->spot + " " + where : " heads home to " + std::string(where)) +
+              ", out of the way: nothing for it now (" + clock_text(now_s) + ")");
     return;
   }
   if (robot.goal_id.empty() || robot.goal_place == kHomePlace) return;

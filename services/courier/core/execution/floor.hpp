@@ -6,6 +6,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace autonomy::courier {
 
@@ -29,6 +30,14 @@ struct Floor {
     double y = 0.0;
   };
   std::map<std::string, Lookout> door_lookouts;
+  // Where an idle robot of a fleet waits out of everybody's way (Scenario.parking), one robot
+  // per spot. None: it goes back to where it joined the fleet.
+  struct ParkingSpot {
+    std::string name;
+    double x = 0.0;
+    double y = 0.0;
+  };
+  std::vector<ParkingSpot> parking;
 
   const FloorPlace* place(const std::string& name) const {
     const auto it = places.find(name);

@@ -75,6 +75,7 @@ void CourierExecutive::watch_door(Robot& robot, const std::string& door, double 
   }
   robot.goal_id = robot.id + "/lookout-" + door + "/" + settings_.id_tag + "." + std::to_string(++robot.goal_seq);
   robot.goal_place = place;
+  robot.parking.clear();
   robot.goal_from.clear();
   robot.goal_sent_s = now_s;
   robot.goal_answered = false;

@@ -47,6 +47,13 @@ TEST(OfficeDay, ADayIsSeededAndTheSameForOneOrThreeCouriers) {
   EXPECT_EQ(one.scenario.robots_size(), 1);
   ASSERT_EQ(three.scenario.robots_size(), 3);
   EXPECT_EQ(three.scenario.robots(2).id(), "rhino3");
+  // A lone courier starts where the office puts it; a fleet on the office's parking spots.
+  EXPECT_DOUBLE_EQ(one.scenario.robots(0).start().x(), office.robots(0).start().x());
+  ASSERT_GE(office.parking_size(), 3);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_DOUBLE_EQ(three.scenario.robots(k).start().x(), office.parking(k).position().x()) << k;
+    EXPECT_DOUBLE_EQ(three.scenario.robots(k).start().y(), office.parking(k).position().y()) << k;
+  }
   EXPECT_EQ(three.scenario.simulation().step_s(), 0.5);
 }
 

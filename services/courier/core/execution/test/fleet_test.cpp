@@ -64,7 +64,7 @@ Job delivery(const std::string& id, const std::string& object, const std::string
 
 class FleetTest : public ::testing::Test {
  protected:
-  FleetTest() : exec_(paper_floor(), scheduler_) {}
+  explicit FleetTest(Floor floor = paper_floor()) : exec_(std::move(floor), scheduler_) {}
 
   Orders step() {
     Orders o = exec_.step(now_);
@@ -270,6 +270,111 @@ TEST_F(FleetTest, CancellingAStrandedJobEndsItSayingWhereTheObjectIs) {
   const Job* job = exec_.job("job-1");
   EXPECT_EQ(job->state, JobState::cancelled);
   EXPECT_NE(job->reason.find("red stranded aboard rhino"), std::string::npos) << job->reason;
+}
+
+// The floor with parking spots at the hallway's dead ends (Scenario.parking).
+class FleetParkingTest : public FleetTest {
+ protected:
+  static Floor floor_with_parking() {
+    Floor f = paper_floor();
+    f.parking = {{"hall-west-end", 0.55, 8.0}, {"hall-east-end", 39.4, 7.6}, {"hall-east", 38.2, 8.4}};
+    return f;
+  }
+  FleetParkingTest() : FleetTest(floor_with_parking()) {}
+  // The park goal sent to `robot` in `o`, if any.
+  static const NavGoalOrder* park_goal(const Orders& o, const std::string& robot) {
+    for (const auto& g : o.goals)
+      if (g.robot == robot) return &g;
+    return nullptr;
+  }
+};
+
+TEST_F(FleetParkingTest, IdleRobotsOfAFleetParkEachAtTheNearestSpotNoOtherHolds) {
+  exec_.add_robot("rhino", 3);
+  exec_.add_robot("rhino2", 3);
+  exec_.add_robot("rhino3", 3);
+  exec_.add_robot("rhino4", 3);
+  exec_.on_pose("rhino", 5.0, 8.0);
+  exec_.on_pose("rhino2", 35.0, 8.0);
+  exec_.on_pose("rhino3", 37.0, 8.0);
+  exec_.on_pose("rhino4", 20.0, 8.0);
+  Orders o = step();
+  if (o.goals.empty()) o = step();  // the first step may only plan
+  // rhino2 took hall-east (the nearer of the two east spots); rhino3, nearer to hall-east than
+  // rhino2 but later, gets the other; rhino4 finds none free and stays home (where it joined).
+  const std::map<std::string, std::pair<double, double>> expected = {
+      {"rhino", {0.55, 8.0}}, {"rhino2", {38.2, 8.4}}, {"rhino3", {39.4, 7.6}}};
+  ASSERT_EQ(o.goals.size(), 3u);
+  for (const auto& [robot, xy] : expected) {
+    const NavGoalOrder* g = park_goal(o, robot);
+    ASSERT_NE(g, nullptr) << robot;
+    EXPECT_DOUBLE_EQ(g->x, xy.first) << robot;
+    EXPECT_DOUBLE_EQ(g->y, xy.second) << robot;
+    EXPECT_NE(g->goal_id.find(robot + "/park/"), std::string::npos) << g->goal_id;
+  }
+  EXPECT_EQ(park_goal(o, "rhino4"), nullptr);
+  const auto heading = texts(ExecutionEvent::Kind::heading);
+  EXPECT_NE(std::find_if(heading.begin(), heading.end(),
+                         [](const std::string& t) { return t.rfind("rhino parks at hall-west-end (0.6, 8.0), out of the way", 0) == 0; }),
+            heading.end());
+
+  // Parked: nothing more for them, however often the executive steps.
+  for (const auto& [robot, xy] : expected) {
+    exec_.on_pose(robot, xy.first, xy.second);
+    exec_.on_goal(robot, park_goal(o, robot)->goal_id, GoalOutcome::reached, "", now_);
+  }
+  now_ += 5;
+  EXPECT_TRUE(step().goals.empty());
+
+  // rhino4, moved away from home, drives back there: no spot is free.
+  exec_.on_pose("rhino4", 25.0, 8.0);
+  now_ += 5;
+  const Orders home = step();
+  ASSERT_EQ(home.goals.size(), 1u);
+  EXPECT_NE(home.goals[0].goal_id.find("rhino4/home/"), std::string::npos);
+  EXPECT_DOUBLE_EQ(home.goals[0].x, 20.0);
+}
+
+TEST_F(FleetParkingTest, ARobotSentToWorkFreesItsSpotOnceItHasLeftIt) {
+  exec_.add_robot("rhino", 3);
+  exec_.add_robot("rhino2", 3);
+  exec_.on_pose("rhino", 0.55, 8.0);   // parked west
+  exec_.on_pose("rhino2", 10.0, 8.0);
+  Orders o = step();
+  if (o.goals.empty()) o = step();
+  // rhino stands on the west spot and holds it; rhino2 parks east, though west is nearer.
+  const NavGoalOrder* g2 = park_goal(o, "rhino2");
+  ASSERT_NE(g2, nullptr);
+  EXPECT_DOUBLE_EQ(g2->x, 38.2);
+  EXPECT_EQ(park_goal(o, "rhino"), nullptr);
+  exec_.on_pose("rhino2", 38.2, 8.4);
+  exec_.on_goal("rhino2", g2->goal_id, GoalOutcome::reached, "", now_);
+
+  // rhino gets a job and leaves its spot; rhino2, idle, is already parked and stays (its own
+  // spot, not the nearest free one, is where it waits).
+  scheduler_.prefer = {{"job-1", "rhino"}};
+  exec_.add_job(delivery("job-1", "red", "meeting-table", "michael-desk"), now_);
+  now_ += 5;
+  o = step();
+  ASSERT_NE(park_goal(o, "rhino"), nullptr);
+  EXPECT_NE(park_goal(o, "rhino")->goal_id.find("meeting-table"), std::string::npos);
+  EXPECT_EQ(park_goal(o, "rhino2"), nullptr);
+
+  // A third robot joining beside the west end takes it once rhino has driven off (1 m or more).
+  exec_.add_robot("rhino3", 3);
+  exec_.on_pose("rhino3", 2.5, 8.0);
+  exec_.on_pose("rhino", 1.2, 8.0);  // still on the spot
+  now_ += 5;
+  o = step();
+  if (park_goal(o, "rhino3") == nullptr) o = step();
+  ASSERT_NE(park_goal(o, "rhino3"), nullptr);
+  EXPECT_DOUBLE_EQ(park_goal(o, "rhino3")->x, 39.4);  // the west spot is still stood on
+  exec_.on_pose("rhino3", 30.0, 8.0);
+  exec_.on_pose("rhino", 4.0, 10.0);
+  now_ += 5;
+  step();
+  // rhino3 holds hall-east-end from then on: a spot is not swapped for a nearer one on the way.
+  EXPECT_TRUE(step().goals.empty());
 }
 
 TEST(FleetRoster, CouriersJoinWhenReadyAndLeaveWhenStoppedGoneOrSilent) {
