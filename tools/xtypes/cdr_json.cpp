@@ -343,4 +343,11 @@ Json cdr_to_json(const Type& type, const std::string& cdr, const WalkOptions& op
   return walker.walk(type, "");
 }
 
+Json key_of(const Type& type, const Json& sample) {
+  Json key = Json::object();
+  for (const auto& m : type.members)
+    if (m.key && sample.contains(m.name)) key[m.name] = sample[m.name];
+  return key;
+}
+
 }  // namespace autonomy::xtypes

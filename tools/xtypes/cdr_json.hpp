@@ -32,6 +32,9 @@ struct WalkOptions {
 // Throws CdrError naming the member path where the bytes ran out or made no sense.
 Json cdr_to_json(const Type& type, const std::string& cdr, const WalkOptions& options = {});
 
+// The key members of a walked sample (top-level members marked @key), in type order.
+Json key_of(const Type& type, const Json& sample);
+
 std::string base64(const unsigned char* data, size_t size);
 
 }  // namespace autonomy::xtypes

@@ -2,13 +2,6 @@
 
 namespace autonomy::xtypes {
 
-Json key_of(const Type& type, const Json& sample) {
-  Json key = Json::object();
-  for (const auto& m : type.members)
-    if (m.key && sample.contains(m.name)) key[m.name] = sample[m.name];
-  return key;
-}
-
 JsonReader::JsonReader(dds_entity_t participant, const DiscoveredTopic& topic, const dds_qos_t* qos, WalkOptions options)
     : topic_(topic), reader_(participant, topic, qos), options_(options) {}
 

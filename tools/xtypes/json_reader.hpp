@@ -39,7 +39,4 @@ class JsonReader {
   std::map<dds_instance_handle_t, Json> keys_;  // of each live instance seen
 };
 
-// The key members of a walked sample (top-level members marked @key), in type order.
-Json key_of(const Type& type, const Json& sample);
-
 }  // namespace autonomy::xtypes

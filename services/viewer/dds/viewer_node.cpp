@@ -19,14 +19,6 @@ namespace {
 // writer leaves the picture; other topics keep their last value (a closed door stays closed).
 bool viewer_instance_gone(dds::InstanceState s) { return s != dds::InstanceState::Alive; }
 
-// A panel's key: the values of the sample's key members ("ds1"; several joined with '/').
-std::string panel_key(const xtypes::Json& key) {
-  std::string out;
-  for (const auto& [name, value] : key.items())
-    out += (out.empty() ? "" : "/") + (value.is_string() ? value.get<std::string>() : value.dump());
-  return out;
-}
-
 }  // namespace
 
 ViewerNode::ViewerNode(service::Service& service, ViewerNodeOptions options)
@@ -127,19 +119,19 @@ void ViewerNode::follow_panel(const std::string& topic, const char* group) {
   const recording::RecordableTopic* ours = recording::find_recordable(topic);
   if (!ours) throw std::logic_error("viewer: panel topic " + topic + " is not in the catalogue");
   const auto& participant = service_.participant();
-  auto reader = std::make_unique<xtypes::JsonReader>(
-      participant.handle(), xtypes::compiled_topic(participant.handle(), ours->name, ours->descriptor),
-      dds::make_qos(ours->qos).get());
-  xtypes::JsonReader* r = reader.get();
-  panel_readers_.push_back(std::move(reader));
-  service_.loop().on_condition(r->data_condition(), [this, r, group] {
-    for (const auto& s : r->take()) {
-      if (!s.error.empty())
-        spdlog::warn("viewer: a sample of {} does not fit its type: {}", r->topic().name, s.error);
-      else if (s.valid && s.instance_state == DDS_IST_ALIVE)
-        panels_.apply(group, panel_key(s.key), s.json);
-      else if (s.instance_state != DDS_IST_ALIVE && !s.key.empty())
-        panels_.erase(group, panel_key(s.key));
+  const xtypes::DiscoveredTopic typed = xtypes::compiled_topic(participant.handle(), ours->name, ours->descriptor);
+  auto feed = std::make_unique<PanelFeed>(PanelFeed{
+      std::make_unique<xtypes::CdrReader>(participant.handle(), typed, dds::make_qos(ours->qos).get()),
+      LatestSamples(typed.type, group), typed.name});
+  PanelFeed* f = feed.get();
+  panel_feeds_.push_back(std::move(feed));
+  service_.loop().on_condition(f->reader->data_condition(), [f] {
+    for (auto& s : f->reader->take()) {
+      const bool alive = s.instance_state == DDS_IST_ALIVE;
+      if (s.valid && alive)
+        f->latest.add(s.instance, true, std::move(s.cdr));
+      else if (!alive)  // disposed, or its writers gone: the panel leaves
+        f->latest.add(s.instance, false, {});
     }
   });
 }
@@ -179,6 +171,11 @@ void ViewerNode::push_frames() {
     server_->publish(FrameKind::Map, map_frame(view_).dump());
   }
   const auto now = std::chrono::steady_clock::now();
+  if (now - last_panels_sent_ >= std::chrono::milliseconds(500)) {
+    for (auto& feed : panel_feeds_)
+      for (const auto& error : feed->latest.flush(panels_))
+        spdlog::warn("viewer: a sample of {} does not fit its type: {}", feed->topic, error);
+  }
   if (panels_.version() != panels_version_sent_ && now - last_panels_sent_ >= std::chrono::milliseconds(500)) {
     panels_version_sent_ = panels_.version();
     last_panels_sent_ = now;

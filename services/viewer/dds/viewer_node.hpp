@@ -20,11 +20,12 @@
 #include "common/dds/topics.hpp"
 #include "common/service/service.hpp"
 #include "services/viewer/core/execution_trace.hpp"
+#include "services/viewer/core/latest_samples.hpp"
 #include "services/viewer/core/panels.hpp"
 #include "services/viewer/core/world_view.hpp"
 #include "services/viewer/web/web_server.hpp"
 #include "tools/recording/raw_topic.hpp"
-#include "tools/xtypes/json_reader.hpp"
+#include "tools/xtypes/discovered_topic.hpp"
 
 #include <chrono>
 #include <map>
@@ -78,7 +79,13 @@ class ViewerNode {
   Subscription<msg::RadioLink> links_;
   Subscription<msg::CourierJobStatus> jobs_;
   Panels panels_;
-  std::vector<std::unique_ptr<xtypes::JsonReader>> panel_readers_;
+  // A panel topic's reader and its latest samples, walked when the panels are sent.
+  struct PanelFeed {
+    std::unique_ptr<xtypes::CdrReader> reader;
+    LatestSamples latest;
+    std::string topic;
+  };
+  std::vector<std::unique_ptr<PanelFeed>> panel_feeds_;
   Subscription<msg::LatestPlan> plans_;  // for the executed timelines
   ExecutionTraces execution_;
   Subscription<msg::ExecutiveEvent> executive_events_;
