@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <algorithm>
 #include <cmath>
+#include <csignal>
 #include <regex>
 #include <sstream>
 
@@ -254,9 +255,14 @@ TEST_F(TopicToolsTest, PubAndEchoOnACatalogueTopicGoThroughTheWalker) {
   const dds::Topic<msg::GoalStatus> topic(participant(), dds::topics::goal_status);
   const dds::Writer<msg::GoalStatus> probe(participant(), topic);
   ASSERT_TRUE(await("echo's reader", [&] { return probe.matched_readers() >= 2; }));
-  run_tool("pub", {"topic", "pub", "autonomy/nav/goal_status",
-                   R"({"robot_id":"r1","goal_id":"g1","state":"preempted","tick":12.0,"distance_to_goal":"inf"})",
-                   "--wait", "10"});
+  // pub stays up (--count 0, once a second) until echo has its sample: echo's reader matched the
+  // probe, but it may match pub's own writer only after a pub that exited at once was gone with
+  // its transient-local sample (seen under ASan, where every start is slower).
+  auto& pub = start("pub", AUTONOMY_AUTONOMY_BIN,
+                    {"topic", "pub", "autonomy/nav/goal_status",
+                     R"({"robot_id":"r1","goal_id":"g1","state":"preempted","tick":12.0,"distance_to_goal":"inf"})",
+                     "--wait", "10", "--count", "0", "--rate", "1", "--domain", std::to_string(domain_)},
+                    /*must_keep_running=*/false, /*separate_stderr=*/true);
   ASSERT_TRUE(await("the status in the typed reader", [&] { return !statuses.poll().empty() || !statuses.all().empty(); }));
   const msg::GoalStatus& got = statuses.all().front();
   EXPECT_EQ(got.robot_id, "r1");
@@ -267,6 +273,9 @@ TEST_F(TopicToolsTest, PubAndEchoOnACatalogueTopicGoThroughTheWalker) {
   EXPECT_EQ(got.reason, "");  // left out: empty
 
   const auto ended = echo.wait_for_exit(60s);
+  pub.signal(SIGINT);
+  const auto pub_ended = pub.wait_for_exit(20s);
+  EXPECT_TRUE(pub_ended.has_value() && pub_ended->exited && pub_ended->code == 0) << read_file(dir().file("pub.err"));
   ASSERT_TRUE(ended.has_value() && ended->exited && ended->code == 0) << read_file(dir().file("echo.err"));
   const auto lines = lines_of(read_file(echo.log_file()));
   ASSERT_EQ(lines.size(), 1u) << read_file(echo.log_file());
