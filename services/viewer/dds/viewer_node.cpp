@@ -59,7 +59,7 @@ ViewerNode::ViewerNode(service::Service& service, ViewerNodeOptions options)
   server_ = std::make_unique<WebServer>(options_.web, std::string(viewer_page_html()), std::move(channels));
 
   auto& loop = service.loop();
-  follow(map_);
+  follow(map_, view_);
   loop.on_samples<msg::RobotState>(robots_.reader, [this](std::vector<dds::Sample<msg::RobotState>> samples) {
     for (const auto& s : samples) {
       if (viewer_instance_gone(s.instance_state))
@@ -68,31 +68,21 @@ ViewerNode::ViewerNode(service::Service& service, ViewerNodeOptions options)
         view_.apply(s.value);
     }
   });
-  follow(doors_);
-  follow(goals_);
-  follow(goal_statuses_);
-  follow(itineraries_);
-  follow(links_);
-  follow(jobs_);
+  follow(doors_, view_);
+  follow(goals_, view_);
+  follow(goal_statuses_, view_);
+  follow(itineraries_, view_);
+  follow(links_, view_);
+  follow(jobs_, view_);
   follow_panel(dds::topics::spacecraft_telemetry.name, "spacecraft");
   follow_panel(dds::topics::truth_spacecraft_fault.name, "faults");
   follow_panel(dds::topics::executive_status.name, "executive");
   follow_panel(dds::topics::planner_plan.name, "plans");
   // A plan also goes to the executed timelines (a disposed one stays there: its executive may
   // still run it).
-  loop.on_samples<msg::LatestPlan>(plans_.reader, [this](std::vector<dds::Sample<msg::LatestPlan>> samples) {
-    for (const auto& s : samples)
-      if (s.valid) execution_.apply(s.value);
-  });
-  loop.on_samples<msg::PlanningReply>(plan_replies_.reader, [this](std::vector<dds::Sample<msg::PlanningReply>> samples) {
-    for (const auto& s : samples)
-      if (s.valid) execution_.apply(s.value);
-  });
-  loop.on_samples<msg::ExecutiveEvent>(executive_events_.reader,
-                                       [this](std::vector<dds::Sample<msg::ExecutiveEvent>> samples) {
-                                         for (const auto& s : samples)
-                                           if (s.valid) execution_.apply(s.value);
-                                       });
+  follow(plans_, execution_);
+  follow(plan_replies_, execution_);
+  follow(executive_events_, execution_);
   const auto period = std::chrono::nanoseconds(static_cast<int64_t>(1e9 / options_.rate_hz));
   loop.every(period, [this] { push_frames(); });
   loop.every(std::chrono::milliseconds(20), [this] { pump_foxglove(); });
@@ -107,11 +97,11 @@ ViewerNode::ViewerNode(service::Service& service, ViewerNodeOptions options)
   std::fflush(stdout);
 }
 
-template <typename T>
-void ViewerNode::follow(Subscription<T>& subscription) {
-  service_.loop().on_samples<T>(subscription.reader, [this](std::vector<dds::Sample<T>> samples) {
+template <typename T, typename Sink>
+void ViewerNode::follow(Subscription<T>& subscription, Sink& sink) {
+  service_.loop().on_samples<T>(subscription.reader, [&sink](std::vector<dds::Sample<T>> samples) {
     for (const auto& s : samples)
-      if (s.valid) view_.apply(s.value);
+      if (s.valid) sink.apply(s.value);
   });
 }
 
@@ -175,11 +165,11 @@ void ViewerNode::push_frames() {
     for (auto& feed : panel_feeds_)
       for (const auto& error : feed->latest.flush(panels_))
         spdlog::warn("viewer: a sample of {} does not fit its type: {}", feed->topic, error);
-  }
-  if (panels_.version() != panels_version_sent_ && now - last_panels_sent_ >= std::chrono::milliseconds(500)) {
-    panels_version_sent_ = panels_.version();
-    last_panels_sent_ = now;
-    server_->publish(FrameKind::Panels, panels_.frame().dump());
+    if (panels_.version() != panels_version_sent_) {
+      panels_version_sent_ = panels_.version();
+      last_panels_sent_ = now;
+      server_->publish(FrameKind::Panels, panels_.frame().dump());
+    }
   }
   if (execution_.version() != execution_version_sent_ && now - last_execution_sent_ >= std::chrono::milliseconds(500)) {
     execution_version_sent_ = execution_.version();

@@ -57,8 +57,10 @@ class ViewerNode {
     dds::Topic<T> topic;
     dds::Reader<T> reader;
   };
-  template <typename T>
-  void follow(Subscription<T>& subscription);
+  // Every valid sample of the subscription applied to `sink` (the world view, or the executed
+  // timelines).
+  template <typename T, typename Sink>
+  void follow(Subscription<T>& subscription, Sink& sink);
   // A side panel's topic (a catalogue topic): the latest sample of each key; a disposed or lost
   // one leaves.
   void follow_panel(const std::string& topic, const char* group);
