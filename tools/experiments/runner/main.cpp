@@ -1,5 +1,6 @@
 // experiment_runner: the six configurations of Wagner & Arkin's Table 1, N trials each, through
-// the real processes (simulator + three behavior controllers) over DDS in lockstep. Trials run
+// the real simulator and three behavior controllers over DDS in lockstep (in one process per trial,
+// or with --processes separate a process per node). Trials run
 // several at a time, each on a DDS domain of its own. Writes OUT/trials.csv (one row per trial, in
 // trial order), OUT/report.md (mean ± sd, Welch t-tests, a typical run's picture per
 // configuration) and per trial the simulator's metrics and picture (OUT/<cfg>-<trial>.json/.svg).
@@ -117,7 +118,14 @@ int main(int argc, char** argv) {
   app.add_option("--domain", o.domain, "First DDS domain id; job k uses domain + k")
       ->check(CLI::Range(0, 232))
       ->capture_default_str();
-  app.add_option("--bin-dir", setup.bin_dir, "Folder holding simulator and behavior")->capture_default_str();
+  std::string processes = "one";
+  app.add_option("--processes", processes,
+                 "one: a trial's simulator and behaviors run in one process (experiment_trial_host); separate: "
+                 "a process each, as deployed (same code and results, more CPU per tick)")
+      ->check(CLI::IsMember({"one", "separate"}))
+      ->capture_default_str();
+  app.add_option("--bin-dir", setup.bin_dir, "Folder holding experiment_trial_host, simulator and behavior")
+      ->capture_default_str();
   app.add_option("--source-dir", o.source_dir, "Project folder (deploy/ lives there)")->capture_default_str();
   app.add_option("--scenario", o.scenario, "Scenario, relative to the project folder")->capture_default_str();
   app.add_option("--timeout", timeout_s, "Seconds one trial may take")->check(CLI::PositiveNumber)->capture_default_str();
@@ -128,6 +136,7 @@ int main(int argc, char** argv) {
         return ids;
       }()));
   CLI11_PARSE(app, argc, argv);
+  setup.one_process = processes == "one";
   if (o.domain + o.jobs - 1 > 232) {
     std::fprintf(stderr, "experiment_runner: --domain %d with --jobs %d needs domains up to %d (232 at most)\n",
                  o.domain, o.jobs, o.domain + o.jobs - 1);
@@ -146,7 +155,9 @@ int main(int argc, char** argv) {
       setup.dds_uri = "file://" + (fs::path(o.source_dir) / "deploy/dds/loopback.xml").string();
 
     // Everything the trials need, checked before the first one starts.
-    for (const char* program : {"simulator", "behavior"}) {
+    const std::vector<std::string> programs =
+        setup.one_process ? std::vector<std::string>{"experiment_trial_host"} : std::vector<std::string>{"simulator", "behavior"};
+    for (const auto& program : programs) {
       const fs::path path = fs::path(setup.bin_dir) / program;
       if (access(path.c_str(), X_OK) != 0) throw std::runtime_error("no program " + path.string() + " (see --bin-dir)");
     }
@@ -165,7 +176,8 @@ int main(int argc, char** argv) {
     std::vector<std::string> failure_lines;  // for the report: a failed trial is not silently left out
     const auto begin = std::chrono::steady_clock::now();
     const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count(); };
-    std::printf("%zu trials (%d per configuration), %d at a time, output in %s\n", planned.size(), o.trials, o.jobs,
+    std::printf("%zu trials (%d per configuration), %d at a time, %s, output in %s\n", planned.size(), o.trials, o.jobs,
+                setup.one_process ? "one process per trial" : "a process per node",
                 o.out.c_str());
     std::fflush(stdout);
 

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <fstream>
 #include <list>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <stdexcept>
@@ -82,35 +83,50 @@ stats::TrialRecord run_trial(const TrialSetup& setup, const std::string& configu
   }
   fs::remove(setup.out_dir / (stem + ".json"));
 
-  // std::list: children do not move once started.
-  std::list<ChildProcess> behaviors;
-  ChildProcess sim("simulator", setup.bin_dir + "/simulator", sim_args, env, log("sim"));
+  std::vector<std::vector<std::string>> behavior_args;
   const std::vector<double> xs = start_positions(setup, seed);
   for (size_t k = 0; k < setup.robots.size(); ++k) {
     const std::string& r = setup.robots[k];
     const fs::path mission = setup.missions_dir / (configuration + "_" + r + ".pbtxt");
-    behaviors.emplace_back("behavior " + r, setup.bin_dir + "/behavior",
-                           std::vector<std::string>{"--robot", r, "--mission", mission.string(), "--start",
-                                                    fixed(xs[k]), fixed(setup.start_y), "--resolution",
-                                                    fixed(setup.grid_resolution_m), "--domain", dom,
-                                                    "--log-dir", logs.string()},
-                           env, log(r));
+    behavior_args.push_back({"--robot", r, "--mission", mission.string(), "--start", fixed(xs[k]), fixed(setup.start_y),
+                             "--resolution", fixed(setup.grid_resolution_m), "--domain", dom, "--log-dir",
+                             logs.string()});
+  }
+
+  // std::list: children do not move once started. One process: the host is `sim` (it ends when
+  // its simulator does), with no behavior processes beside it.
+  std::list<ChildProcess> behaviors;
+  std::optional<ChildProcess> sim;
+  if (setup.one_process) {
+    std::vector<std::string> host_args = {"--log-dir", logs.string(), "--name", stem, "+simulator"};
+    host_args.insert(host_args.end(), sim_args.begin(), sim_args.end());
+    for (const auto& b : behavior_args) {
+      host_args.push_back("+behavior");
+      host_args.insert(host_args.end(), b.begin(), b.end());
+    }
+    sim.emplace("trial host", setup.bin_dir + "/experiment_trial_host", host_args, env, log("trial"));
+  } else {
+    sim.emplace("simulator", setup.bin_dir + "/simulator", sim_args, env, log("sim"));
+    for (size_t k = 0; k < setup.robots.size(); ++k)
+      behaviors.emplace_back("behavior " + setup.robots[k], setup.bin_dir + "/behavior", behavior_args[k], env,
+                             log(setup.robots[k]));
   }
 
   // The simulator ends the run; a behavior that ends before it has failed.
   const auto deadline = std::chrono::steady_clock::now() + setup.timeout;
   std::string failed;
-  while (sim.running() && failed.empty()) {
+  while (sim->running() && failed.empty()) {
     for (auto& b : behaviors)
       if (!b.running()) failed = b.name() + " ended early: " + b.status()->describe() + " (see " + b.log_file() + ")";
     if (std::chrono::steady_clock::now() >= deadline) failed = "did not finish within the trial timeout";
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
-  stop(sim);
+  stop(*sim);
   for (auto& b : behaviors) stop(b);
   if (!failed.empty()) throw std::runtime_error(stem + ": " + failed);
-  if (!sim.status()->exited || sim.status()->code != 0)
-    throw std::runtime_error(stem + ": simulator failed, " + sim.status()->describe() + " (see " + log("sim") + ")");
+  if (!sim->status()->exited || sim->status()->code != 0)
+    throw std::runtime_error(stem + ": " + sim->name() + " failed, " + sim->status()->describe() + " (see " +
+                             sim->log_file() + ")");
 
   const auto j = nlohmann::json::parse(read_text(setup.out_dir / (stem + ".json")));
   stats::TrialRecord rec;

@@ -1,7 +1,9 @@
 #pragma once
-// One trial of the robot-teams experiment: the real simulator and three behavior processes on a
+// One trial of the robot-teams experiment: the real simulator and three behavior controllers on a
 // DDS domain of their own, in lockstep, until every robot finished its mission (or the tick
-// limit); the simulator's metrics file becomes one TrialRecord.
+// limit); the simulator's metrics file becomes one TrialRecord. The nodes run in one process
+// (experiment_trial_host) or, as before, each in its own (simulator, behavior): the same code and
+// flags, so the same results; one process spares the lockstep round trips the network.
 #include "tools/experiments/stats/report.hpp"
 
 #include <chrono>
@@ -14,7 +16,8 @@ namespace autonomy::experiments {
 
 // What every trial shares.
 struct TrialSetup {
-  std::string bin_dir;                   // simulator and behavior
+  std::string bin_dir;                   // experiment_trial_host, simulator and behavior
+  bool one_process = true;               // experiment_trial_host, else a process per node
   std::filesystem::path missions_dir;    // <configuration>_<robot>.pbtxt
   std::filesystem::path scenario;        // its own robots are not spawned (--without-robots)
   std::filesystem::path out_dir;         // metrics, pictures; logs/ below it
@@ -34,7 +37,7 @@ struct TrialSetup {
 std::vector<double> start_positions(const TrialSetup& setup, std::uint64_t seed);
 
 // Runs trial `trial` of `configuration` on DDS domain `domain`. Writes <out>/<cfg>-<trial>.json,
-// .csv and .svg and logs/<cfg>-<trial>-*.out. Throws std::runtime_error naming the log to read
+// .csv and .svg and logs/<cfg>-<trial>-*.out (one process: -trial.out and trial-<cfg>-<trial>.log). Throws std::runtime_error naming the log to read
 // when a process fails or the trial times out.
 // check_for_other_world: the simulator listens (its --world-check, 1 s) for another world on the
 // domain before it starts. The runner asks it for the first trial of each domain only: later trials
