@@ -116,6 +116,9 @@ CourierOfficeResult load_courier_office(const std::string& scenario_path) {
       if (!hallway) office.floor.door_of_room.emplace(room, d.id);
     }
   }
+  for (const auto& r : scenario.rooms)
+    if (r.bounds && office.floor.door_of_room.count(r.name))
+      office.floor.room_areas[r.name] = {r.bounds->min_x, r.bounds->min_y, r.bounds->max_x, r.bounds->max_y};
   for (const auto& p : scenario.parking) office.floor.parking.push_back({p.name, p.position.x(), p.position.y()});
   for (const auto& r : world.robots_at_start)
     if (r.kind == "courier") office.robots.push_back(robot_of(r));

@@ -76,6 +76,7 @@ const char* to_string(ExecutionEvent::Kind k) {
     case ExecutionEvent::Kind::stranded: return "stranded";
     case ExecutionEvent::Kind::resumed: return "resumed";
     case ExecutionEvent::Kind::goal_cancelled: return "goal_cancelled";
+    case ExecutionEvent::Kind::waiting: return "waiting";
   }
   return "?";
 }
@@ -619,6 +620,9 @@ void CourierExecutive::dispatch(Robot& robot, double now_s) {
   }
   if (now_s < robot.hold_until_s) return;
   robot.held_for.clear();  // the wait is over
+  // A robot waits for a room only while its next stop is there (a hold keeps its place in line):
+  // wait_for_room says so again.
+  const std::string waited = std::exchange(robot.waiting_for_room, {});
   const PlanStop* next = nullptr;
   for (const PlanStop& s : robot.route)
     if (still_needed(robot, s)) {
@@ -637,6 +641,7 @@ void CourierExecutive::dispatch(Robot& robot, double now_s) {
     return;
   }
   if (robot.goal_place != next->place) {
+    if (wait_for_room(robot, *next, waited, now_s)) return;
     send_goal(robot, next->place, now_s);
     const JobPhase phase = !job.return_to.empty() ? JobPhase::returning
                            : next->load            ? JobPhase::to_pickup

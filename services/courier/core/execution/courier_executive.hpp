@@ -66,6 +66,9 @@ struct ExecutiveSettings {
 // The goal place of a robot driving to where it parks (a parking spot of the floor, or home:
 // where it joined the fleet); no place of the floor.
 inline constexpr char kHomePlace[] = "@home";
+// A robot this close to the parking spot it holds is parked (the goal tolerance of a place is
+// smaller): out of everybody's way, holding no room.
+inline constexpr double kParkedM = 1.0;
 // The goal place of a robot waiting in sight of a door: "@lookout A-120" (Floor::door_lookouts).
 inline constexpr char kLookoutPrefix[] = "@lookout ";
 inline bool is_lookout(const std::string& place) { return place.rfind(kLookoutPrefix, 0) == 0; }
@@ -119,7 +122,7 @@ struct ExecutionEvent {
   enum class Kind {
     accepted, revised, heading, loaded, unloaded, door_closed, door_opened, goal_blocked, goal_ended,
     handover_failed, handover_refused, failed_over, opportunity_taken, opportunity_declined, returning, finished,
-    schedule_failed, robot_joined, robot_left, reallocated, stranded, resumed, goal_cancelled
+    schedule_failed, robot_joined, robot_left, reallocated, stranded, resumed, goal_cancelled, waiting
   };
   Kind kind;
   std::string text;
@@ -248,6 +251,11 @@ class CourierExecutive {
     double home_x = 0.0, home_y = 0.0;
     // The parking spot it holds (Floor::parking) from being parked until it is sent elsewhere.
     std::string parking;
+    // The room its next stop is in, while another robot holds that room (room_claims.cpp), and
+    // since when it waits: robots waiting for one room go in the order they began to wait.
+    std::string waiting_for_room;
+    double waiting_since_s = 0.0;
+    std::string waiting_behind;  // the robot it waits for, as last reported
   };
 
   void reschedule(double now_s);
@@ -281,6 +289,18 @@ class CourierExecutive {
   // Where an idle robot of a fleet waits: the spot it holds, else the nearest spot that no other
   // robot holds or stands at (it then holds it), else where it joined the fleet. fleet.cpp.
   std::optional<ParkingPlace> parking_place(Robot& robot);
+  // Fleet rule: one robot in a room at a time (rooms with doors: a desk, a doorway and the space
+  // to turn around are all for one robot). True when `robot` must wait before driving to `stop`:
+  // another robot is in that room or bound for it, or waited for it first. The robot then waits
+  // beside the room's door (the first in line) or where it is, and the job says for whom.
+  // `waited`: the room it waited for until this step. room_claims.cpp.
+  bool wait_for_room(Robot& robot, const PlanStop& stop, const std::string& waited, double now_s);
+  // The robot other than `robot` that holds `room`: bound for a place in it, handing over in it,
+  // or inside its area and not parked. nullptr when the room is free.
+  const Robot* room_holder(const Robot& robot, const std::string& room) const;
+  // Sends `robot` to the lookout beside `door` (when the floor has one and it is not there),
+  // saying `why` in the heading event. False when the door has no lookout (it waits where it is).
+  bool go_to_lookout(Robot& robot, const std::string& door, const std::string& why, double now_s);
   void send_goal(Robot& robot, const std::string& place, double now_s);
   void send_handover(Robot& robot, const PlanStop& stop, double now_s);
   bool at(const Robot& robot, const std::string& place) const;

@@ -81,11 +81,6 @@ void CourierExecutive::on_pose(const std::string& robot, double x, double y) {
   }
 }
 
-namespace {
-// A robot this close to its parking place is parked (the goal tolerance of a place is smaller).
-constexpr double kParkedM = 1.0;
-}  // namespace
-
 std::optional<CourierExecutive::ParkingPlace> CourierExecutive::parking_place(Robot& robot) {
   for (const auto& spot : floor_.parking)
     if (spot.name == robot.parking) return ParkingPlace{spot.x, spot.y, spot.name};

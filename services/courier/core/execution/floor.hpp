@@ -38,6 +38,14 @@ struct Floor {
     double y = 0.0;
   };
   std::vector<ParkingSpot> parking;
+  // The floor area of each room that has a door (Scenario.rooms' bounds). A robot of a fleet
+  // inside one holds the room: another robot whose next stop is in it waits outside until it has
+  // left (room_claims.cpp). A room without an area is held only by robots bound for it.
+  struct Area {
+    double min_x = 0.0, min_y = 0.0, max_x = 0.0, max_y = 0.0;
+    bool contains(double x, double y) const { return x >= min_x && x <= max_x && y >= min_y && y <= max_y; }
+  };
+  std::map<std::string, Area> room_areas;
 
   const FloorPlace* place(const std::string& name) const {
     const auto it = places.find(name);

@@ -64,25 +64,8 @@ bool CourierExecutive::idle_policy(Robot& robot, double now_s) {
 }
 
 void CourierExecutive::watch_door(Robot& robot, const std::string& door, double now_s) {
-  const auto lookout = floor_.door_lookouts.find(door);
-  if (lookout == floor_.door_lookouts.end()) return;  // waits where it is
-  const std::string place = kLookoutPrefix + door;
-  if (robot.goal_place == place || robot.at_place == place) return;  // on its way, or there
-  constexpr double kThereM = 0.5;
-  if (robot.pose_known && std::hypot(robot.x - lookout->second.x, robot.y - lookout->second.y) <= kThereM) {
-    robot.at_place = place;
-    return;
-  }
-  robot.goal_id = robot.id + "/lookout-" + door + "/" + settings_.id_tag + "." + std::to_string(++robot.goal_seq);
-  robot.goal_place = place;
-  robot.parking.clear();
-  robot.goal_from.clear();
-  robot.goal_sent_s = now_s;
-  robot.goal_answered = false;
-  robot.at_place.clear();
-  orders_.goals.push_back({robot.id, robot.goal_id, lookout->second.x, lookout->second.y, settings_.goal_tolerance_m});
-  event(ExecutionEvent::Kind::heading,
-        robot.id + " waits in sight of " + door + " until it opens (" + clock_text(now_s) + ")");
+  go_to_lookout(robot, door, robot.id + " waits in sight of " + door + " until it opens (" + clock_text(now_s) + ")",
+                now_s);
 }
 
 void CourierExecutive::give_up_job(Job& job, const std::string& reason, double now_s) {
