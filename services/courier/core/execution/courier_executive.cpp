@@ -219,9 +219,15 @@ void CourierExecutive::on_goal(const std::string& robot, const std::string& goal
           from = comma + 1;
         }
       }
-      if (!closed_door_for(place) && ++r.blocked[place] >= settings_.max_blocked_goals) {
+      // Other robots in the way (only a fleet has them): they move on, so it tries again soon.
+      const bool traffic = robots_.size() > 1 && (reason.find("no progress") != std::string::npos ||
+                                                   reason.find("robot ") != std::string::npos);
+      const int limit = traffic ? settings_.max_traffic_blocked_goals : settings_.max_blocked_goals;
+      if (!closed_door_for(place) && ++r.blocked[place] >= limit) {
         r.blocked.erase(place);
         give_up_on(place, "cannot reach " + place + ": " + reason, now_s);
+      } else if (traffic && !closed_door_for(place)) {
+        r.hold(now_s + settings_.traffic_retry_s * r.blocked[place]);
       }
       reschedule_needed_ = true;
       return;

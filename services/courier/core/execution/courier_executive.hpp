@@ -38,6 +38,11 @@ struct ExecutiveSettings {
   double goal_answer_s = 10.0;       // a goal its behavior never acknowledges counts as refused
   double schedule_retry_s = 1.0;     // a schedule that failed as a whole is tried again after this
   int max_blocked_goals = 2;         // a place unreachable this often, no door to blame: its job fails
+  // With several robots, a goal blocked by traffic ("no progress", or a robot named in the way)
+  // says little about the place: the other robot moves on. Such a place is tried again after
+  // traffic_retry_s (times the blocks so far) and given up only after this many blocks in a row.
+  int max_traffic_blocked_goals = 6;
+  double traffic_retry_s = 5.0;
   int max_attempts = 3;              // refused goals, failed or refused handovers of one step
   double goal_tolerance_m = 0.35;    // for navigation goals to places (within the place's radius)
   double home_retry_s = 30.0;        // an idle robot whose way home was blocked tries again after this

@@ -49,6 +49,38 @@ TEST_F(FleetTest, ARobotJoiningWhileJobsRunGetsWorkAtTheNextReschedule) {
   EXPECT_EQ(texts(ExecutionEvent::Kind::robot_joined)[1], "rhino2 joined the fleet (capacity 2)");
 }
 
+TEST_F(FleetTest, AGoalBlockedByTrafficIsTriedAgainLaterAndGivenUpOnlyAfterSixBlocks) {
+  exec_.add_robot("rhino", 3);
+  exec_.add_robot("rhino2", 3);
+  exec_.on_pose("rhino", 12.0, 8.0);
+  exec_.on_pose("rhino2", 30.0, 8.0);
+  scheduler_.prefer = {{"job-1", "rhino"}};
+  exec_.add_job(delivery("job-1", "red", "meeting-table", "michael-desk"), now_);
+  step();
+  for (int block = 1; block <= 5; ++block) {
+    const std::string goal = goals_.at("rhino").goal_id;
+    ASSERT_NE(goal.find("meeting-table"), std::string::npos) << goal;
+    now_ += 12;
+    exec_.on_goal("rhino", goal, GoalOutcome::blocked, "no progress for 10.0 s, 3.1 m from goal", now_);
+    step();
+    // It waits 5 s times the blocks so far, then the same place again; the job is not given up.
+    now_ += 5.0 * block - 1.0;
+    step();
+    EXPECT_EQ(goals_.at("rhino").goal_id, goal) << "block " << block;
+    now_ += 1.0;
+    step();
+    EXPECT_NE(goals_.at("rhino").goal_id, goal) << "block " << block;
+    EXPECT_EQ(exec_.job("job-1")->state, JobState::underway) << "block " << block;
+  }
+  now_ += 12;
+  exec_.on_goal("rhino", goals_.at("rhino").goal_id, GoalOutcome::blocked,
+                "no route to goal (4.00, 10.70): robot rhino2 (parked) at (1.6, 9.0) in doorway A-111", now_);
+  step();
+  EXPECT_EQ(exec_.job("job-1")->state, JobState::failed);
+  EXPECT_EQ(exec_.job("job-1")->reason.rfind("cannot reach meeting-table: no route to goal", 0), 0u)
+      << exec_.job("job-1")->reason;
+}
+
 TEST_F(FleetTest, ARobotWhoseJobWentToAnotherGoesHomeOutOfTheWay) {
   exec_.add_robot("rhino", 3);
   exec_.add_robot("rhino2", 3);
