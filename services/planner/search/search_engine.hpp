@@ -29,6 +29,21 @@ struct SearchStatistics {
   std::size_t temporal_propagations = 0, procedure_calls = 0;
 };
 
+// The propagation work of one solve(): the network's totals at its start, subtracted at its end.
+class PropagationCount {
+ public:
+  explicit PropagationCount(const TokenNetwork& net)
+      : temporal_(net.temporal().propagations()),
+        procedures_(net.constraints().statistics().procedure_calls) {}
+  void record(const TokenNetwork& net, SearchStatistics& s) const {
+    s.temporal_propagations = net.temporal().propagations() - temporal_;
+    s.procedure_calls = net.constraints().statistics().procedure_calls - procedures_;
+  }
+
+ private:
+  std::size_t temporal_, procedures_;
+};
+
 enum class SearchStatus { kPlanFound, kExhausted, kOutOfBudget };
 
 struct SearchOutcome {
@@ -56,6 +71,8 @@ struct EngineOptions {
   unsigned seed = 1;              // for engines that sample
   std::size_t discrepancies = 2;  // limited discrepancy search: the most allowed per probe
   std::size_t restarts = 1000;    // iterative sampling: probes per solve()
+  // Large-neighbourhood search: the decision budget of each neighbourhood's re-planning.
+  std::size_t neighbourhood_decisions = 300;
   // Iterative repair reports each decision it applies, why it took that option (the memory of
   // the previous plan's choice, the heuristic's order, or a repair of a culprit) and whether
   // it applied (its propagation succeeded).
@@ -65,9 +82,12 @@ struct EngineOptions {
 
 // "chronological" (depth-first with chronological backtracking, the Remote Agent's),
 // "discrepancy" (limited discrepancy search, Harvey 1995), "sampling" (heuristic-biased
-// iterative sampling with seeded restarts; incomplete) or "repair" (iterative repair: at a dead
+// iterative sampling with seeded restarts; incomplete), "repair" (iterative repair: at a dead
 // end one culprit decision changes and the rest of the plan is re-applied; incomplete, its
-// backtracks count the repairs; iterative_repair.cpp). Null for an unknown name.
+// backtracks count the repairs; iterative_repair.cpp) or "lns" (large-neighbourhood search:
+// the chronological engine's first plan, then parts of the best plan relaxed and re-planned
+// under a small budget, anytime; complete through full searches with doubling budgets;
+// large_neighbourhood.cpp). Null for an unknown name.
 std::unique_ptr<SearchEngine> make_search_engine(const std::string& name,
                                                  const EngineOptions& options = {});
 std::vector<std::string> search_engine_names();

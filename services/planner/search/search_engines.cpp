@@ -2,6 +2,7 @@
 #include <random>
 
 #include "iterative_repair.hpp"
+#include "large_neighbourhood.hpp"
 #include "search_engine.hpp"
 
 namespace autonomy::planner {
@@ -117,9 +118,8 @@ class EngineBase : public SearchEngine {
   }
 
  protected:
-  SearchOutcome finish(TokenNetwork& net, SearchOutcome out, std::size_t tn0, std::size_t cn0) {
-    out.statistics.temporal_propagations = net.temporal().propagations() - tn0;
-    out.statistics.procedure_calls = net.constraints().statistics().procedure_calls - cn0;
+  SearchOutcome finish(TokenNetwork& net, SearchOutcome out, const PropagationCount& count) {
+    count.record(net, out.statistics);
     return out;
   }
   EngineOptions options_;
@@ -130,12 +130,11 @@ class ChronologicalBacktracking final : public EngineBase {
   using EngineBase::EngineBase;
   std::string name() const override { return "chronological"; }
   SearchOutcome solve(TokenNetwork& net, const Termination& term) override {
-    const std::size_t tn0 = net.temporal().propagations();
-    const std::size_t cn0 = net.constraints().statistics().procedure_calls;
+    const PropagationCount count(net);
     SearchOutcome out;
     DepthFirst dfs(net, options_.selector, term, out.statistics);
     out.status = dfs.run(static_cast<std::size_t>(-1));
-    return finish(net, out, tn0, cn0);
+    return finish(net, out, count);
   }
 };
 
@@ -144,8 +143,7 @@ class LimitedDiscrepancy final : public EngineBase {
   using EngineBase::EngineBase;
   std::string name() const override { return "discrepancy"; }
   SearchOutcome solve(TokenNetwork& net, const Termination& term) override {
-    const std::size_t tn0 = net.temporal().propagations();
-    const std::size_t cn0 = net.constraints().statistics().procedure_calls;
+    const PropagationCount count(net);
     SearchOutcome out;
     DepthFirst dfs(net, options_.selector, term, out.statistics);
     // Probes with 0, 1, ... discrepancies, then without a limit (so the engine stays complete).
@@ -153,10 +151,10 @@ class LimitedDiscrepancy final : public EngineBase {
       out.status = dfs.run(k);
       if (out.status == SearchStatus::kPlanFound || out.status == SearchStatus::kExhausted ||
           term.should_stop(out.statistics.decisions))
-        return finish(net, out, tn0, cn0);
+        return finish(net, out, count);
     }
     out.status = dfs.run(static_cast<std::size_t>(-1));
-    return finish(net, out, tn0, cn0);
+    return finish(net, out, count);
   }
 };
 
@@ -169,8 +167,7 @@ class IterativeSampling final : public EngineBase {
   using EngineBase::EngineBase;
   std::string name() const override { return "sampling"; }
   SearchOutcome solve(TokenNetwork& net, const Termination& term) override {
-    const std::size_t tn0 = net.temporal().propagations();
-    const std::size_t cn0 = net.constraints().statistics().procedure_calls;
+    const PropagationCount count(net);
     SearchOutcome out;
     SearchStatistics& stats = out.statistics;
     const TokenNetwork::Mark root = net.mark();
@@ -181,13 +178,13 @@ class IterativeSampling final : public EngineBase {
         if (term.should_stop(stats.decisions)) {
           net.undo_to(root);
           out.status = SearchStatus::kOutOfBudget;
-          return finish(net, out, tn0, cn0);
+          return finish(net, out, count);
         }
         std::vector<Flaw> flaws = net.flaws();
         if (flaws.empty()) {
           ++stats.plans;
           out.status = SearchStatus::kPlanFound;
-          return finish(net, out, tn0, cn0);
+          return finish(net, out, count);
         }
         std::vector<Decision> options = net.options(flaws[options_.selector(net, flaws)]);
         std::vector<double> weights;
@@ -216,7 +213,7 @@ class IterativeSampling final : public EngineBase {
       net.undo_to(root);
     }
     out.status = SearchStatus::kOutOfBudget;
-    return finish(net, out, tn0, cn0);
+    return finish(net, out, count);
   }
 
  private:
@@ -231,11 +228,12 @@ std::unique_ptr<SearchEngine> make_search_engine(const std::string& name,
   if (name == "discrepancy") return std::make_unique<LimitedDiscrepancy>(options);
   if (name == "sampling") return std::make_unique<IterativeSampling>(options);
   if (name == "repair") return make_iterative_repair(options);
+  if (name == "lns") return make_large_neighbourhood_search(options);
   return nullptr;
 }
 
 std::vector<std::string> search_engine_names() {
-  return {"chronological", "discrepancy", "sampling", "repair"};
+  return {"chronological", "discrepancy", "sampling", "repair", "lns"};
 }
 
 }  // namespace autonomy::planner

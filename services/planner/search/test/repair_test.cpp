@@ -9,6 +9,7 @@
 #include "plan_validator.hpp"
 #include "planner.hpp"
 #include "planner_language.hpp"
+#include "shipped_jobshop.hpp"
 
 namespace autonomy::planner {
 namespace {
@@ -48,17 +49,9 @@ std::optional<LoadedRepair> load_shipped(const std::string& model_name, const st
 }
 
 std::optional<LoadedRepair> load_jobshop(const std::string& name) {
-  Diagnostics errors;
-  const std::string file = std::string(PLANNER_EXAMPLES_DIR "/jobshop/") + name;
-  auto text = read_text_file(file, &errors);
-  auto inst = text ? parse_jobshop(*text, file, &errors) : std::nullopt;
-  auto model = inst ? build_domain_model(jobshop_model(*inst), &errors) : std::nullopt;
-  auto problem = model ? build_problem(*model, jobshop_problem(*inst), &errors) : std::nullopt;
-  if (!problem) {
-    ADD_FAILURE() << to_string(errors);
-    return std::nullopt;
-  }
-  return LoadedRepair{*model, *problem};
+  auto shop = load_shipped_jobshop(name);
+  if (!shop) return std::nullopt;
+  return LoadedRepair{shop->model, shop->problem};
 }
 
 struct Recorded {
