@@ -14,7 +14,12 @@
 // with them, to see what they save.
 //
 // Usage: lockstep_bench [--domain 161] [--ticks 20000] [--warmup-ticks 300] [--robots 1,3]
-//                       [--dds-extra file.xml] [--quiet-ticks] [--quick]
+//                       [--dds-extra file.xml] [--quiet-ticks] [--quick] [--old-bin DIR]
+//                       [--run-domains 8]
+//   --old-bin DIR runs every case with the simulator and behavior executables in DIR first (a copy
+//   of an earlier build), so a change is measured against its baseline in the same run.
+//   --run-domains K: the lockstep runs take the domains after --domain in turn, K of them (one
+//   after the other, each run's processes gone before the next starts).
 //   --dds-extra appends a Cyclone config snippet (e.g. bench/cyclone-lockstep.xml) to
 //   CYCLONEDDS_URI for the lockstep processes, and runs the same cases without it first, for
 //   comparison.
@@ -55,6 +60,8 @@ struct Options {
   std::string secure_dir;
   bool quiet_ticks = false;
   int rtt_count = 3000;
+  std::string old_bin;  // a folder with an earlier build's simulator and behavior, if set
+  int run_domains = 8;
 };
 
 struct RobotSpec {
@@ -134,7 +141,7 @@ void use_identity(const std::string& secure_dir, const std::string& base, const 
   setenv("CYCLONEDDS_URI", uri.c_str(), 1);
 }
 
-RunResult run_lockstep(const Options& o, int robots, int domain, const std::string& label,
+RunResult run_lockstep(const Options& o, int robots, int domain, const std::string& label, const std::string& bin,
                        const std::string& secure_dir = "") {
   const char* env_uri = std::getenv("CYCLONEDDS_URI");
   const std::string base = env_uri ? env_uri : "";
@@ -143,7 +150,6 @@ RunResult run_lockstep(const Options& o, int robots, int domain, const std::stri
     std::string uri;
     ~RestoreUri() { setenv("CYCLONEDDS_URI", uri.c_str(), 1); }
   } restore{base};
-  const std::string bin = self_dir();
   const std::string log_dir = "/tmp/autonomy-bench/lockstep-" + std::to_string(getpid()) + "-" + label;
   std::system(("mkdir -p " + log_dir).c_str());
   const std::string dom = std::to_string(domain);
@@ -289,7 +295,7 @@ Options parse(int argc, char** argv) {
   bool quick = false;
   CLI::App app{"Lockstep ticks per second: the real simulator with 1 and 3 real behavior processes"};
   app.add_option("--domain", o.domain, "First DDS domain id (the runs use the next few too)")
-      ->check(CLI::Range(0, 228))
+      ->check(CLI::Range(0, 224))  // + up to 8 run domains: at most 232 (Cyclone's ports)
       ->capture_default_str();
   app.add_option("--ticks", o.ticks, "Ticks per run")->check(CLI::PositiveNumber)->capture_default_str();
   app.add_option("--warmup-ticks", o.warmup_ticks, "Ticks before measuring")
@@ -304,6 +310,12 @@ Options parse(int argc, char** argv) {
   app.add_flag("--quiet-ticks", o.quiet_ticks,
                "Let the world step ticks every participant declared quiet without a round trip (not comparable"
                " with the 1/RTT bound)");
+  app.add_option("--old-bin", o.old_bin,
+                 "Also run every case with the simulator and behavior in this folder (an earlier build), first")
+      ->check(CLI::ExistingDirectory);
+  app.add_option("--run-domains", o.run_domains, "How many domains after --domain the lockstep runs take in turn")
+      ->check(CLI::Range(1, 8))
+      ->capture_default_str();
   app.add_flag("--quick", quick, "Short runs, for a smoke test");
   try {
     app.parse(argc, argv);
@@ -360,20 +372,28 @@ int main(int argc, char** argv) {
     progress("[baseline] raw RTT p50 %.1f us -> at most %.0f ticks/s", rtt_p50, 1e6 / rtt_p50);
 
     struct Config {
-      std::string name, uri, secure_dir;
+      std::string name, uri, secure_dir, bin;
     };
-    std::vector<Config> configs = {{"default", base_uri, ""}};
+    const std::string bin = self_dir();
+    std::vector<Config> configs;
+    if (!o.old_bin.empty()) {
+      for (const char* exe : {"/simulator", "/behavior"})
+        if (access((o.old_bin + exe).c_str(), X_OK) != 0)
+          throw std::runtime_error("--old-bin " + o.old_bin + ": no executable " + o.old_bin + exe);
+      configs.push_back({"old", base_uri, "", o.old_bin});
+    }
+    configs.push_back({"default", base_uri, "", bin});
     if (!o.dds_extra.empty()) {
       const std::string extra = o.dds_extra.rfind("file://", 0) == 0 || o.dds_extra.rfind('<', 0) == 0
                                     ? o.dds_extra
                                     : "file://" + o.dds_extra;
-      configs.push_back({"extra", base_uri.empty() ? extra : base_uri + "," + extra, ""});
+      configs.push_back({"extra", base_uri.empty() ? extra : base_uri + "," + extra, "", bin});
     }
     if (!o.secure_dir.empty()) {
       const std::string dir = std::filesystem::absolute(o.secure_dir).string();
       if (!std::filesystem::exists(dir + "/identities/simulator-main/cyclone.xml"))
         throw std::runtime_error("--secure " + dir + ": no identities (security.sh set DIR deploy/sets/demo-lockstep.set)");
-      configs.push_back({"secure", base_uri, dir});
+      configs.push_back({"secure", base_uri, dir, bin});
     }
 
     std::vector<std::pair<std::string, RunResult>> results;
@@ -384,10 +404,10 @@ int main(int argc, char** argv) {
         const std::string label = c.name + "-" + std::to_string(robots) + "robot";
         progress("[lockstep] %s: simulator + %d behavior, %lld ticks (domain %d)", label.c_str(), robots,
                  static_cast<long long>(o.ticks), domain);
-        const RunResult r = run_lockstep(o, robots, domain, label, c.secure_dir);
+        const RunResult r = run_lockstep(o, robots, domain, label, c.bin, c.secure_dir);
         progress("[lockstep] %s: %.0f ticks/s, mean step %.1f us", label.c_str(), r.ticks_per_s, r.mean_step_us);
         results.emplace_back(c.name, r);
-        domain = domain + 1 > 169 ? o.domain + 1 : domain + 1;
+        domain = domain + 1 > o.domain + o.run_domains ? o.domain + 1 : domain + 1;
       }
     }
     setenv("CYCLONEDDS_URI", base_uri.c_str(), 1);
@@ -414,15 +434,19 @@ int main(int argc, char** argv) {
       if (r.robots == 3) std::printf("  (goal: at least 10000 ticks/s with 3 robots)");
       std::printf("\n");
     }
-    for (const auto& [name, r] : results) {
-      if (name != "secure") continue;
-      for (const auto& [n2, r2] : results)
-        if (n2 == "default" && r2.robots == r.robots)
-          std::printf("  DDS Security, %d robots: %.0f against %.0f ticks/s plain = %.2f x (CPU per tick: simulator"
-                      " %.2f x, behaviors %.2f x)\n",
-                      r.robots, r.ticks_per_s, r2.ticks_per_s, r.ticks_per_s / r2.ticks_per_s,
-                      r.sim_cpu_us_per_tick / r2.sim_cpu_us_per_tick,
-                      r.behavior_cpu_us_per_tick / r2.behavior_cpu_us_per_tick);
+    // Pairs measured in this run: (what, against what).
+    const std::pair<const char*, const char*> pairs[] = {{"secure", "default"}, {"default", "old"}};
+    for (const auto& [what, against] : pairs) {
+      for (const auto& [name, r] : results) {
+        if (name != what) continue;
+        for (const auto& [n2, r2] : results)
+          if (n2 == against && r2.robots == r.robots)
+            std::printf("  %s against %s, %d robots: %.0f against %.0f ticks/s = %.2f x (CPU per tick: simulator"
+                        " %.2f x, behaviors %.2f x)\n",
+                        what, against, r.robots, r.ticks_per_s, r2.ticks_per_s, r.ticks_per_s / r2.ticks_per_s,
+                        r.sim_cpu_us_per_tick / r2.sim_cpu_us_per_tick,
+                        r.behavior_cpu_us_per_tick / r2.behavior_cpu_us_per_tick);
+      }
     }
     return 0;
   } catch (const std::exception& e) {

@@ -48,7 +48,8 @@ LockstepClient::LockstepClient(Service& service, std::string participant_name,
       // right after a SIGSTOP or a cut), so it is written again.
       if (v == clock::ClockVerdict::Repeated && acked_ && s.value.tick == last_ack_.tick) ack_again = true;
       if (v == clock::ClockVerdict::Follow) {
-        if (!newest) spdlog::debug("following {}", check_.explain(r, v));
+        // Built only when logged: explain() formats a string, and this runs at every tick.
+        if (!newest && spdlog::should_log(spdlog::level::debug)) spdlog::debug("following {}", check_.explain(r, v));
         newest = &s.value;
       } else if (v != clock::ClockVerdict::Repeated) {
         const uint64_t n = check_.counts().ignored();

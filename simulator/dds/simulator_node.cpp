@@ -490,7 +490,7 @@ void SimulatorNode::handle_spawns() {
       // The robot is part of the current tick from now on: its controller must be able to act on
       // this tick's state before the world may step.
       if (!result.already_present) {
-        publish_robot_state(*world_.robot(r.robot_id));
+        publish_robot_states({*world_.robot(r.robot_id)});
         radio_dirty_ = true;
       }
     }
@@ -510,7 +510,7 @@ void SimulatorNode::open_tick() {
   const std::vector<RobotStatus> robots = world_.robots();
   if (radio_dirty_ || tick_ % options_.radio_period_ticks == 0) update_radio();
   deliver_due_messages();
-  for (const auto& r : robots) publish_robot_state(r);
+  publish_robot_states(robots);
   publish_perception(robots);
   publish_door_changes();
   update_office(robots);
@@ -525,11 +525,14 @@ void SimulatorNode::open_tick() {
   clock_written_ = std::chrono::steady_clock::now();
 }
 
-void SimulatorNode::publish_robot_state(const RobotStatus& r) {
+void SimulatorNode::publish_robot_states(const std::vector<RobotStatus>& robots) {
   const int64_t now_ns = to_ns(static_cast<double>(tick_) * options_.settings.step_s);
-  state_writer_.write(to_msg(r, tick_, now_ns));
-  published_poses_[r.id] = r.pose;
-  record_robot(r);
+  for (const RobotStatus& r : robots) {
+    state_writer_.write(to_msg(r, tick_, now_ns));
+    published_poses_[r.id] = r.pose;
+    record_robot(r);
+  }
+  state_writer_.flush();
 }
 
 void SimulatorNode::record_robot(const RobotStatus& r) {

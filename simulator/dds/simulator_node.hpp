@@ -21,6 +21,7 @@
 #include "common/dds/writer.hpp"
 #include "common/service/service.hpp"
 #include "simulator/core/lockstep_barrier.hpp"
+#include "simulator/dds/batched_writer.hpp"
 #include "simulator/core/world.hpp"
 #include "simulator/office/handover_desk.hpp"
 #include "simulator/radio/connectivity.hpp"
@@ -98,7 +99,8 @@ class SimulatorNode {
   void apply_commands(const std::vector<msg::VelocityCommand>& commands);
   void handle_spawns();
   void open_tick();  // publishes state and clock of tick_, starts the barrier's tick
-  void publish_robot_state(const RobotStatus& robot);
+  // The states of these robots at tick_, sent together (one datagram per reader process).
+  void publish_robot_states(const std::vector<RobotStatus>& robots);
   void record_robot(const RobotStatus& robot);  // the trajectory file and picture, no DDS
   // Quiet ticks (simulator/dds/quiet_ticks.cpp).
   // The tick just stepped need not be published (`robots`: the world's, at this tick).
@@ -208,7 +210,7 @@ class SimulatorNode {
   dds::Topic<msg::GoalStatus> goal_status_topic_;
   dds::Topic<msg::MissionStatus> mission_status_topic_;
   dds::Writer<msg::SimClock> clock_writer_;
-  dds::Writer<msg::RobotState> state_writer_;
+  BatchedWriter<msg::RobotState> state_writer_;  // flushed once per tick: publish_robot_states()
   dds::Writer<msg::CommandRejection> rejection_writer_;
   dds::Writer<msg::SpawnReply> spawn_reply_writer_;
   dds::Writer<msg::WorldMap> map_writer_;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <tuple>
@@ -114,7 +115,11 @@ geometry::Vec2 GoToController::choose_target(const geometry::Vec2& p,
   const int r0 = std::max(0, static_cast<int>(std::floor((p.y() - lookahead) / res)));
   const int c1 = std::min(g.cols() - 1, static_cast<int>(std::floor((p.x() + lookahead) / res)));
   const int r1 = std::min(g.rows() - 1, static_cast<int>(std::floor((p.y() + lookahead) / res)));
-  std::vector<std::tuple<double, std::size_t>> ranked;  // (score, index): index breaks ties
+  // (score, index): index breaks ties, so the order is total and the first visible candidate is
+  // the same whatever the heap does. A heap, not a sort: most calls look at a handful of the
+  // hundreds of candidates. The buffer is kept between calls (one command per tick).
+  std::vector<std::tuple<double, std::size_t>>& ranked = ranked_;
+  ranked.clear();
   for (int row = r0; row <= r1; ++row) {
     for (int col = c0; col <= c1; ++col) {
       const GridCell c{col, row};
@@ -125,9 +130,11 @@ geometry::Vec2 GoToController::choose_target(const geometry::Vec2& p,
       ranked.emplace_back(static_cast<double>(cost) + dist, g.index(c));
     }
   }
-  std::sort(ranked.begin(), ranked.end());
-  for (const auto& [score, index] : ranked) {
-    const auto centre = g.centre(g.cell(index));
+  const auto later = std::greater<std::tuple<double, std::size_t>>();
+  std::make_heap(ranked.begin(), ranked.end(), later);
+  for (auto end = ranked.end(); end != ranked.begin(); --end) {
+    std::pop_heap(ranked.begin(), end, later);  // the best candidate left moves to end - 1
+    const auto centre = g.centre(g.cell(std::get<1>(*(end - 1))));
     if (visible(field, p, centre)) return centre;
   }
   // Unreachable in practice: the robot's own cell is reachable and its centre is always visible.

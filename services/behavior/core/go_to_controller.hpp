@@ -22,6 +22,10 @@
 #include "services/behavior/core/cost_to_go_field.hpp"
 #include "services/behavior/core/velocity_command.hpp"
 
+#include <cstddef>
+#include <tuple>
+#include <vector>
+
 namespace autonomy::behavior {
 
 struct GoToConfig {
@@ -65,6 +69,8 @@ class GoToController {
   Kinematics kinematics_;
   MotionLimits limits_;
   GoToConfig config_;
+  // choose_target()'s candidates, kept so that a command per tick allocates nothing.
+  mutable std::vector<std::tuple<double, std::size_t>> ranked_;
 };
 
 }  // namespace autonomy::behavior
