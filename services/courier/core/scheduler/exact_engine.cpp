@@ -241,21 +241,24 @@ class CourierSearch {
       x ^= x >> 29;
       return static_cast<std::size_t>(x);
     }
-    Slot& find(std::uint64_t masks, int loc) {
+    Slot& find(std::uint64_t masks, int loc, std::size_t h) {
       const std::size_t mask = slots.size() - 1;
-      for (std::size_t i = hash(masks, loc) & mask;; i = (i + 1) & mask) {
+      for (std::size_t i = h & mask;; i = (i + 1) & mask) {
         Slot& s = slots[i];
         if (s.generation != generation || (s.masks == masks && s.loc == loc)) return s;
       }
     }
-    Slot& claim(std::uint64_t masks, int loc) {
+    // The slot a lookup of hash h starts at, asked for early: the lookups are cache misses, and
+    // a parent's children are looked up together after all of them are made.
+    void prefetch(std::size_t h) const { __builtin_prefetch(&slots[h & (slots.size() - 1)]); }
+    Slot& claim(std::uint64_t masks, int loc, std::size_t h) {
       if (2 * (used + 1) > slots.size()) {
         std::vector<Slot> old = std::move(slots);
         slots.assign(old.size() * 2, Slot{});
         for (const Slot& s : old)
-          if (s.generation == generation) find(s.masks, s.loc) = s;
+          if (s.generation == generation) find(s.masks, s.loc, hash(s.masks, s.loc)) = s;
       }
-      Slot& s = find(masks, loc);
+      Slot& s = find(masks, loc, h);
       if (s.generation != generation) s = {masks, loc, -1, generation}, ++used;
       return s;
     }
@@ -285,29 +288,23 @@ class CourierSearch {
   //   lateness >= max(sum max(0, e_j - d_j), sum max(0, c_k - d_(k)) with deadlines sorted: the
   //        sorted matching minimises a sum of a convex function of c - d);
   //   completion >= sum (c_k - now).
-  bool lower_bound(const Label& s, Objective& lb) {
+  //
+  // The work part (t + the sum of the k smallest w_j, each completion at least `gap` after the
+  // one before) is computed first: alone it cuts nearly every label the whole bound cuts on loose
+  // offices (no label of 30 loose 12-job offices was cut by the e_j alone), so when `cut_at` is
+  // given and that part already reaches it, the e_j and the deadline terms are skipped (returns
+  // false: no completion beats `cut_at`). Also false when some job left cannot be finished.
+  bool lower_bound(const Label& s, Objective& lb, const Objective* cut_at = nullptr) {
     lb = s.cost;
     int r = 0;
     double shortest_delivery_left = kNoRoute;
-    int late_alone = 0;
-    double lateness_alone = 0.0;
     std::uint64_t active = 0;  // places with a stop left, as place masks of the jobs (by slot r)
     for (std::size_t i = 0; i < jobs_.size(); ++i) {
       if (s.delivered >> i & 1u) continue;
       const JobData& d = data(i);
       const LocalJob& lj = local_jobs_[i];
       const bool picked = s.picked >> i & 1u;
-      const double t = earliest_alone(s, i, s.t);
-      if (!(t < kNoRoute)) {
-        clear_touching(active);
-        return false;
-      }
-      if (t > d.deadline + 1e-9) {
-        ++late_alone;
-        lateness_alone += t - d.deadline;
-      }
       shortest_delivery_left = std::min(shortest_delivery_left, d.del_dur);
-      earliest_[r] = t;
       work_[r] = d.del_dur + (picked ? 0.0 : d.pick_dur);
       if (masks_ok_) {
         if (!picked) {
@@ -320,15 +317,38 @@ class CourierSearch {
       ++r;
     }
     if (masks_ok_) charge_legs(local_[static_cast<std::size_t>(s.loc)], active);
+    sort_bound_values(work_, r);
+    const double gap = shortest_delivery_left;
+    const double now = rs_.problem().now_s;
+    if (cut_at) {
+      Objective partial = s.cost;
+      double busy = s.t, previous = -kNoRoute;
+      for (int k = 0; k < r; ++k) {
+        busy += work_[k];
+        previous = std::max(busy, previous + gap);
+        partial.completion_s += previous - now;
+      }
+      if (compare(partial, *cut_at) >= 0) return false;
+    }
+    int late_alone = 0;
+    double lateness_alone = 0.0;
+    for (int i = 0, k = 0; i < static_cast<int>(jobs_.size()); ++i) {
+      if (s.delivered >> i & 1u) continue;
+      const double t = earliest_alone(s, static_cast<std::size_t>(i), s.t);
+      if (!(t < kNoRoute)) return false;
+      const double deadline = data(static_cast<std::size_t>(i)).deadline;
+      if (t > deadline + 1e-9) {
+        ++late_alone;
+        lateness_alone += t - deadline;
+      }
+      earliest_[k++] = t;
+    }
     int q = 0;
     for (int i : by_deadline_)
       if (!(s.delivered >> i & 1u)) due_[q++] = data(static_cast<std::size_t>(i)).deadline;
     sort_bound_values(earliest_, r);
-    sort_bound_values(work_, r);
     double previous = -kNoRoute;
     double busy = s.t;
-    const double gap = shortest_delivery_left;
-    const double now = rs_.problem().now_s;
     double completion = 0.0, lateness_sorted = 0.0;
     for (int k = 0; k < r; ++k) {
       busy += work_[k];
@@ -364,6 +384,10 @@ class CourierSearch {
           break;
         }
       if (leg <= 0.0) continue;
+      if ((jobs & (jobs - 1)) == 0) {  // one job there (the common case): all of it
+        work_[__builtin_ctz(jobs)] += leg;
+        continue;
+      }
       // The jobs there by w ascending (a few), then the lowest k raised to a common level.
       int n = 0;
       for (std::uint32_t b = jobs; b; b &= b - 1) {
@@ -372,18 +396,17 @@ class CourierSearch {
         for (; y > 0 && work_[fill_[y - 1]] > work_[v]; --y) fill_[y] = fill_[y - 1];
         fill_[y] = v;
       }
-      double sum = 0.0, level = 0.0;
+      // The k lowest are raised while their common level (leg + their sum) / k would pass the
+      // next one; compared by multiplying (a division per step was the bound's slowest line).
+      double sum = leg;
       int k = 0;
       while (k < n) {
         sum += work_[fill_[k++]];
-        level = (leg + sum) / k;
-        if (k == n || level <= work_[fill_[k]]) break;
+        if (k == n || sum <= k * work_[fill_[k]]) break;
       }
+      const double level = sum / k;
       for (int x = 0; x < k; ++x) work_[fill_[x]] = level;
     }
-  }
-  void clear_touching(std::uint64_t active) {
-    for (; active; active &= active - 1) touching_[lowest_bit(active)] = 0;
   }
 
   double travel_bound(const Label& s) const {
@@ -400,7 +423,7 @@ class CourierSearch {
   // False when the bound says no completion of this partial route beats the incumbent.
   bool bounded_below_best(const Label& s) {
     Objective lb;
-    if (!lower_bound(s, lb)) return false;
+    if (!lower_bound(s, lb, found_ ? &best_ : nullptr)) return false;
     if (!found_) return true;
     if (compare(lb, best_) >= 0) return false;
     if (lb.late_jobs == best_.late_jobs && std::abs(lb.lateness_s - best_.lateness_s) < 1e-6 &&
@@ -517,8 +540,8 @@ class CourierSearch {
   // Adds a child to the layer being built unless a label of its state dominates it; drops the
   // labels of its state it dominates. The bound waits for the expansion: most children are
   // dominated by a sibling made later, and bounding them all cost more than it saved (measured).
-  void add_label(const Label& child, const StopRef& stop, int parent_trail) {
-    auto& slot = states_.claim(key(child), child.loc);
+  void add_label(const Label& child, const StopRef& stop, int parent_trail, std::size_t hash) {
+    auto& slot = states_.claim(key(child), child.loc, hash);
     for (int k = slot.head; k >= 0; k = next_[static_cast<std::size_t>(k)].next) {
       Label& other = next_[static_cast<std::size_t>(k)];
       if (!other.alive) continue;
@@ -622,6 +645,7 @@ class CourierSearch {
         }
         const std::uint32_t aboard = e.picked & ~e.delivered;
         const bool full = base_load + bit_count(aboard) >= capacity_;
+        int made = 0;  // children_ stored after all are made (their lookups overlap)
         for (std::size_t i = 0; i < jobs_.size() && !stopped_; ++i) {
           const std::uint32_t bit = 1u << i;
           if (e.delivered & bit) continue;
@@ -643,8 +667,14 @@ class CourierSearch {
             continue;
           }
           if (found_ && compare(child.cost, best_) >= 0) continue;
-          add_label(child, stop, e.trail);
+          Child& c = children_[made++];
+          c.label = child;
+          c.stop = stop;
+          c.hash = StateTable::hash(key(child), child.loc);
+          states_.prefetch(c.hash);
         }
+        for (int k = 0; k < made && !stopped_; ++k)
+          add_label(children_[k].label, children_[k].stop, e.trail, children_[k].hash);
       }
       if (beam_ && !stopped_) keep_beam();
       if (!stopped_) compact_trail(best_trail);
@@ -724,6 +754,13 @@ class CourierSearch {
   bool stopped_ = false;
   bool out_of_memory_ = false;
   std::uint64_t nodes_ = 0;
+  // The children of the label being expanded, before they are stored.
+  struct Child {
+    Label label;
+    StopRef stop;
+    std::size_t hash = 0;
+  };
+  Child children_[kMaxJobsPerCourier];
   std::size_t beam_ = 0;                               // 0: exact
   std::vector<std::pair<Objective, int>> beam_order_;  // scratch of keep_beam
 };
