@@ -1,6 +1,7 @@
 // Jobs behind closed doors (the paper's opportunistic primaries): a job whose room, for its pickup
 // or its delivery, is closed waits for the door; an object aboard stays aboard while the rules
-// allow, and a robot with nothing else to do waits in sight of the door. The object goes back only
+// allow, and a robot with nothing else to do waits in sight of the door (in a fleet with parking
+// spots: parked). The object goes back only
 // when the job can no longer be done: its deadline given up by the policy
 // (ExecutiveSettings::give_up_after_deadline_s), a person it needs gone for the day (the scheduler
 // says so), or its place aboard needed by a job that could not be planned otherwise.
@@ -57,6 +58,11 @@ bool CourierExecutive::idle_policy(Robot& robot, double now_s) {
   }
   if (busy) return true;
   if (door_to_watch) {
+    // In a fleet a robot standing beside a door for a long wait narrows the hallway for the
+    // others (the 12-jobs-an-hour day: robots stuck behind one waiting for A-120 for minutes). It
+    // parks instead: the other robots see the door as they pass, and a sighting goes stale after
+    // closed_door_stale_s, which makes the opportunity check run all the same.
+    if (robots_.size() > 1 && !floor_.parking.empty()) return false;
     watch_door(robot, *door_to_watch, now_s);
     return floor_.door_lookouts.count(*door_to_watch) != 0;
   }
