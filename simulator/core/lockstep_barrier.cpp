@@ -1,7 +1,5 @@
 #include "simulator/core/lockstep_barrier.hpp"
 
-#include <algorithm>
-
 namespace autonomy::sim {
 
 bool LockstepBarrier::add(const std::string& participant, bool from_current) {
@@ -71,20 +69,25 @@ std::vector<std::string> LockstepBarrier::waited_for(Tick tick) const {
   return out;
 }
 
+// complete() and quiet() run several times per tick: they walk the members in place instead of
+// copying the names waited_for() lists.
 bool LockstepBarrier::complete(Tick tick) const {
   if (current_ != tick) return false;
-  for (const std::string& p : waited_for(tick)) {
-    if (!done(p, tick)) return false;
+  for (const auto& [p, first] : members_) {
+    if (first <= tick && !done(p, tick)) return false;
   }
   return true;
 }
 
 bool LockstepBarrier::quiet(Tick tick) const {
-  const std::vector<std::string> waited = waited_for(tick);
-  return !waited.empty() && std::all_of(waited.begin(), waited.end(), [&](const std::string& p) {
+  bool anybody = false;
+  for (const auto& [p, first] : members_) {
+    if (first > tick) continue;
+    anybody = true;
     const auto q = quiet_until_.find(p);
-    return q != quiet_until_.end() && q->second > tick;
-  });
+    if (q == quiet_until_.end() || q->second <= tick) return false;
+  }
+  return anybody;
 }
 
 std::vector<std::string> LockstepBarrier::expire(Tick tick, double now_s, double timeout_s) {

@@ -76,6 +76,7 @@ class LockstepBarrier {
   void end_tick(Tick tick);
 
   std::vector<std::string> participants() const;  // registered, sorted
+  bool has_participants() const { return !members_.empty(); }
   // Dropped by expire() and not back yet (sorted): an ack or add() takes one back.
   std::vector<std::string> dropped() const { return {dropped_.begin(), dropped_.end()}; }
   bool is_dropped(const std::string& participant) const { return dropped_.count(participant) > 0; }

@@ -13,7 +13,9 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
+#include <tuple>
 
 namespace autonomy::sim {
 
@@ -55,6 +57,22 @@ msg::RobotState to_msg(const RobotStatus& r, int64_t tick, int64_t sim_time_ns) 
 }
 
 VelocityCommand from_msg(const msg::VelocityCommand& c) { return {c.robot_id, c.source, c.tick, c.vx, c.vy, c.omega}; }
+
+// Stable: commands of one robot from one source keep their arrival order. A tick has a few
+// commands: an insertion sort needs no buffer (std::stable_sort allocates one per call); many
+// (a large fleet) go to std::stable_sort.
+void sort_by_robot_and_source(std::vector<msg::VelocityCommand>& commands) {
+  const auto before = [](const msg::VelocityCommand& a, const msg::VelocityCommand& b) {
+    return std::tie(a.robot_id, a.source) < std::tie(b.robot_id, b.source);
+  };
+  constexpr size_t kInsertionSortUpTo = 16;
+  if (commands.size() > kInsertionSortUpTo) {
+    std::stable_sort(commands.begin(), commands.end(), before);
+    return;
+  }
+  for (auto next = commands.begin(); next != commands.end(); ++next)
+    std::rotate(std::upper_bound(commands.begin(), next, *next, before), next, std::next(next));
+}
 
 int64_t to_ns(double seconds) { return static_cast<int64_t>(std::llround(seconds * 1e9)); }
 
@@ -372,7 +390,7 @@ void SimulatorNode::on_timer() {
       clock_written_ = now;
     }
     // Nobody to wait for: the world idles forward in real time instead of spinning.
-    if (barrier_.participants().empty() && !holding_start() && now - last_advance_ >= period) advance();
+    if (!barrier_.has_participants() && !holding_start() && now - last_advance_ >= period) advance();
     advance_while_complete();
   } else if (now - last_advance_ >= period) {
     // Paced: the next tick is due one period after this one was due, not after the housekeeping
@@ -392,7 +410,7 @@ void SimulatorNode::advance_while_complete() {
   constexpr int kQuietBatch = 50;
   int quiet_in_a_row = 0;
   const auto may_advance = [this] {
-    return !finished_ && !barrier_.participants().empty() && !holding_start() && (quiet_ || barrier_.complete(tick_));
+    return !finished_ && barrier_.has_participants() && !holding_start() && (quiet_ || barrier_.complete(tick_));
   };
   while (may_advance()) {
     if (quiet_ && ++quiet_in_a_row > kQuietBatch) {
@@ -418,10 +436,9 @@ void SimulatorNode::advance() {
   unsynchronised_commands_.clear();
   if (auto it = commands_by_tick_.find(tick_); it != commands_by_tick_.end()) {
     // Arrival order across participants depends on the network; the application order must not.
-    std::stable_sort(it->second.begin(), it->second.end(), [](const auto& a, const auto& b) {
-      return std::tie(a.robot_id, a.source) < std::tie(b.robot_id, b.source);
-    });
-    commands.insert(commands.end(), it->second.begin(), it->second.end());
+    sort_by_robot_and_source(it->second);
+    commands.insert(commands.end(), std::make_move_iterator(it->second.begin()),
+                    std::make_move_iterator(it->second.end()));
   }
   commands_by_tick_.erase(commands_by_tick_.begin(), commands_by_tick_.upper_bound(tick_));
   apply_commands(commands);
@@ -665,13 +682,20 @@ void SimulatorNode::update_radio() {
     link_writer_.write(msg::RadioLink{l.robot_a, l.robot_b, tick_, q.signal_dbm, q.margin_db, q.connected});
   }
 
-  std::vector<std::vector<std::string>> components;
-  for (const auto& c : connectivity_->components()) {
-    std::vector<std::string> ids;
-    for (size_t i : c) ids.push_back(radio_ids_[i]);
-    components.push_back(std::move(ids));
-  }
-  if (!published_components_ || *published_components_ != components) {
+  // Compared in place with what was published: the names are copied only when it changed.
+  const auto& now = connectivity_->components();
+  const auto same_names = [&](const std::vector<size_t>& c, const std::vector<std::string>& ids) {
+    return c.size() == ids.size() &&
+           std::equal(c.begin(), c.end(), ids.begin(), [&](size_t i, const std::string& id) { return radio_ids_[i] == id; });
+  };
+  if (!published_components_ || published_components_->size() != now.size() ||
+      !std::equal(now.begin(), now.end(), published_components_->begin(), same_names)) {
+    std::vector<std::vector<std::string>> components;
+    for (const auto& c : now) {
+      std::vector<std::string> ids;
+      for (size_t i : c) ids.push_back(radio_ids_[i]);
+      components.push_back(std::move(ids));
+    }
     msg::TeamConnectivity team;
     team.tick = tick_;
     for (const auto& c : components) team.components.push_back({c});

@@ -202,11 +202,16 @@ class BehaviorNode {
   };
   std::optional<Holding> holding_;                     // while waiting for a passage or giving way
   struct RobotObstacle {
+    enum class Kind { NoItinerary, StaleItinerary, Parked, Waiting };
     geometry::Vec2 position;
     double radius = 0.0;
-    std::string why;  // "r2 (no itinerary for 3.0 s)"
+    std::string why;  // "robot r2 (no itinerary for 3.0 s) at (1.00, 2.00)": written when planned around
     bool soft = false;  // a waiting robot: dropped when it leaves no route
+    Kind kind = Kind::NoItinerary;
+    double itinerary_age_s = 0.0;  // StaleItinerary
   };
+  // "robot r2 (parked) at (1.00, 2.00) in corridor": a robot obstacle as the log and statuses name it.
+  std::string describe_robot_obstacle(const std::string& id, const RobotObstacle& o) const;
   std::map<std::string, RobotObstacle> robot_obstacles_;  // planned around now
   // Waiting robots left out of the plan because they left no route, where they stood then: they
   // stay left out while they stand there (taking them in again each tick would replan each tick).

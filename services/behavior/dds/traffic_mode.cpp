@@ -100,6 +100,26 @@ std::string BehaviorNode::planning_closures() const {
   return out;
 }
 
+std::string BehaviorNode::describe_robot_obstacle(const std::string& id, const RobotObstacle& o) const {
+  using Kind = RobotObstacle::Kind;
+  std::string why;
+  switch (o.kind) {
+    case Kind::NoItinerary: why = id + " (no itinerary)"; break;
+    case Kind::StaleItinerary: {
+      char b[32];
+      std::snprintf(b, sizeof b, "%.1f s", o.itinerary_age_s);
+      why = id + " (no itinerary for " + b + ")";
+      break;
+    }
+    case Kind::Parked: why = id + " (parked)"; break;
+    case Kind::Waiting: why = id + " (waiting)"; break;
+  }
+  std::string where;
+  for (const auto& q : traffic_->passages())
+    if (q.contains(o.position)) where = " in " + q.name;
+  return "robot " + why + " at " + format_xy(o.position) + where;
+}
+
 void BehaviorNode::refresh_robot_obstacles(const geometry::Vec2& me, double now_s, const std::string& force) {
   if (!force.empty()) forced_obstacles_.insert(force);
   const double expiry = options_.traffic_rule.itinerary_expiry_s;
@@ -112,25 +132,22 @@ void BehaviorNode::refresh_robot_obstacles(const geometry::Vec2& me, double now_
     // together publish within the expiry.
     const double age = now_s - (it == itineraries_.end() ? *traffic_since_s_
                                                          : static_cast<double>(it->second.sim_time_ns) * 1e-9);
-    std::string why;
+    using Kind = RobotObstacle::Kind;
+    Kind kind;
     if (it == itineraries_.end()) {
       if (age <= expiry) continue;
-      why = id + " (no itinerary)";
+      kind = Kind::NoItinerary;
     } else if (age > expiry) {
-      char b[32];
-      std::snprintf(b, sizeof b, "%.1f s", age);
-      why = id + " (no itinerary for " + b + ")";
+      kind = Kind::StaleItinerary;
     } else if (forced_obstacles_.count(id) && it->second.path.empty() && it->second.claim.empty()) {
-      why = id + " (parked)";
+      kind = Kind::Parked;
     } else if (it->second.claim == "waiting" && it->second.path.size() <= 1) {
-      why = id + " (waiting)";  // soft: planned around only while a route is left beside it
+      kind = Kind::Waiting;  // soft: planned around only while a route is left beside it
     } else {
       continue;  // it drives or waits by the rule: not an obstacle
     }
-    std::string where;
-    for (const auto& q : traffic_->passages())
-      if (q.contains(p)) where = " in " + q.name;
-    now[id] = {p, st.radius, "robot " + why + " at " + format_xy(p) + where, why == id + " (waiting)"};
+    // Described (why) only when planned around: this runs at every tick.
+    now[id] = {p, st.radius, "", kind == Kind::Waiting, kind, age};
   }
   // Waiting robots dropped before for leaving no route stay dropped while they stand still.
   for (auto it = soft_dropped_.begin(); it != soft_dropped_.end();) {
@@ -151,6 +168,7 @@ void BehaviorNode::refresh_robot_obstacles(const geometry::Vec2& me, double now_
     changed |= old == robot_obstacles_.end() || (old->second.position - o.position).norm() > kObstacleMoved_m;
   }
   if (!changed) return;
+  for (auto& [id, o] : now) o.why = describe_robot_obstacle(id, o);
   robot_obstacles_ = std::move(now);
   spdlog::info("robot {}: planning around {}", options_.robot_id,
                robot_obstacles_.empty() ? std::string("no robots") : planning_closures());
