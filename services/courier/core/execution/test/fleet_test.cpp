@@ -331,6 +331,30 @@ TEST_F(FleetParkingTest, ARobotSentToWorkFreesItsSpotOnceItHasLeftIt) {
   EXPECT_TRUE(step().goals.empty());
 }
 
+TEST_F(FleetParkingTest, ARobotWaitingForAClosedDoorWithTheObjectAboardParksOutOfTheHallway) {
+  exec_.add_robot("rhino", 3);
+  exec_.add_robot("rhino2", 3);
+  exec_.on_pose("rhino", 4.0, 10.7);  // at the meeting table
+  exec_.on_pose("rhino2", 39.4, 7.6);  // parked at the east end
+  scheduler_.prefer = {{"job-1", "rhino"}};
+  exec_.add_job(delivery("job-1", "red", "meeting-table", "michael-desk"), now_);
+  step();
+  ASSERT_EQ(handovers_.count("rhino"), 1u);
+  complete("rhino");
+  ASSERT_NE(goals_.at("rhino").goal_id.find("michael-desk"), std::string::npos);
+  exec_.on_pose("rhino", 20.0, 8.0);
+  exec_.on_door("rhino", "A-120", 0.0, now_);  // Michael's door, seen closed on the way
+  now_ += 1;
+  step();
+  const Job* job = exec_.job("job-1");
+  EXPECT_EQ(job->state, JobState::opportunistic);
+  EXPECT_EQ(job->object_carrier, "rhino");
+  // Alone it would wait beside A-120 (its lookout); in a fleet it parks, out of the others' way.
+  const std::string goal = goals_.at("rhino").goal_id;
+  EXPECT_NE(goal.find("rhino/park/"), std::string::npos) << goal;
+  EXPECT_DOUBLE_EQ(goals_.at("rhino").x, 38.2);
+}
+
 TEST(FleetRoster, CouriersJoinWhenReadyAndLeaveWhenStoppedGoneOrSilent) {
   FleetRoster roster({"rhino"}, 3.0);
   EXPECT_TRUE(roster.on_heartbeat("rhino", BeatKind::starting, {}, 0.0).empty());
