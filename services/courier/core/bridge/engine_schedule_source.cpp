@@ -126,7 +126,7 @@ sched::SchedulingProblem EngineScheduleSource::problem_for(const PlanRequest& re
     c.id = r.id;
     c.capacity = r.capacity;
     c.location = static_cast<int>(places + i);
-    c.available_s = request.now_s;
+    c.available_s = std::max(request.now_s, r.available_s);
     problem.couriers.push_back(std::move(c));
   }
   for (const PlanJob& j : request.jobs) {

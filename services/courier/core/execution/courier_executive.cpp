@@ -444,7 +444,7 @@ PlanRequest CourierExecutive::request_for(double now_s, const std::vector<std::s
   req.now_s = now_s;
   // A robot whose pose has not arrived yet cannot be planned for (it would seem to stand at 0, 0).
   for (const auto& [id, r] : robots_)
-    if (r.pose_known) req.robots.push_back({id, r.x, r.y, r.capacity});
+    if (r.pose_known) req.robots.push_back({id, r.x, r.y, r.capacity, free_to_go_s(r, now_s)});
   for (const auto& [id, door] : doors_.doors()) {
     if (!door.open) req.closed_doors.insert(id);
     // Only a sighting overrides the door's learned habit; an expired closed sighting does not.

@@ -303,6 +303,9 @@ class CourierExecutive {
   // The robot other than `robot` that holds `room`: bound for a place in it, handing over in it,
   // or inside its area and not parked. nullptr when the room is free.
   const Robot* room_holder(const Robot& robot, const std::string& room) const;
+  // When `robot` may set out, as the scheduler should see it: now, or while it waits for a room,
+  // when the robot holding it is expected to have left (the end of its planned stops there).
+  double free_to_go_s(const Robot& robot, double now_s) const;
   // Sends `robot` to the lookout beside `door` (when the floor has one and it is not there),
   // saying `why` in the heading event. False when the door has no lookout (it waits where it is).
   bool go_to_lookout(Robot& robot, const std::string& door, const std::string& why, double now_s);

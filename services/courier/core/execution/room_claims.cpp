@@ -14,6 +14,7 @@
 // the order they began to wait (ties by id), so none waits for ever behind later ones.
 #include "services/courier/core/execution/courier_executive.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace autonomy::courier {
@@ -104,6 +105,24 @@ bool CourierExecutive::wait_for_room(Robot& robot, const PlanStop& stop, const s
     robot.goal_place.clear();
   }
   return true;
+}
+
+double CourierExecutive::free_to_go_s(const Robot& robot, double now_s) const {
+  if (robot.waiting_for_room.empty()) return now_s;
+  const Robot* holder = room_holder(robot, robot.waiting_for_room);
+  if (!holder) return now_s;
+  // Its next stops while they are in the room (one visit), as the last schedule timed them; none
+  // when it goes elsewhere next (it is leaving).
+  double leaves = now_s;
+  for (const PlanStop& stop : holder->route) {
+    if (!still_needed(*holder, stop)) continue;
+    const FloorPlace* p = floor_.place(stop.place);
+    if (!p || p->room != robot.waiting_for_room) break;
+    leaves = std::max(leaves, stop.finish_s);
+  }
+  // Leaving the room and clearing its doorway takes a little while in any case.
+  constexpr double kClearRoomS = 10.0;
+  return std::max(leaves, now_s + kClearRoomS);
 }
 
 bool CourierExecutive::go_to_lookout(Robot& robot, const std::string& door, const std::string& why, double now_s) {

@@ -15,6 +15,10 @@ struct PlanRobot {
   std::string id;
   double x = 0.0, y = 0.0;  // where it is now
   int capacity = 1;
+  // When it can set out (at once when not after now): later while it waits for a room another
+  // robot of the fleet holds, when that robot is expected to have left (room_claims.cpp). So the
+  // schedule counts the wait, and may give the job to a robot that need not wait.
+  double available_s = 0.0;
 };
 
 struct PlanJob {

@@ -119,6 +119,30 @@ TEST(EngineScheduleSource, SeveralRobotsGetJobsWithTheAllocationRuleInWords) {
   EXPECT_TRUE(source.plan(request).allocation.empty());
 }
 
+TEST(EngineScheduleSource, ARobotFreeOnlyLaterSetsOutThenOrLeavesTheJobToAnother) {
+  SmallOffice o;
+  EngineScheduleSource source(o.knowledge, o.floor, o.map, settings());
+  PlanRequest request;
+  request.now_s = 11 * 3600.0;
+  // "west" waits 120 s for a room (room_claims.cpp); "east" is free now but 10 m farther away.
+  request.robots = {{"west", 6.0, 8.0, 2, request.now_s + 120}, {"east", 16.0, 8.0, 2, 0.0}};
+  request.jobs = {{"to-hall", "letter/red", "r1-desk", "hall", std::nullopt, ""}};
+  Plan plan = source.plan(request);
+  // Waiting, the nearer robot would finish later than the farther one that can go now.
+  ASSERT_EQ(plan.routes.count("east"), 1u);
+  EXPECT_EQ(plan.routes.count("west") ? plan.routes.at("west").size() : 0u, 0u);
+
+  // Alone, it sets out when it is free: its first stop is reached no sooner than that.
+  request.robots.resize(1);
+  plan = source.plan(request);
+  ASSERT_EQ(plan.routes.at("west").size(), 2u);
+  EXPECT_GE(plan.routes.at("west")[0].arrival_s, request.now_s + 120);
+  // Free "now" (0, or any time not after now) means at once.
+  request.robots[0].available_s = 0.0;
+  plan = source.plan(request);
+  EXPECT_LT(plan.routes.at("west")[0].arrival_s, request.now_s + 120);
+}
+
 TEST(EngineScheduleSource, ExactOnlyWhileTheAssignmentsCanBeEnumerated) {
   SmallOffice o;
   EngineScheduleSource source(o.knowledge, o.floor, o.map, settings());

@@ -88,6 +88,30 @@ TEST_F(RoomClaimsTest, TwoRobotsForOneDeskGoInOneAfterTheOther) {
   EXPECT_EQ(exec_.job("job-2")->state, JobState::underway);
 }
 
+TEST_F(RoomClaimsTest, TheScheduleSeesAWaitingRobotFreeWhenTheHolderIsPlannedToLeave) {
+  exec_.add_robot("rhino", 3);
+  exec_.add_robot("rhino2", 3);
+  exec_.on_pose("rhino", 6.0, 8.0);
+  exec_.on_pose("rhino2", 12.0, 8.0);
+  scheduler_.prefer = {{"job-1", "rhino"}, {"job-2", "rhino2"}, {"job-3", "rhino2"}};
+  const double t0 = now_;
+  exec_.add_job(delivery("job-1", "red", "librarian-desk", "a114-desk"), now_);
+  exec_.add_job(delivery("job-2", "blue", "librarian-desk", "meeting-table"), now_);
+  step();
+  ASSERT_EQ(waits().size(), 1u);
+  // A new job makes a new schedule: rhino2 is seen free when rhino's stop at the librarian's
+  // desk ends as the last schedule timed it (60 s per stop here); rhino at once.
+  now_ += 5;
+  exec_.add_job(delivery("job-3", "green", "hallway-west", "a114-desk"), now_);
+  step();
+  const PlanRequest& request = scheduler_.requests.back();
+  ASSERT_EQ(request.robots.size(), 2u);
+  EXPECT_EQ(request.robots[0].id, "rhino");
+  EXPECT_DOUBLE_EQ(request.robots[0].available_s, now_);
+  EXPECT_EQ(request.robots[1].id, "rhino2");
+  EXPECT_DOUBLE_EQ(request.robots[1].available_s, t0 + 60);
+}
+
 TEST_F(RoomClaimsTest, RobotsWaitingForOneRoomGoInTheOrderTheyBeganToWait) {
   // rhino3 is in the meeting room; rhino2 begins to wait for it, then rhino (first by id).
   exec_.add_robot("rhino", 3);
