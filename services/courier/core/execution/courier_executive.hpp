@@ -286,7 +286,8 @@ class CourierExecutive {
   void watch_door(Robot& robot, const std::string& door, double now_s);
   // Nothing to do: to a parking spot or home (several robots), or stop (cancel a goal no longer
   // needed). fleet.cpp.
-  void park(Robot& robot, double now_s);
+  // `why` ends its heading event ("rhino parks at ..., out of the way: <why>").
+  void park(Robot& robot, double now_s, const std::string& why = "nothing for it now");
   struct ParkingPlace {
     double x = 0.0, y = 0.0;
     std::string spot;  // "" for the robot's home
@@ -297,7 +298,8 @@ class CourierExecutive {
   // Fleet rule: one robot in a room at a time (rooms with doors: a desk, a doorway and the space
   // to turn around are all for one robot). True when `robot` must wait before driving to `stop`:
   // another robot is in that room or bound for it, or waited for it first. The robot then waits
-  // beside the room's door (the first in line) or where it is, and the job says for whom.
+  // beside the room's door (the first in line) or parked (else where it is), and the job says
+  // for whom.
   // `waited`: the room it waited for until this step. room_claims.cpp.
   bool wait_for_room(Robot& robot, const PlanStop& stop, const std::string& waited, double now_s);
   // The robot other than `robot` that holds `room`: bound for a place in it, handing over in it,

@@ -86,7 +86,10 @@ std::optional<CourierExecutive::ParkingPlace> CourierExecutive::parking_place(Ro
     if (spot.name == robot.parking) return ParkingPlace{spot.x, spot.y, spot.name};
   const Floor::ParkingSpot* best = nullptr;
   double best_m = std::numeric_limits<double>::infinity();
+  // Not in the room it waits for: parked there, it would be in the way of the robot inside.
+  const auto waited = floor_.room_areas.find(robot.waiting_for_room);
   for (const auto& spot : floor_.parking) {
+    if (waited != floor_.room_areas.end() && waited->second.contains(spot.x, spot.y)) continue;
     bool taken = false;
     for (const auto& [id, other] : robots_) {
       if (id == robot.id) continue;
@@ -107,7 +110,7 @@ std::optional<CourierExecutive::ParkingPlace> CourierExecutive::parking_place(Ro
   return std::nullopt;
 }
 
-void CourierExecutive::park(Robot& robot, double now_s) {
+void CourierExecutive::park(Robot& robot, double now_s, const std::string& why) {
   if (robots_.size() > 1 && robot.goal_place == kHomePlace) return;  // on its way
   const std::optional<ParkingPlace> parking = robots_.size() > 1 && robot.pose_known ? parking_place(robot) : std::nullopt;
   if (parking && std::hypot(robot.x - parking->x, robot.y - parking->y) > kParkedM) {
@@ -122,7 +125,7 @@ void CourierExecutive::park(Robot& robot, double now_s) {
     std::snprintf(where, sizeof where, "(%.1f, %.1f)", parking->x, parking->y);
     event(ExecutionEvent::Kind::heading,
           robot.id + (spot ? " parks at " + parking->spot + " " + where : " heads home to " + std::string(where)) +
-              ", out of the way: nothing for it now (" + clock_text(now_s) + ")");
+              ", out of the way: " + why + " (" + clock_text(now_s) + ")");
     return;
   }
   if (robot.goal_id.empty() || robot.goal_place == kHomePlace) return;

@@ -8,7 +8,7 @@
 //
 // Why this cannot deadlock: a robot holds at most one room (the one it is in or bound for), and
 // a robot that waits holds none: it is sent out to a lookout in the hallway (or, not first in
-// line, stays where it is, which is outside the room it waits for). A holder is never waiting, so
+// line, to a parking spot outside the room it waits for, or it stays where it is, outside). A holder is never waiting, so
 // it only drives to its stop, hands over (bounded by the handover timeouts) and leaves, or is
 // given up (blocked goals, refused handovers): every wait ends. Robots waiting for one room go in
 // the order they began to wait (ties by id), so none waits for ever behind later ones.
@@ -94,8 +94,14 @@ bool CourierExecutive::wait_for_room(Robot& robot, const PlanStop& stop, const s
     robot.waiting_behind = blocker;
     event(ExecutionEvent::Kind::waiting, text);
   }
-  // The first in line waits beside the door; the others where they are (the lookout is taken).
+  // The first in line waits beside the door; the others park, out of the hallway (the lookout
+  // is taken, and a robot standing in the hallway is in everybody's way), or, with no spot to
+  // park at, stop where they are.
   if (!ahead && go_to_lookout(robot, *door, {}, now_s)) return true;
+  if (!floor_.parking.empty()) {
+    park(robot, now_s, "waiting for " + room);
+    return true;
+  }
   if (!robot.goal_id.empty() && !is_lookout(robot.goal_place)) {
     const std::string reason = robot.id + " waits for " + room;
     orders_.cancels.push_back({robot.id, robot.goal_id, reason});

@@ -17,13 +17,13 @@ using test_support::delivery;
 using test_support::FleetTest;
 
 // The paper's floor with the rooms' areas (the library A-110 south of the hallway, the meeting
-// room A-111 north of it) and a parking spot in a corner of the meeting room.
+// room A-111 north of it), a parking spot in a corner of the meeting room and one in the hallway.
 Floor floor_with_rooms() {
   Floor f = test_support::paper_floor();
   f.room_areas["A-110"] = {0.0, 0.0, 10.0, 6.9};
   f.room_areas["A-111"] = {0.0, 9.1, 8.0, 16.0};
   f.room_areas["A-114"] = {16.0, 0.0, 22.0, 6.9};
-  f.parking = {{"a111-corner", 7.3, 15.3}};
+  f.parking = {{"a111-corner", 7.3, 15.3}, {"hall-mid", 9.0, 8.4}};
   return f;
 }
 
@@ -140,11 +140,16 @@ TEST_F(RoomClaimsTest, RobotsWaitingForOneRoomGoInTheOrderTheyBeganToWait) {
   step();
   reach("rhino", 1.5, 8.0);
   complete("rhino");
-  // rhino, with a smaller id, waits behind rhino2 and not at the lookout rhino2 holds.
+  // rhino, with a smaller id, waits behind rhino2: parked out of the hallway (not at the lookout
+  // rhino2 holds, nor at the spot in the meeting room it waits for).
   ASSERT_EQ(waits().size(), 2u);
   EXPECT_EQ(waits()[1].rfind("rhino waits for rhino3 to clear A-111", 0), 0u) << waits()[1];
   EXPECT_FALSE(bound_for("rhino", "meeting-table"));
-  EXPECT_EQ(goals_.at("rhino").goal_id.find("lookout"), std::string::npos);
+  EXPECT_NE(goals_.at("rhino").goal_id.find("rhino/park/"), std::string::npos) << goals_.at("rhino").goal_id;
+  EXPECT_DOUBLE_EQ(goals_.at("rhino").x, 9.0);
+  const auto heading = texts(ExecutionEvent::Kind::heading);
+  EXPECT_EQ(heading.back().rfind("rhino parks at hall-mid (9.0, 8.4), out of the way: waiting for A-111", 0), 0u)
+      << heading.back();
 
   // rhino3 finishes its load and leaves for A-114: rhino2 goes in, rhino waits for rhino2 now.
   complete("rhino3");
