@@ -15,11 +15,12 @@
 //
 // Usage: lockstep_bench [--domain 161] [--ticks 20000] [--warmup-ticks 300] [--robots 1,3]
 //                       [--dds-extra file.xml] [--quiet-ticks] [--quick] [--old-bin DIR]
-//                       [--run-domains 8]
+//                       [--run-domains K]
 //   --old-bin DIR runs every case with the simulator and behavior executables in DIR first (a copy
 //   of an earlier build), so a change is measured against its baseline in the same run.
 //   --run-domains K: the lockstep runs take the domains after --domain in turn, K of them (one
-//   after the other, each run's processes gone before the next starts).
+//   after the other, each run's processes gone before the next starts); without it, those up to
+//   169 (bench/run.sh's range), or only the next one above 168.
 //   --dds-extra appends a Cyclone config snippet (e.g. bench/cyclone-lockstep.xml) to
 //   CYCLONEDDS_URI for the lockstep processes, and runs the same cases without it first, for
 //   comparison.
@@ -36,6 +37,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -61,7 +63,7 @@ struct Options {
   bool quiet_ticks = false;
   int rtt_count = 3000;
   std::string old_bin;  // a folder with an earlier build's simulator and behavior, if set
-  int run_domains = 8;
+  int run_domains = 0;  // 0: the domains after --domain up to 169
 };
 
 struct RobotSpec {
@@ -313,9 +315,9 @@ Options parse(int argc, char** argv) {
   app.add_option("--old-bin", o.old_bin,
                  "Also run every case with the simulator and behavior in this folder (an earlier build), first")
       ->check(CLI::ExistingDirectory);
-  app.add_option("--run-domains", o.run_domains, "How many domains after --domain the lockstep runs take in turn")
-      ->check(CLI::Range(1, 8))
-      ->capture_default_str();
+  app.add_option("--run-domains", o.run_domains,
+                 "How many domains after --domain the lockstep runs take in turn (default: those up to 169)")
+      ->check(CLI::Range(1, 8));
   app.add_flag("--quick", quick, "Short runs, for a smoke test");
   try {
     app.parse(argc, argv);
@@ -407,7 +409,8 @@ int main(int argc, char** argv) {
         const RunResult r = run_lockstep(o, robots, domain, label, c.bin, c.secure_dir);
         progress("[lockstep] %s: %.0f ticks/s, mean step %.1f us", label.c_str(), r.ticks_per_s, r.mean_step_us);
         results.emplace_back(c.name, r);
-        domain = domain + 1 > o.domain + o.run_domains ? o.domain + 1 : domain + 1;
+        const int last = o.run_domains > 0 ? o.domain + o.run_domains : std::max(169, o.domain + 1);
+        domain = domain + 1 > last ? o.domain + 1 : domain + 1;
       }
     }
     setenv("CYCLONEDDS_URI", base_uri.c_str(), 1);
