@@ -290,10 +290,12 @@ class CourierSearch {
   //   completion >= sum (c_k - now).
   //
   // The work part (t + the sum of the k smallest w_j, each completion at least `gap` after the
-  // one before) is computed first: alone it cuts nearly every label the whole bound cuts on loose
-  // offices (no label of 30 loose 12-job offices was cut by the e_j alone), so when `cut_at` is
-  // given and that part already reaches it, the e_j and the deadline terms are skipped (returns
-  // false: no completion beats `cut_at`). Also false when some job left cannot be finished.
+  // one before) is computed first: on loose offices it decides nearly every cut (bench 1b, 12
+  // jobs, seed 1: the sum of the e_j alone would cut 20 of the about 44,000 labels the bound
+  // cuts), so when `cut_at` is given and that part already reaches it, the e_j and the deadline
+  // terms are skipped (returns false: no completion beats `cut_at`). It is a componentwise lower
+  // bound of the whole, so the same labels are cut. Also false when some job left cannot be
+  // finished.
   bool lower_bound(const Label& s, Objective& lb, const Objective* cut_at = nullptr) {
     lb = s.cost;
     int r = 0;
