@@ -211,7 +211,10 @@ SimulatorNode::SimulatorNode(service::Service& service, Scenario scenario, Simul
   }
 
   auto& loop = service.loop();
-  loop.on_samples<msg::VelocityCommand>(cmd_reader_, [this](auto s) { on_commands(std::move(s)); });
+  // Velocity commands wake nobody: a participant writes its commands before its tick ack, on the
+  // same socket, so they are taken when the ack is (on_acks), and before every step (take_commands
+  // in advance_while_complete and advance) for commands from outside lockstep. Waking the loop
+  // for each command as well cost a wake-up per participant and tick.
   loop.on_samples<msg::TickAck>(ack_reader_, [this](auto s) { on_acks(std::move(s)); });
   loop.on_samples<msg::LockstepRegistration>(registration_reader_, [this](auto s) { on_registrations(std::move(s)); });
   loop.on_samples<msg::SpawnRequest>(spawn_request_reader_, [this](auto s) { on_spawn_requests(std::move(s)); });
@@ -257,6 +260,11 @@ SimulatorNode::~SimulatorNode() {
   }
 }
 
+void SimulatorNode::take_commands() {
+  auto samples = cmd_reader_.take();
+  if (!samples.empty()) on_commands(std::move(samples));
+}
+
 void SimulatorNode::on_commands(std::vector<dds::Sample<msg::VelocityCommand>> samples) {
   for (auto& s : samples) {
     if (!s.valid) continue;
@@ -279,11 +287,11 @@ void SimulatorNode::on_commands(std::vector<dds::Sample<msg::VelocityCommand>> s
       wake_ = true;
     }
   }
-  advance_while_complete();
 }
 
 void SimulatorNode::on_acks(std::vector<dds::Sample<msg::TickAck>> samples) {
   if (!lockstep()) return;
+  take_commands();  // written before these acks: counted before the acks complete a tick
   for (const auto& s : samples) {
     if (!s.valid) continue;
     if (spacecraft_) spacecraft_->on_ack(s.value.participant);  // the commander's sign of life
@@ -406,6 +414,7 @@ void SimulatorNode::on_timer() {
 
 void SimulatorNode::advance_while_complete() {
   if (!lockstep() || service_.loop().draining()) return;  // a handler run by the drain below: looked at after it
+  take_commands();
   // Quiet ticks are stepped in batches: between two, the loop reads what arrived (a wake-up).
   constexpr int kQuietBatch = 50;
   int quiet_in_a_row = 0;
@@ -430,6 +439,7 @@ void SimulatorNode::advance_while_complete() {
 
 void SimulatorNode::advance() {
   if (finished_) return;
+  take_commands();  // those from outside lockstep (tools, paced mode) are applied at this step
   const auto started = std::chrono::steady_clock::now();
 
   std::vector<msg::VelocityCommand> commands = std::move(unsynchronised_commands_);

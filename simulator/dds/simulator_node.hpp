@@ -79,6 +79,9 @@ class SimulatorNode {
   ~SimulatorNode();
 
  private:
+  // Commands are taken when needed, not on arrival (see the constructor): take_commands() hands
+  // what the reader holds to on_commands().
+  void take_commands();
   void on_commands(std::vector<dds::Sample<msg::VelocityCommand>> samples);
   void on_acks(std::vector<dds::Sample<msg::TickAck>> samples);
   void on_registrations(std::vector<dds::Sample<msg::LockstepRegistration>> samples);
