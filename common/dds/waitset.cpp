@@ -2,6 +2,8 @@
 
 #include "common/dds/error.hpp"
 
+#include <algorithm>
+
 namespace autonomy::dds {
 
 GuardCondition::GuardCondition(const Participant& participant)
@@ -22,19 +24,32 @@ WaitSet::WaitSet(const Participant& participant)
 
 void WaitSet::attach(dds_entity_t condition, dds_attach_t tag) {
   check(dds_waitset_attach(entity_.handle(), condition, tag), "dds_waitset_attach");
-  ++attached_;
+  attached_.emplace_back(condition, tag);
 }
 
 void WaitSet::detach(dds_entity_t condition) {
   check(dds_waitset_detach(entity_.handle(), condition), "dds_waitset_detach");
-  --attached_;
+  attached_.erase(std::remove_if(attached_.begin(), attached_.end(),
+                                 [condition](const auto& a) { return a.first == condition; }),
+                  attached_.end());
 }
 
 std::vector<dds_attach_t> WaitSet::wait(std::chrono::nanoseconds timeout) const {
-  std::vector<dds_attach_t> triggered(attached_ == 0 ? 1 : attached_);
+  if (timeout <= std::chrono::nanoseconds(0)) return triggered_now();
+  std::vector<dds_attach_t> triggered(attached_.empty() ? 1 : attached_.size());
   const dds_return_t n = check(
       dds_waitset_wait(entity_.handle(), triggered.data(), triggered.size(), timeout.count()), "dds_waitset_wait");
   triggered.resize(static_cast<size_t>(n) < triggered.size() ? static_cast<size_t>(n) : triggered.size());
+  return triggered;
+}
+
+std::vector<dds_attach_t> WaitSet::triggered_now() const {
+  std::vector<dds_attach_t> triggered;
+  for (const auto& [condition, tag] : attached_) {
+    // An error means the condition's entity was deleted: Cyclone then detached it from the
+    // waitset, which no longer reports it either.
+    if (dds_triggered(condition) > 0) triggered.push_back(tag);
+  }
   return triggered;
 }
 

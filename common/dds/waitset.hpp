@@ -5,6 +5,7 @@
 #include "common/dds/participant.hpp"
 
 #include <chrono>
+#include <utility>
 #include <vector>
 
 namespace autonomy::dds {
@@ -30,12 +31,20 @@ class WaitSet {
   void attach(dds_entity_t condition, dds_attach_t tag);
   void detach(dds_entity_t condition);
 
-  // Returns the tags of triggered conditions; empty when the timeout passed first.
+  // Returns the tags of triggered conditions; empty when the timeout passed first. A zero (or
+  // negative) timeout asks which are triggered now, without waiting: see triggered_now().
   std::vector<dds_attach_t> wait(std::chrono::nanoseconds timeout) const;
 
  private:
+  // The attached conditions that dds_triggered() reports triggered, in attach order. For a zero
+  // timeout dds_waitset_wait would ask with a timed condition wait whose deadline has passed: a
+  // futex call that sleeps until the next timer interrupt, a context switch each time, and a
+  // lockstep node asks several times a tick (EventLoop::drain). The waitset triggers on exactly
+  // what dds_triggered() reports (dds.h, dds_waitset_attach).
+  std::vector<dds_attach_t> triggered_now() const;
+
   Entity entity_;
-  size_t attached_ = 0;
+  std::vector<std::pair<dds_entity_t, dds_attach_t>> attached_;  // condition, tag
 };
 
 }  // namespace autonomy::dds

@@ -41,10 +41,12 @@ void EventLoop::run_due_timers() {
   }
 }
 
-void EventLoop::run_once(std::chrono::nanoseconds timeout) {
+bool EventLoop::run_once(std::chrono::nanoseconds timeout) {
   const auto wait = std::min(timeout, time_to_next_timer());
+  bool ran = false;
   for (dds_attach_t tag : waitset_.wait(wait)) {
     if (tag == kStopTag) continue;
+    ran = true;
     struct Running {
       dds_attach_t& running;
       ~Running() { running = -1; }
@@ -52,6 +54,7 @@ void EventLoop::run_once(std::chrono::nanoseconds timeout) {
     handlers_[static_cast<size_t>(tag)]();
   }
   run_due_timers();
+  return ran;
 }
 
 void EventLoop::drain() {

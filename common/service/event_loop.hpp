@@ -49,8 +49,10 @@ class EventLoop {
 
   // Runs handlers until stop().
   void run();
-  // One round: waits up to timeout for something to do, runs what is due. For tests and benches.
-  void run_once(std::chrono::nanoseconds timeout);
+  // One round: waits up to timeout for something to do, runs what is due. For tests, benches and
+  // hosts that run several loops on one thread (tools/experiments/runner/trial_host.cpp). Returns
+  // whether a reader's or condition's handler ran (timers do not count).
+  bool run_once(std::chrono::nanoseconds timeout);
 
  private:
   struct Timer {

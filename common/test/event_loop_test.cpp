@@ -197,6 +197,28 @@ TEST_F(EventLoopTest, DrainTakesWhatArrivedBeforeTheHandlerActs) {
   EXPECT_GE(guard_runs, 1);
 }
 
+// A host that runs several loops on one thread (the experiment's trial host) learns from run_once
+// whether a round did anything: a reader's or condition's handler, not a timer.
+TEST_F(EventLoopTest, RunOnceSaysWhetherAHandlerRan) {
+  dds::Participant p(105);
+  EventLoop loop(p);
+  dds::GuardCondition guard(p);
+  int guard_runs = 0;
+  int timer_runs = 0;
+  loop.on_condition(guard.handle(), [&] {
+    ++guard_runs;
+    guard.reset();
+  });
+  loop.every(1ms, [&] { ++timer_runs; });
+  EXPECT_FALSE(loop.run_once(0ns));
+  guard.trigger();
+  EXPECT_TRUE(loop.run_once(0ns));
+  EXPECT_EQ(guard_runs, 1);
+  EXPECT_FALSE(loop.run_once(0ns)) << "the handler reset its condition";
+  while (timer_runs == 0) EXPECT_FALSE(loop.run_once(10ms)) << "only the timer was due";
+  EXPECT_EQ(guard_runs, 1);
+}
+
 TEST_F(EventLoopTest, StopFromAnotherThreadEndsRun) {
   dds::Participant p(105);
   EventLoop loop(p);

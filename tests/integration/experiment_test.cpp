@@ -6,6 +6,8 @@
 //   ------  -----------------------------------------------
 //   90-91   ExperimentTest.SmallRunWritesCsvReportAndPictures (the runner's two jobs)
 //   187-188 ExperimentTest.ALockstepTrialRepeatsExactly (two runners side by side)
+// SmallRun runs each trial in one process (the runner's default); ALockstepTrialRepeatsExactly
+// runs the same trials that way and with a process per node.
 #include "tests/support/process_test.hpp"
 #include "tools/experiments/stats/report.hpp"
 
@@ -42,6 +44,10 @@ TEST_F(ExperimentTest, SmallRunWritesCsvReportAndPictures) {
   // Progress: one line per trial, counted up to the total.
   const std::string progress = read_file(runner.log_file());
   EXPECT_NE(progress.find("[ 12/12]"), std::string::npos) << progress;
+  // Each trial's four nodes ran in one process, which logged them to the trial's own file.
+  EXPECT_NE(progress.find("one process per trial"), std::string::npos) << progress;
+  EXPECT_NE(read_file(out + "/logs/trial-reactive-0.log").find("trial reactive-0: 4 nodes in one process"),
+            std::string::npos);
 
   // CSV: the header, then 2 rows per configuration in the paper's order, values in range.
   std::stringstream csv(read_file(out + "/trials.csv"));
@@ -110,20 +116,22 @@ TEST_F(ExperimentTest, SmallRunWritesCsvReportAndPictures) {
 // scheduled differently, on a loaded machine), give byte-identical metrics and pictures. With team messages (comm_parallel) and the reactive
 // missions, every input of a tick (scans, team messages, mission status) must count at that tick
 // whatever order the processes read them in (EventLoop::drain); before it, repeated trials
-// differed by tenths of a second of mission time.
+// differed by tenths of a second of mission time. One run puts each trial's simulator and
+// behaviors in one process (experiment_trial_host: one thread, no network), the other gives each
+// node a process of its own, as deployed: the experiment's results do not depend on which.
 TEST_F(ExperimentTest, ALockstepTrialRepeatsExactly) {
   join(187);
   join(188);
   const std::string first = dir().file("first"), second = dir().file("second");
   const std::vector<std::string> common = {"--trials", "2", "--seed", "11", "--jobs", "1", "--only", "comm_parallel",
                                            "reactive"};
-  auto args = [&](const std::string& domain, const std::string& out) {
+  auto args = [&](const std::string& domain, const std::string& out, const std::string& processes) {
     std::vector<std::string> a = common;
-    a.insert(a.end(), {"--domain", domain, "--out", out});
+    a.insert(a.end(), {"--domain", domain, "--out", out, "--processes", processes});
     return a;
   };
-  auto& a = start("experiment_runner_a", AUTONOMY_EXPERIMENT_RUNNER_BIN, args("187", first), false);
-  auto& b = start("experiment_runner_b", AUTONOMY_EXPERIMENT_RUNNER_BIN, args("188", second), false);
+  auto& a = start("experiment_runner_a", AUTONOMY_EXPERIMENT_RUNNER_BIN, args("187", first, "one"), false);
+  auto& b = start("experiment_runner_b", AUTONOMY_EXPERIMENT_RUNNER_BIN, args("188", second, "separate"), false);
   for (auto* runner : {&a, &b}) {
     const auto ended = runner->wait_for_exit(std::chrono::minutes(4));
     ASSERT_TRUE(ended.has_value()) << "a runner did not finish in 4 minutes";

@@ -1,5 +1,5 @@
 // experiment_trial_host: one trial of the robot-teams experiment in one process: the simulator and
-// its behavior controllers, each its own service (DDS participant, event-loop thread, heartbeat),
+// its behavior controllers, each its own service (DDS participant, event loop, heartbeat),
 // built from the same flags and node code as the simulator and behavior programs, on one domain.
 // Cyclone DDS hands samples between participants of one process without the network: a trial's
 // lockstep round trips were two thirds kernel time (UDP on loopback, the receive threads'
@@ -20,107 +20,87 @@
 
 #include <pthread.h>
 
-#include <condition_variable>
+#include <algorithm>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <functional>
 #include <list>
 #include <memory>
-#include <mutex>
 #include <string>
-#include <thread>
 #include <vector>
 
 using namespace autonomy;
 
 namespace {
 
-// One node of the trial and the thread that runs its service.
+// One node of the trial: its flags, then its service and node once built.
 struct Member {
   std::string name;  // "simulator/main", "behavior/r1"
   bool is_simulator = false;
   service::ServiceOptions options;
   std::function<std::shared_ptr<void>(service::Service&)> make_node;
-  // Guarded by Host::mutex.
-  service::Service* running = nullptr;
-  bool ended = false;
-  int code = 1;
+  std::unique_ptr<service::Service> service;
+  std::shared_ptr<void> node;
 };
 
-class Host {
- public:
-  // Runs every member on a thread of its own until the simulator ends (or a controller ends
-  // first); returns the exit code.
-  int run(std::list<Member>& members) {
-    std::vector<std::thread> threads;
-    for (auto& m : members) threads.emplace_back([this, &m] { run_member(m); });
-    int code = 0;
-    {
-      std::unique_lock lock(mutex_);
-      for (;;) {
-        const Member* first_ended = nullptr;
-        for (const auto& m : members)
-          if (m.ended && !first_ended) first_ended = &m;
-        if (first_ended) {
-          if (first_ended->is_simulator) {
-            code = first_ended->code;
-          } else {
-            spdlog::error("{} ended before the simulator (exit code {})", first_ended->name, first_ended->code);
-            code = 1;
-          }
-          break;
-        }
-        changed_.wait(lock);
-      }
-      stopping_ = true;
-      for (auto& m : members)
-        if (m.running) m.running->stop();
-    }
-    for (auto& t : threads) t.join();
-    for (const auto& m : members)
-      if (!m.is_simulator && m.code != 0 && code == 0) {
-        spdlog::error("{} failed (exit code {})", m.name, m.code);
-        code = 1;
-      }
-    return code;
-  }
-
- private:
-  void run_member(Member& m) {
-    int code = 1;
+// Builds every member's service and node (the simulator first, as the runner starts its process
+// first), then runs their event loops in turn on this one thread until the simulator's ends. One
+// thread: a sample written in a handler lands in the reader's cache at once (Cyclone delivers
+// within a process synchronously) and is handled in the same round, with no thread to wake; with
+// a thread per node, the wake-ups (futex, scheduler) cost more than the nodes' work. The run is
+// the same either way: a lockstep node acts on a tick only after draining everything sent for it.
+// Returns the exit code: the simulator's, 1 when a node could not start, failed or a controller
+// ended first.
+int run_members(std::list<Member>& members) {
+  for (auto& m : members) {
     try {
-      service::Service service(m.options);
-      // Detaches before the service is destroyed, so that run() never stops a service that is gone.
-      struct Attachment {
-        Host& host;
-        Member& member;
-        Attachment(Host& h, Member& mem, service::Service& s) : host(h), member(mem) {
-          std::lock_guard lock(host.mutex_);
-          member.running = &s;
-          if (host.stopping_) s.stop();
-        }
-        ~Attachment() {
-          std::lock_guard lock(host.mutex_);
-          member.running = nullptr;
-        }
-      } attachment(*this, m, service);
-      std::shared_ptr<void> node = m.make_node(service);
-      service.run();
-      node.reset();
-      code = service.exit_code();
+      m.service = std::make_unique<service::Service>(m.options);
+      m.node = m.make_node(*m.service);
     } catch (const std::exception& e) {
       spdlog::critical("{}: cannot run: {}", m.name, e.what());
+      return 1;
     }
-    std::lock_guard lock(mutex_);
-    m.ended = true;
-    m.code = code;
-    changed_.notify_all();
   }
-
-  std::mutex mutex_;
-  std::condition_variable changed_;
-  bool stopping_ = false;
-};
+  Member& simulator = members.front();
+  int code = 0;
+  try {
+    for (;;) {
+      bool busy = false;
+      for (auto& m : members)
+        if (!m.service->loop().stopped()) busy = m.service->loop().run_once(std::chrono::nanoseconds(0)) || busy;
+      if (simulator.service->loop().stopped()) {
+        code = simulator.service->exit_code();
+        break;
+      }
+      const auto ended = std::find_if(members.begin(), members.end(),
+                                      [](const Member& m) { return m.service->loop().stopped(); });
+      if (ended != members.end()) {
+        spdlog::error("{} ended before the simulator (exit code {})", ended->name, ended->service->exit_code());
+        code = 1;
+        break;
+      }
+      // Nothing was ready in any loop: only a timer or something from outside the process (a
+      // signal's stop) can start the next round. The simulator's waitset wakes on the latter.
+      if (!busy) simulator.service->loop().run_once(std::chrono::milliseconds(1));
+    }
+  } catch (const std::exception& e) {
+    spdlog::critical("a handler failed: {}", e.what());
+    code = 1;
+  }
+  // The simulator's node and participant go first, as its process ended before the controllers
+  // were stopped.
+  for (auto& m : members) {
+    m.service->heartbeat().set_state(msg::ServiceState::Stopping);
+    m.node.reset();
+    if (!m.is_simulator && m.service->exit_code() != 0 && code == 0) {
+      spdlog::error("{} failed (exit code {})", m.name, m.service->exit_code());
+      code = 1;
+    }
+    m.service.reset();
+  }
+  return code;
+}
 
 // argv split at the "+simulator" / "+behavior" markers; the part before the first is the host's.
 struct Groups {
@@ -153,7 +133,7 @@ void parse(CLI::App& app, const std::string& program, const std::vector<std::str
 
 int main(int argc, char** argv) {
   // Before any thread starts: SIGINT/SIGTERM reach only the services' signal threads (each stops
-  // its own service, and the host then stops the rest).
+  // its own service, and the host then ends the trial).
   sigset_t shutdown;
   sigemptyset(&shutdown);
   sigaddset(&shutdown, SIGINT);
@@ -211,12 +191,14 @@ int main(int argc, char** argv) {
                  simulator_clis.size(), behavior_clis.size());
     return 2;
   }
+  // The simulator first (see run_members).
+  members.splice(members.begin(), members,
+                 std::find_if(members.begin(), members.end(), [](const Member& m) { return m.is_simulator; }));
   try {
     if (!members.empty()) host_options.log_level = members.front().options.log_level;
     const std::string log_file = service::setup_logging(host_options);
     spdlog::info("trial {}: {} nodes in one process, log file {}", host_options.instance, members.size(), log_file);
-    Host host;
-    const int code = host.run(members);
+    const int code = run_members(members);
     spdlog::info("stopped (exit code {})", code);
     return code;
   } catch (const std::exception& e) {
