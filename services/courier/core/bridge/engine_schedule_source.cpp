@@ -88,6 +88,12 @@ sched::SchedulingProblem EngineScheduleSource::problem_for(const PlanRequest& re
     problem.locations.push_back(std::move(loc));
   }
   for (const auto& r : request.robots) problem.locations.push_back({"@" + r.id, "", r.x, r.y, 0.0});
+  // Objects kept aboard (PlanJob::keep_aboard) are "delivered" to a place no route leads to: the
+  // engines leave the delivery out as unreachable and count the object aboard.
+  const bool keeps = std::any_of(request.jobs.begin(), request.jobs.end(),
+                                 [](const PlanJob& j) { return j.keep_aboard && !j.aboard.empty(); });
+  const int kept_aboard = keeps ? static_cast<int>(problem.locations.size()) : -1;
+  if (keeps) problem.locations.push_back({"@kept aboard", "", std::nullopt, std::nullopt, 0.0});
   const size_t n = problem.locations.size();
   problem.travel = sched::TravelMatrix(n);
   for (size_t to = 0; to < places; ++to) {
@@ -97,6 +103,7 @@ sched::SchedulingProblem EngineScheduleSource::problem_for(const PlanRequest& re
         problem.travel.set(from, to, 0.0);
         continue;
       }
+      if (static_cast<int>(from) == kept_aboard) continue;  // no route
       const auto& loc = problem.locations[from];
       problem.travel.set(from, to, cost_from(field, *loc.x_m, *loc.y_m) / settings_.speed_mps);
     }
@@ -137,6 +144,7 @@ sched::SchedulingProblem EngineScheduleSource::problem_for(const PlanRequest& re
                   slash == std::string::npos ? "" : j.lookalike_class.substr(slash + 1)};
     job.pickup = place_of(j.pickup);
     job.delivery = place_of(j.destination);
+    if (j.keep_aboard && !j.aboard.empty()) job.delivery = sched::Place{kept_aboard, -1};
     job.deadline_s = j.deadline_s;
     if (!j.aboard.empty() && courier_index.count(j.aboard)) {
       job.status = sched::JobStatus::kAboard;

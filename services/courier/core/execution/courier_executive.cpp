@@ -453,11 +453,13 @@ PlanRequest CourierExecutive::request_for(double now_s, const std::vector<std::s
   for (const auto& [id, job] : jobs_) {
     const bool extra = std::find(extra_jobs.begin(), extra_jobs.end(), id) != extra_jobs.end();
     if (job.finished() || job.state == JobState::stranded) continue;
-    // An opportunistic job is planned only when asked for (the opportunity check), except that an
-    // object aboard behind a door believed closed takes its place aboard (capacity, look-alikes):
-    // the scheduler leaves its delivery out as unreachable.
-    if (job.state == JobState::opportunistic && !extra && !(job.aboard() && closed_door_for(job.target_place())))
-      continue;
+    // An opportunistic job is planned only when asked for (the opportunity check), except that its
+    // object aboard takes its place aboard (capacity, look-alikes) whatever its door is believed
+    // to be: the scheduler leaves its delivery out. (Counted only while its door was believed
+    // closed, a robot whose sighting had gone stale was planned pickups it had no room for:
+    // 'robot_full' refusals failed their jobs in the 12-jobs-an-hour day.)
+    const bool keep_aboard = job.state == JobState::opportunistic && !extra;
+    if (keep_aboard && !job.aboard()) continue;
     if (next_step(job) == NextStep::none) continue;
     // A job aboard a robot that cannot be planned for yet waits for that robot's pose.
     if (job.aboard()) {
@@ -465,7 +467,7 @@ PlanRequest CourierExecutive::request_for(double now_s, const std::vector<std::s
       if (carrier == robots_.end() || !carrier->second.pose_known) continue;
     }
     req.jobs.push_back({id, job.object.lookalike_class(), job.object_place, job.target_place(), job.deadline_s,
-                        job.object_carrier, job.robot});
+                        job.object_carrier, job.robot, keep_aboard});
   }
   return req;
 }

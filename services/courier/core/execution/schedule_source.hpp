@@ -29,6 +29,10 @@ struct PlanJob {
   std::optional<double> deadline_s;
   std::string aboard;  // the robot carrying the object, or ""
   std::string robot;   // the robot it is assigned to, or "": where a forced first pickup goes
+  // Aboard and not to be delivered now (an opportunistic job waiting for its door or for an
+  // opportunity): it only takes its place aboard (capacity, look-alikes); the schedule leaves its
+  // delivery out.
+  bool keep_aboard = false;
 };
 
 struct PlanRequest {

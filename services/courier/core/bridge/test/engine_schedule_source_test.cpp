@@ -143,6 +143,29 @@ TEST(EngineScheduleSource, ARobotFreeOnlyLaterSetsOutThenOrLeavesTheJobToAnother
   EXPECT_LT(plan.routes.at("west")[0].arrival_s, request.now_s + 120);
 }
 
+TEST(EngineScheduleSource, AnObjectKeptAboardTakesItsPlaceAndIsNotDelivered) {
+  SmallOffice o;
+  EngineScheduleSource source(o.knowledge, o.floor, o.map, settings());
+  PlanRequest request;
+  request.now_s = 11 * 3600.0;
+  request.robots = {{"r", 10.0, 8.0, 1}};  // room for one object
+  PlanJob kept{"waiting", "letter/red", "", "r2-desk", std::nullopt, "r"};
+  kept.keep_aboard = true;
+  request.jobs = {kept, {"new", "book/green", "r1-desk", "hall", std::nullopt, ""}};
+  Plan plan = source.plan(request);
+  // The robot is full: nothing is planned, and the kept object's delivery is left out.
+  EXPECT_TRUE(plan.routes.count("r") == 0 || plan.routes.at("r").empty());
+  EXPECT_EQ(plan.unschedulable.count("waiting"), 1u);
+  EXPECT_EQ(plan.unschedulable.count("new"), 1u);
+
+  // Not kept: it is delivered first, then the new job fits.
+  request.jobs[0].keep_aboard = false;
+  plan = source.plan(request);
+  ASSERT_EQ(plan.routes.at("r").size(), 3u);
+  EXPECT_EQ(plan.routes.at("r")[0].job_id, "waiting");
+  EXPECT_TRUE(plan.unschedulable.empty());
+}
+
 TEST(EngineScheduleSource, ExactOnlyWhileTheAssignmentsCanBeEnumerated) {
   SmallOffice o;
   EngineScheduleSource source(o.knowledge, o.floor, o.map, settings());

@@ -1,6 +1,6 @@
 #pragma once
 // The executive against a scripted scheduler, for the executive's unit tests: InOrderScheduler
-// (jobs in the order asked, 60 s per stop, doors and capacity respected) and the ExecutiveTest
+// (jobs in the order asked, 60 s per stop, doors, capacity and objects kept aboard respected) and the ExecutiveTest
 // fixture (rhino on the paper's floor, stepping, arriving, handing over).
 #include "services/courier/core/execution/courier_executive.hpp"
 #include "services/courier/core/execution/test/paper_floor.hpp"
@@ -38,7 +38,7 @@ class InOrderScheduler : public ScheduleSource {
     // no pickup beyond what is left.
     const int aboard = static_cast<int>(std::count_if(request.jobs.begin(), request.jobs.end(), [&](const PlanJob& j) {
       const auto door = floor_.door_to(j.destination);
-      return !j.aboard.empty() && door && request.closed_doors.count(*door);
+      return !j.aboard.empty() && (j.keep_aboard || (door && request.closed_doors.count(*door)));
     }));
     double t = request.now_s;
     for (const PlanJob& j : jobs) {
@@ -48,6 +48,10 @@ class InOrderScheduler : public ScheduleSource {
       };
       if ((j.aboard.empty() && closed(j.pickup)) || closed(j.destination)) {
         plan.unschedulable[j.id] = "behind a closed door";
+        continue;
+      }
+      if (j.keep_aboard) {
+        plan.unschedulable[j.id] = "kept aboard";
         continue;
       }
       if (clashes.count(j.id)) {

@@ -27,6 +27,10 @@ class FleetScheduler : public ScheduleSource {
     for (const auto& r : request.robots) t[r.id] = request.now_s;
     if (t.empty()) return plan;
     for (const PlanJob& j : request.jobs) {
+      if (j.keep_aboard) {
+        plan.unschedulable[j.id] = "kept aboard";
+        continue;
+      }
       std::string robot = j.aboard;
       if (robot.empty()) {
         const auto p = prefer.find(j.id);

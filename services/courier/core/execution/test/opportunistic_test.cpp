@@ -235,3 +235,38 @@ TEST_F(OpportunisticTest, OneObjectIsInOneOpenJobAndWhereItLiesFollowsItsJobs) {
 
 }  // namespace
 }  // namespace autonomy::courier
+
+namespace autonomy::courier {
+namespace {
+
+// An object aboard whose job waits as an opportunity (its door seen open again, the opportunity
+// declined) still takes its place aboard in every schedule: the scheduler is told to keep it
+// aboard, not to deliver it, so it never plans more pickups than the robot has room for.
+TEST_F(OpportunisticTest, AnObjectWaitingAboardForAnOpportunityKeepsItsPlaceAboardInTheSchedule) {
+  loaded_then_door_closes("j1", "letter-1", "meeting-table", "michael-desk", "A-120");
+  ASSERT_EQ(exec_.job("j1")->state, JobState::opportunistic);
+  Job j2 = delivery("j2", "book-2", "green", "book", "librarian-desk", "a114-desk");
+  j2.deadline_s = now_ + 150;  // on time alone (done at +120), late behind j1's delivery (+180)
+  exec_.add_job(j2, now_);
+  step();
+  // A-120 seen open: taking j1 up first would make j2 late (the in-order scheduler puts it
+  // first), so the opportunity is declined and j1 stays aboard, waiting.
+  now_ += 1;
+  exec_.on_door("rhino", "A-120", 1.5, now_);
+  step();
+  ASSERT_EQ(exec_.job("j1")->state, JobState::opportunistic);
+  ASSERT_TRUE(exec_.doors().believed_open("A-120"));
+  now_ += 1;
+  exec_.add_job(delivery("j3", "letter-3", "blue", "letter", "meeting-table", "a114-desk"), now_);
+  step();
+  const auto& jobs = scheduler_.last_request.jobs;
+  const auto j1 = std::find_if(jobs.begin(), jobs.end(), [](const PlanJob& j) { return j.id == "j1"; });
+  ASSERT_NE(j1, jobs.end());
+  EXPECT_TRUE(j1->keep_aboard);
+  EXPECT_EQ(j1->aboard, "rhino");
+  for (const PlanJob& j : jobs)
+    if (j.id != "j1") EXPECT_FALSE(j.keep_aboard) << j.id;
+}
+
+}  // namespace
+}  // namespace autonomy::courier
