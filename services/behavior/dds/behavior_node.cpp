@@ -20,6 +20,7 @@ namespace autonomy::behavior {
 namespace {
 
 constexpr auto kSpawnRetryPeriod = std::chrono::milliseconds(500);
+constexpr auto kLateStatePeriod = std::chrono::milliseconds(10);
 
 msg::GoalState to_msg(GoalState s) {
   switch (s) {
@@ -91,7 +92,13 @@ BehaviorNode::BehaviorNode(service::Service& service, BehaviorNodeOptions option
   }
   auto& loop = service.loop();
   loop.on_samples<msg::SpawnReply>(spawn_reply_reader_, [this](auto s) { on_spawn_replies(std::move(s)); });
-  loop.on_samples<msg::RobotState>(state_reader_, [this](auto s) { on_states(std::move(s)); });
+  // Robot states wake nobody: the simulator writes a tick's states before its clock, so they are
+  // taken when the clock is (on_tick), and whenever a decision needs them (spawn reply, map,
+  // goals); waking the loop for them as well cost a sleep and wake-up per tick. A state that comes
+  // after its clock (retransmitted after a loss) is taken by the timer below within 10 ms.
+  loop.every(kLateStatePeriod, [this] {
+    if (pending_tick_) control_pending_tick();
+  });
   loop.on_samples<msg::WorldMap>(map_reader_, [this](auto s) { on_map(std::move(s)); });
   loop.on_samples<msg::NavGoal>(goal_reader_, [this](auto s) { on_goals(std::move(s)); });
   loop.on_samples<msg::NavCancel>(cancel_reader_, [this](auto s) { on_cancels(std::move(s)); });
@@ -173,6 +180,7 @@ void BehaviorNode::request_spawn() {
 }
 
 void BehaviorNode::on_spawn_replies(std::vector<dds::Sample<msg::SpawnReply>> samples) {
+  take_states();  // the simulator publishes a new robot's state before its reply
   for (const auto& s : samples) {
     if (!s.valid || s.value.request_id != spawn_request_id_ || spawned_) continue;
     if (s.value.status == msg::RequestStatus::Accepted) {
@@ -191,8 +199,8 @@ void BehaviorNode::on_spawn_replies(std::vector<dds::Sample<msg::SpawnReply>> sa
   }
 }
 
-void BehaviorNode::on_states(std::vector<dds::Sample<msg::RobotState>> samples) {
-  for (auto& s : samples) {
+void BehaviorNode::take_states() {
+  for (auto& s : state_reader_.take()) {
     if (!s.valid) continue;
     if (s.value.robot_id != options_.robot_id) {
       if (options_.mission || options_.traffic) teammate_states_[s.value.robot_id] = s.value;
@@ -200,13 +208,12 @@ void BehaviorNode::on_states(std::vector<dds::Sample<msg::RobotState>> samples) 
     }
     if (!state_ || s.value.tick >= state_->tick) state_ = std::move(s.value);
   }
-  become_ready_when_possible();
-  control_pending_tick();
 }
 
 void BehaviorNode::on_map(std::vector<dds::Sample<msg::WorldMap>> samples) {
   for (auto& s : samples)
     if (s.valid) map_ = std::move(s.value);
+  take_states();
   become_ready_when_possible();
 }
 
@@ -272,6 +279,7 @@ void BehaviorNode::become_ready_when_possible() {
 }
 
 void BehaviorNode::on_goals(std::vector<dds::Sample<msg::NavGoal>> samples) {
+  take_states();  // a goal's statuses carry the tick of the latest state
   for (const auto& s : samples) {
     if (!s.valid || s.value.robot_id != options_.robot_id) continue;
     if (options_.mission) {
@@ -308,6 +316,7 @@ void BehaviorNode::on_goals(std::vector<dds::Sample<msg::NavGoal>> samples) {
 }
 
 void BehaviorNode::on_cancels(std::vector<dds::Sample<msg::NavCancel>> samples) {
+  take_states();
   for (const auto& s : samples) {
     if (!s.valid || s.value.robot_id != options_.robot_id) continue;
     const std::string what =
@@ -349,12 +358,17 @@ void BehaviorNode::on_tick(const msg::SimClock& clock) {
 
 void BehaviorNode::control_pending_tick() {
   const auto tick_due = [this] { return pending_tick_ && ready() && state_ && state_->tick >= *pending_tick_; };
-  if (!tick_due() || service_.loop().draining()) return;  // a handler run by the drain below: looked at after it
+  if (!pending_tick_ || service_.loop().draining()) return;  // a handler run by the drain below: looked at after it
+  // The tick's states came before its clock and wait in their reader (they wake nobody).
+  take_states();
+  become_ready_when_possible();  // returns at once when ready; calls this again when it becomes so
+  if (!tick_due()) return;
   // The simulator writes a tick's scans, pose estimates, links, team messages and states before
   // its clock: they have arrived, but some may still sit in their readers. Taking them first makes
   // the tick's control the same whatever order the waitset reports the readers in (lockstep runs
   // repeat exactly).
   service_.loop().drain();
+  take_states();  // a clock the drain took brings its tick's states too
   if (!tick_due()) return;
   const int64_t tick = *pending_tick_;
   pending_tick_.reset();

@@ -99,7 +99,8 @@ class BehaviorNode {
  private:
   void request_spawn();
   void on_spawn_replies(std::vector<dds::Sample<msg::SpawnReply>> samples);
-  void on_states(std::vector<dds::Sample<msg::RobotState>> samples);
+  // Takes the robot states waiting in their reader (they do not wake the loop: see the constructor).
+  void take_states();
   void on_map(std::vector<dds::Sample<msg::WorldMap>> samples);
   void on_goals(std::vector<dds::Sample<msg::NavGoal>> samples);
   void on_cancels(std::vector<dds::Sample<msg::NavCancel>> samples);
