@@ -36,7 +36,7 @@ if [[ "${1:-}" == "--secure" ]]; then
 fi
 
 cmake -S "$repo" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
-ninja -C "$build" dds_layer_bench lockstep_bench field_bench radio_bench world_bench paced_sim_bench simulator behavior experiment_runner \
+ninja -C "$build" dds_layer_bench lockstep_bench field_bench radio_bench world_bench paced_sim_bench simulator behavior experiment_runner experiment_trial_host \
   courier_bench courier_fleet_bench planner_bench path_bench executive_bench \
   executive_replan_bench planner executive office_day_experiment courier courier_plot
 
