@@ -7,8 +7,9 @@
 #      figure projected for the baseline. The runner draws every configuration's seeds whatever
 #      --only selects, so these are the very trials of run 1: their CSV rows must be identical.
 #   bench/experiment_bench.sh BIN_DIR DOMAIN [--quick]
-# Uses DOMAIN to DOMAIN + JOBS - 1 (environment JOBS, default 4: the runner's trials at a time). Prints the runner's progress, then the
-# figures (wall seconds; CPU seconds of the runner and its children). Outputs go to a temporary folder.
+# Uses DOMAIN to DOMAIN + JOBS - 1 (environment JOBS, default 4: the runner's trials at a time).
+# Prints the runner's progress, then the figures (wall seconds; CPU seconds of the runner and its
+# children). Outputs go to a temporary folder.
 set -euo pipefail
 
 bin="$1"
