@@ -2,9 +2,10 @@
 // the office floor, in lockstep: robots crossing one doorway from both sides all get through
 // without touching (judged on the simulator's robot states, its ground truth), waiting visibly;
 // a robot parked in, or killed in, the only doorway of a room ends the others' goals Blocked with
-// a reason that names it; two robots meeting head-on in the hallway pass (one gives way).
+// a reason that names it; two robots meeting head-on in the hallway pass (one gives way); a robot
+// standing in the hallway is driven around.
 //
-// One DDS domain per test; this file uses 49-51 and 104-105 only:
+// One DDS domain per test; this file uses 49-51, 104-105 and 107 only:
 //
 //   domain  test
 //   ------  -----------------------------------------------
@@ -13,6 +14,7 @@
 //     51    TrafficDoorwayTest.ARobotKilledInTheOnlyDoorwayBlocksWithAReason
 //    104    TrafficTest.TwoRobotsHeadOnInTheHallwayBothArrive
 //    105    TrafficDoorwayTest.ARobotKilledDrivingThroughTheOnlyDoorwayBlocksWithAReason
+//    107    TrafficTest.ARobotStandingInTheHallwayIsDrivenAround
 #include "tests/support/goal_statuses.hpp"
 #include "tests/support/process_test.hpp"
 
@@ -119,6 +121,29 @@ TEST_F(TrafficTest, TwoRobotsHeadOnInTheHallwayBothArrive) {
   bool gave_way = false;
   for (const auto& g : of(goals, "r2")) gave_way |= g.reason == "giving way to r1";
   EXPECT_TRUE(gave_way) << states_text(of(goals, "r2"));
+  const Contact c = contacts(states.all());
+  EXPECT_GE(c.closest_m, 0.6 + 0.01) << c.where;
+  EXPECT_EQ(c.collisions, 0);
+}
+
+// r2 stands in the hallway where the courier's lookouts are (0.6 m off the south wall, beside
+// A-120's door) with nothing to do; r1 comes along the same side of the hallway from the east and
+// must pass it: it plans around the standing robot (1 m is left beside it) instead of driving up
+// to it until its brake stalls it ("no progress for 10 s", as in the courier fleet's day).
+TEST_F(TrafficTest, ARobotStandingInTheHallwayIsDrivenAround) {
+  join(107);
+  Recorder<msg::RobotState> states(participant(), dds::topics::robot_state);
+  Recorder<msg::GoalStatus> goals(participant(), dds::topics::goal_status);
+  start_simulator({"--config", kOffice, "--without-robots", "--wait-for", "behavior/r1", "behavior/r2"});
+  start_behavior("r2", {"--start", "12.8", "7.6", "0"});
+  start_behavior("r1", {"--start", "22.0", "7.6", "3.14", "--goal", "4.0", "7.6"});
+  ASSERT_TRUE(await("r1's goal ended", [&] {
+    goals.poll();
+    return ended(of(goals, "r1"));
+  }, 120s));
+  states.poll();
+  EXPECT_EQ(of(goals, "r1").back().state, GoalState::Reached) << states_text(of(goals, "r1"));
+  for (const auto& g : of(goals, "r1")) EXPECT_EQ(g.reason.find("no progress"), std::string::npos) << g.reason;
   const Contact c = contacts(states.all());
   EXPECT_GE(c.closest_m, 0.6 + 0.01) << c.where;
   EXPECT_EQ(c.collisions, 0);

@@ -143,11 +143,17 @@ void BehaviorNode::refresh_robot_obstacles(const geometry::Vec2& me, double now_
       kind = Kind::Parked;
     } else if (it->second.claim == "waiting" && it->second.path.size() <= 1) {
       kind = Kind::Waiting;  // soft: planned around only while a route is left beside it
+    } else if (it->second.path.empty() && it->second.claim.empty()) {
+      // Standing with nothing to drive (parked, at a lookout, between goals): soft like a waiting
+      // robot. Not planned around, it was driven up to in the open hallway and the brake stalled
+      // the mover ("no progress for 10 s"), for minutes when the other stood long.
+      kind = Kind::Parked;
     } else {
       continue;  // it drives or waits by the rule: not an obstacle
     }
-    // Described (why) only when planned around: this runs at every tick.
-    now[id] = {p, st.radius, "", kind == Kind::Waiting, kind, age};
+    // Described (why) only when planned around: this runs at every tick. Only an obstacle the
+    // traffic rule forced (a robot holding nothing in a passage) is hard.
+    now[id] = {p, st.radius, "", kind == Kind::Waiting || (kind == Kind::Parked && !forced_obstacles_.count(id)), kind, age};
   }
   // Waiting robots dropped before for leaving no route stay dropped while they stand still.
   for (auto it = soft_dropped_.begin(); it != soft_dropped_.end();) {
