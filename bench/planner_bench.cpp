@@ -15,12 +15,13 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <random>
 #include <string>
 #include <vector>
 
+#include "jobshop_file.hpp"
 #include "jobshop_instance.hpp"
+#include "minizinc_baseline.hpp"
 #include "plan_validator.hpp"
 #include "planner.hpp"
 #include "planner_language.hpp"
@@ -28,6 +29,10 @@
 
 using namespace autonomy::planner;
 using Clock = std::chrono::steady_clock;
+using autonomy::bench::Baseline;
+using autonomy::bench::minizinc_with_gecode;
+using autonomy::bench::read_jobshop_file;
+using autonomy::bench::run_minizinc;
 
 namespace {
 
@@ -50,71 +55,6 @@ void bellman_ford(std::size_t n, const std::vector<Edge>& edges, Time horizon,
         earliest[e.from] = earliest[e.to] - e.w, changed = true;
     }
   }
-}
-
-std::optional<std::string> run_command(const std::string& command) {
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return std::nullopt;
-  std::string out;
-  std::array<char, 4096> buffer{};
-  std::size_t n;
-  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) out.append(buffer.data(), n);
-  if (pclose(pipe) != 0) return std::nullopt;
-  return out;
-}
-
-bool minizinc_with_gecode() {
-  auto solvers = run_command("minizinc --solvers 2>/dev/null");
-  if (!solvers) return false;
-  std::string lower = *solvers;
-  std::transform(lower.begin(), lower.end(), lower.begin(), ::tolower);
-  return lower.find("gecode") != std::string::npos;
-}
-
-struct Baseline {
-  bool ran = false, proved = false;
-  long makespan = -1;
-  double seconds = 0;         // the whole minizinc run (flattening included)
-  double solve_seconds = -1;  // Gecode's own solve time, when it reports it
-};
-
-// One instance through `minizinc --solver gecode` with the data written from the parsed
-// instance (machines 1-based). "==========" ends the output when the search completed, i.e.
-// the last solution is proved optimal.
-Baseline run_minizinc(const std::string& model, const JobShopInstance& inst,
-                      const std::string& name, int seconds) {
-  Baseline b;
-  const auto data = std::filesystem::temp_directory_path() / ("planner_bench_" + name + ".dzn");
-  {
-    std::ofstream out(data);
-    out << "jobs = " << inst.jobs << ";\nmachines = " << inst.machines << ";\n";
-    for (const char* what : {"machine", "duration"}) {
-      out << what << " = [|";
-      for (int j = 0; j < inst.jobs; ++j) {
-        for (int k = 0; k < inst.machines; ++k) {
-          const auto [m, d] = inst.operations[j][k];
-          out << (k ? ", " : " ") << (what[0] == 'm' ? long(m + 1) : d);
-        }
-        out << " |";
-      }
-      out << "];\n";
-    }
-  }
-  const auto start = Clock::now();
-  auto out = run_command("minizinc --solver gecode --statistics --time-limit " +
-                         std::to_string(seconds * 1000) + " '" + model + "' '" + data.string() +
-                         "' 2>&1; true");  // a time-out is an answer too: read the output
-  b.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  std::filesystem::remove(data);
-  if (!out || out->find("makespan = ") == std::string::npos) return b;
-  b.ran = true;
-  b.proved = out->find("==========") != std::string::npos;
-  for (std::size_t at = out->find("makespan = "); at != std::string::npos;
-       at = out->find("makespan = ", at + 1))
-    b.makespan = std::stol(out->substr(at + 11));
-  if (auto at = out->find("solveTime="); at != std::string::npos)
-    b.solve_seconds = std::stod(out->substr(at + 10));
-  return b;
 }
 
 }  // namespace
@@ -275,16 +215,10 @@ int main(int argc, char** argv) {
   for (const auto& [name, optimum] :
        {std::pair{"ft06", 55}, std::pair{"la01", 666}, std::pair{"la02", 655},
         std::pair{"la03", 597}, std::pair{"la04", 590}, std::pair{"la05", 593}}) {
-    Diagnostics errors;
-    const std::string file = jobshop_dir + "/" + name;
-    auto text = read_text_file(file, &errors);
-    auto inst = text ? parse_jobshop(*text, file, &errors) : std::nullopt;
-    auto model = inst ? build_domain_model(jobshop_model(*inst), &errors) : std::nullopt;
-    auto problem = model ? build_problem(*model, jobshop_problem(*inst), &errors) : std::nullopt;
-    if (!problem) {
-      std::fprintf(stderr, "%s", to_string(errors).c_str());
-      return 2;
-    }
+    auto shop = read_jobshop_file(jobshop_dir + "/" + name);
+    if (!shop) return 2;
+    const DomainModel* model = &shop->model;
+    const PlanningProblem* problem = &shop->problem;
     std::printf("%s in %zu decisions (optimum %d):", name, budget_decisions, optimum);
     for (const std::string& engine : search_engine_names()) {
       PlanningOptions options;
@@ -319,16 +253,11 @@ int main(int argc, char** argv) {
                 minizinc_model.c_str());
   const bool with_baseline = baseline && std::filesystem::exists(minizinc_model);
   for (const char* name : {"ft06", "la01", "la02", "la03", "la04", "la05"}) {
-    Diagnostics errors;
-    const std::string file = jobshop_dir + "/" + name;
-    auto text = read_text_file(file, &errors);
-    auto inst = text ? parse_jobshop(*text, file, &errors) : std::nullopt;
-    if (!inst) {
-      std::fprintf(stderr, "%s", to_string(errors).c_str());
-      return 2;
-    }
-    auto model = build_domain_model(jobshop_model(*inst), &errors);
-    auto problem = build_problem(*model, jobshop_problem(*inst), &errors);
+    auto shop = read_jobshop_file(jobshop_dir + "/" + name);
+    if (!shop) return 2;
+    const DomainModel* model = &shop->model;
+    const PlanningProblem* problem = &shop->problem;
+    const JobShopInstance* inst = &shop->instance;
     // Each engine to the proof (or the limit); the ratio is against the faster proof.
     double best = -1;
     bool best_proved = false;

@@ -99,6 +99,7 @@ PlanResult make_plan(const DomainModel& model, const PlanningProblem& problem,
   // Propagation honours the budget and cancellation too (before any search starts, a model's
   // parameter constraints can take long: issue 29).
   net.set_stop(options.termination.stop);
+  net.set_not_first_not_last(options.not_first_not_last);
   if (!net.initialize()) {
     result.status = net.interrupted() ? PlanStatus::kOutOfBudget : PlanStatus::kInfeasible;
     result.explanation = net.conflict();

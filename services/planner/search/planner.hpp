@@ -20,6 +20,8 @@ struct PlanningOptions {
   // each goal left out in turn, kept out while the rest stays infeasible), within this many
   // decisions in all and the termination's stop condition; 0: no explanation.
   std::size_t explanation_decisions = 20000;
+  // Not-first/not-last propagation on timelines (TokenNetwork::set_not_first_not_last).
+  bool not_first_not_last = false;
 };
 
 enum class PlanStatus {

@@ -5,6 +5,7 @@
 #include <map>
 #include <sstream>
 
+#include "not_first_last.hpp"
 #include "procedures.hpp"
 
 namespace autonomy::planner {
@@ -566,9 +567,7 @@ bool TokenNetwork::exclusion_propagation() {
         unique.emplace(key, id);
       }
       if (unique.size() < 2) continue;
-      struct Window {
-        Time est, lct, d;
-      };
+      using Window = UnaryWindow;
       std::vector<Window> w;
       std::vector<TokenId> members;
       for (auto& [key, id] : unique) {
@@ -587,7 +586,7 @@ bool TokenNetwork::exclusion_propagation() {
         for (std::size_t k : by_lct) {
           const Window& x = w[k];
           if (x.est < from.est) continue;
-          load += x.d;
+          load += x.duration;
           within.push_back(k);
           if (from.est + load > x.lct) {
             // Name the tokens that cannot all fit, each with its statement (issue 29).
@@ -634,7 +633,7 @@ bool TokenNetwork::exclusion_propagation() {
         std::sort(by_est.begin(), by_est.end(),
                   [&](std::size_t x, std::size_t y) { return w[x].est > w[y].est; });
         Time longest = 0;
-        for (const Window& x : w) longest = std::max(longest, x.d);
+        for (const Window& x : w) longest = std::max(longest, x.duration);
         for (std::size_t b = 0; b < n; ++b) {
           std::uint32_t omega = 0;
           Time p = 0;
@@ -642,15 +641,15 @@ bool TokenNetwork::exclusion_propagation() {
             const std::size_t k = by_est[r];
             if (w[k].lct <= w[b].lct) {
               omega |= std::uint32_t{1} << k;
-              p += w[k].d;
+              p += w[k].duration;
             }
             if (r + 1 < n && w[by_est[r + 1]].est == w[k].est) continue;  // ties: all of them
             const Time est = w[k].est;
             if (omega == 0 || est >= w[b].lct || w[b].lct - est - p >= longest) continue;
             for (std::size_t i = 0; i < n; ++i) {
               if (omega & (std::uint32_t{1} << i)) continue;
-              if (std::min(w[i].est, est) + p + w[i].d > w[b].lct) after[i] |= omega;
-              if (std::max(w[i].lct, w[b].lct) - p - w[i].d < est) before[i] |= omega;
+              if (std::min(w[i].est, est) + p + w[i].duration > w[b].lct) after[i] |= omega;
+              if (std::max(w[i].lct, w[b].lct) - p - w[i].duration < est) before[i] |= omega;
             }
           }
         }
@@ -659,6 +658,25 @@ bool TokenNetwork::exclusion_propagation() {
             if ((after[i] >> k) & 1u && !precede(k, i, "edge finding")) return false;
             if ((before[i] >> k) & 1u && !precede(i, k, "edge finding")) return false;
           }
+        // Not-first/not-last (not_first_last.hpp) narrows the windows themselves.
+        const std::vector<UnaryWindow> narrowed =
+            not_first_not_last_ ? not_first_not_last(w) : std::vector<UnaryWindow>{};
+        const std::string& line = timelines_[tokens_[members[0]].timeline].name;
+        for (std::size_t i = 0; i < narrowed.size(); ++i) {
+          const Token& t = tokens_[members[i]];
+          if (narrowed[i].est > tn_.earliest(t.start)) {
+            added = true;
+            if (!add_temporal(TemporalNetwork::origin(), t.start, narrowed[i].est, kInfinity,
+                              "not-first on " + line))
+              return false;
+          }
+          if (narrowed[i].lct < tn_.latest(t.end)) {
+            added = true;
+            if (!add_temporal(TemporalNetwork::origin(), t.end, 0, narrowed[i].lct,
+                              "not-last on " + line))
+              return false;
+          }
+        }
       }
       for (std::size_t i = 0; i < members.size(); ++i) {
         for (std::size_t j = 0; j < members.size(); ++j) {

@@ -140,6 +140,11 @@ class TokenNetwork {
   void set_stop(std::function<bool()> stop) { cn_.set_stop(std::move(stop)); }
   bool interrupted() const { return interrupted_; }
 
+  // Not-first/not-last on every timeline beside edge finding (not_first_last.hpp); off by
+  // default: at O(n^3) a propagation it costs more search time than its pruning saves on the
+  // job-shop instances measured (docs/planner-search.md). Set before initialize().
+  void set_not_first_not_last(bool on) { not_first_not_last_ = on; }
+
  private:
   TokenId new_token(std::size_t timeline, int predicate);
   bool setup_token(TokenId t, const std::string& why);
@@ -172,6 +177,7 @@ class TokenNetwork {
   std::string conflict_;
   std::size_t decisions_ = 0;
   bool interrupted_ = false;
+  bool not_first_not_last_ = false;
 };
 
 }  // namespace autonomy::planner

@@ -36,6 +36,9 @@ int main(int argc, char** argv) {
   app.add_option("--svg", svg_file, "write a Gantt chart of the plan here");
   app.add_option("--json", json_file, "write the plan here instead of standard output");
   app.add_flag("--quiet", quiet, "no plan on standard output, only the summary");
+  bool not_first_not_last = false;
+  app.add_flag("--not-first-not-last", not_first_not_last,
+               "not-first/not-last propagation on timelines beside edge finding");
   CLI11_PARSE(app, argc, argv);
 
   Diagnostics errors;
@@ -69,6 +72,7 @@ int main(int argc, char** argv) {
   PlanningOptions options;
   options.engine = engine;
   options.engine_options.seed = seed;
+  options.not_first_not_last = not_first_not_last;
   if (max_decisions) options.termination.max_decisions = max_decisions;
   const auto started = std::chrono::steady_clock::now();
   auto elapsed = [&] {
