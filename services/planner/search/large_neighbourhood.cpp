@@ -10,11 +10,13 @@
 //    starting in a window of the plan's time, those of a few random timelines, or a random
 //    sample). The other tokens keep their order on their timelines (each consecutive kept pair
 //    is ordered, a kOrder decision); the relaxed ones, the slaves and every other choice are
-//    left to the chronological engine under a small decision budget. A plan found there is an
+//    left to the chronological engine, every other neighbourhood to iterative sampling, under
+//    a small decision budget. A plan found there is an
 //    improvement (the bound is in the network): it is returned and remembered. Else the next
 //    neighbourhood is tried.
 //  - The neighbourhood's size adapts: a sub-search that exhausts its neighbourhood (nothing
-//    better there) makes the next one larger, one that runs out of budget makes it smaller.
+//    better there) makes the next one larger, a chronological one that runs out of budget
+//    makes it smaller.
 //  - Completeness is kept by full searches from the root (no kept orders) with a budget that
 //    doubles each time, run when the neighbourhoods have grown to the whole plan or have spent
 //    four times the last full search's budget since it; an exhausted full search proves the
@@ -43,7 +45,8 @@ class LargeNeighbourhood final : public SearchEngine {
   explicit LargeNeighbourhood(const EngineOptions& options)
       : options_(options),
         rng_(options.seed),
-        inner_(make_search_engine("chronological", options)) {}
+        inner_(make_search_engine("chronological", options)),
+        sampler_(make_search_engine("sampling", options)) {}
   std::string name() const override { return "lns"; }
   SearchOutcome solve(TokenNetwork& net, const Termination& term) override;
 
@@ -127,7 +130,8 @@ class LargeNeighbourhood final : public SearchEngine {
 
   EngineOptions options_;
   std::mt19937 rng_;
-  std::unique_ptr<SearchEngine> inner_;
+  std::unique_ptr<SearchEngine> inner_, sampler_;
+  std::size_t neighbourhoods_ = 0;
   std::optional<Remembered> best_;
   double fraction_ = kStartFraction;
   std::size_t full_budget_ = kFirstFullBudget, since_full_ = 0;
@@ -145,12 +149,12 @@ SearchOutcome LargeNeighbourhood::solve(TokenNetwork& net, const Termination& te
     return out;
   };
   // The inner engine under `budget` decisions, within what is left of the caller's.
-  auto run_inner = [&](std::size_t budget) {
+  auto run_inner = [&](std::size_t budget, SearchEngine& engine) {
     Termination inner = term;
     const std::size_t left =
         term.max_decisions - std::min(term.max_decisions, stats.decisions);
     inner.max_decisions = std::min(budget, left);
-    SearchOutcome o = inner_->solve(net, inner);
+    SearchOutcome o = engine.solve(net, inner);
     stats.decisions += o.statistics.decisions;
     stats.backtracks += o.statistics.backtracks;
     stats.dead_ends += o.statistics.dead_ends;
@@ -163,7 +167,7 @@ SearchOutcome LargeNeighbourhood::solve(TokenNetwork& net, const Termination& te
   const bool fresh = !best_ || best_->root_tokens != root.tokens ||
                      best_->sequences.size() != net.timelines().size();
   if (fresh) {
-    const SearchStatus s = run_inner(static_cast<std::size_t>(-1));
+    const SearchStatus s = run_inner(static_cast<std::size_t>(-1), *inner_);
     if (s == SearchStatus::kPlanFound) remember(net, root.tokens);
     return finish(s);
   }
@@ -173,7 +177,7 @@ SearchOutcome LargeNeighbourhood::solve(TokenNetwork& net, const Termination& te
       // A full search from the root: the engine's proofs come from here only.
       since_full_ = 0;
       fraction_ = kStartFraction;
-      const SearchStatus s = run_inner(full_budget_);
+      const SearchStatus s = run_inner(full_budget_, *inner_);
       if (s == SearchStatus::kPlanFound) {
         remember(net, root.tokens);
         return finish(s);
@@ -186,7 +190,11 @@ SearchOutcome LargeNeighbourhood::solve(TokenNetwork& net, const Termination& te
     const std::vector<char> relaxed = neighbourhood();
     const std::size_t before = stats.decisions;
     SearchStatus s = SearchStatus::kExhausted;
-    if (keep_orders(net, relaxed, stats)) s = run_inner(options_.neighbourhood_decisions);
+    // Every other neighbourhood is re-planned by iterative sampling: the chronological
+    // engine's fixed option order gives the same plan for the same neighbourhood.
+    const bool sample = neighbourhoods_++ % 2 == 1;
+    if (keep_orders(net, relaxed, stats))
+      s = run_inner(options_.neighbourhood_decisions, sample ? *sampler_ : *inner_);
     since_full_ += stats.decisions - before;
     if (s == SearchStatus::kPlanFound) {
       remember(net, root.tokens);
@@ -194,9 +202,10 @@ SearchOutcome LargeNeighbourhood::solve(TokenNetwork& net, const Termination& te
     }
     net.undo_to(root);
     // Nothing better in this neighbourhood: look wider; too wide to search: look narrower.
+    // (Sampling never exhausts anything: only the chronological sub-searches tell.)
     if (s == SearchStatus::kExhausted)
       fraction_ = std::min(1.0, fraction_ * kGrowth);
-    else
+    else if (!sample)
       fraction_ = std::max(kMinFraction, fraction_ / kGrowth);
   }
 }

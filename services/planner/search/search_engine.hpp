@@ -86,7 +86,7 @@ struct EngineOptions {
 // end one culprit decision changes and the rest of the plan is re-applied; incomplete, its
 // backtracks count the repairs; iterative_repair.cpp) or "lns" (large-neighbourhood search:
 // the chronological engine's first plan, then parts of the best plan relaxed and re-planned
-// under a small budget, anytime; complete through full searches with doubling budgets;
+// (by the chronological engine or by iterative sampling) under a small budget, anytime; complete through full searches with doubling budgets;
 // large_neighbourhood.cpp). Null for an unknown name.
 std::unique_ptr<SearchEngine> make_search_engine(const std::string& name,
                                                  const EngineOptions& options = {});
