@@ -245,12 +245,12 @@ Command add_plan(CLI::App& app) {
   cmd->add_option("--jobshop", o->jobshop,
                   "An OR-Library job-shop instance instead of MODEL and PROBLEM");
   cmd->add_option("--engine", o->engine,
-                  "Search engine: chronological (default), discrepancy, sampling, repair");
+                  "Search engine: chronological (default), discrepancy, sampling, repair, lns");
   cmd->add_option("--budget-ms", o->budget_ms, "Time budget, ms (0: the planner's default)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--max-decisions", o->max_decisions, "Decision budget (0: none)")
       ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--seed", o->seed, "Seed of the sampling and repair engines");
+  cmd->add_option("--seed", o->seed, "Seed of the sampling, repair and lns engines");
   cmd->add_option("--json", o->json, "Write the plan as JSON here");
   cmd->add_option("--svg", o->svg, "Write a Gantt chart of the plan here");
   cmd->add_option("--id", o->id,

@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
   for (const std::string& n : search_engine_names()) engines += (engines.empty() ? "" : ", ") + n;
   unsigned seed = 1;
   app.add_option("--engine", engine, "search engine: " + engines)->capture_default_str();
-  app.add_option("--seed", seed, "seed of the sampling and repair engines")->capture_default_str();
+  app.add_option("--seed", seed, "seed of the sampling, repair and lns engines")->capture_default_str();
   app.add_option("--seconds", seconds, "time budget (0: none)");
   app.add_option("--max-decisions", max_decisions, "decision budget (0: none)");
   app.add_option("--svg", svg_file, "write a Gantt chart of the plan here");
