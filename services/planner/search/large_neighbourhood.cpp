@@ -78,8 +78,9 @@ class LargeNeighbourhood final : public SearchEngine {
     std::vector<char> relaxed(b.root_tokens, 0);
     const std::size_t n = b.by_start.size();
     if (n == 0) return relaxed;
+    // At least two tokens (one alone keeps its place), at most all (std::clamp needs 2 <= n).
     const std::size_t k =
-        std::clamp<std::size_t>(std::size_t(std::ceil(fraction_ * double(n))), 2, n);
+        std::min(n, std::max<std::size_t>(2, std::size_t(std::ceil(fraction_ * double(n)))));
     switch (std::uniform_int_distribution<int>(0, 2)(rng_)) {
       case 0: {  // a window of the plan's time
         const std::size_t first = std::uniform_int_distribution<std::size_t>(0, n - k)(rng_);

@@ -95,6 +95,24 @@ TEST(LnsEngine, TheBudgetAndTheStopPredicateEndItWithTheBestPlan) {
   EXPECT_EQ(validate_plan(la03->model, la03->problem, *r.plan), std::vector<std::string>{});
 }
 
+// Plans of one token and of two on one timeline: the neighbourhoods' size never exceeds the
+// plan, and the full search proves the optimum.
+TEST(LnsEngine, TinyPlansAreProved) {
+  for (const auto& [text, optimum] : {std::pair{"1 1\n0 5\n", 5}, std::pair{"2 1\n0 3\n0 4\n", 7}}) {
+    Diagnostics errors;
+    auto inst = parse_jobshop(text, "tiny", &errors);
+    ASSERT_TRUE(inst) << to_string(errors);
+    auto model = build_domain_model(jobshop_model(*inst), &errors);
+    ASSERT_TRUE(model) << to_string(errors);
+    auto problem = build_problem(*model, jobshop_problem(*inst), &errors);
+    ASSERT_TRUE(problem) << to_string(errors);
+    ShopRun run = plan_shop({*model, *problem}, "lns", 10000);
+    ASSERT_TRUE(run.result.plan) << to_string(run.result.status);
+    EXPECT_EQ(run.result.status, PlanStatus::kOptimal);
+    EXPECT_EQ(run.result.plan->makespan, optimum);
+  }
+}
+
 // The engine is reached by name like the others.
 TEST(LnsEngine, IsMadeByName) {
   auto engine = make_search_engine("lns");
