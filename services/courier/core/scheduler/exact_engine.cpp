@@ -46,6 +46,11 @@ constexpr std::uint64_t kMaxAssignments = 1u << 14;
 // it finds complete routes only in its last layer and prunes with the incumbent until then: at 5
 // rounds the incumbent was 1-2 % above the optimum on most loose 12-job offices (9 % on one),
 // at 60 it is nearly always optimal and the search 20-30 % cheaper (bench 1b, CPU medians).
+// That was before the beam search below: with one courier and the beam's job count the rounds
+// are skipped (greedy dispatch and descent only), since the beam then finds the incumbent. They
+// were 15 % of a loose 12-job solve's instructions (callgrind, seeds 1-10 and 1001-1020), and
+// without them the solves took 12 % fewer instructions in all; CPU medians 10-25 % lower on
+// the loose and the default class at 12 jobs.
 constexpr int kIncumbentRounds = 60;
 // Then a beam search over the exact search's own states (the labels of the best bound per layer)
 // from 8 jobs per courier: the large engine's routes were above the optimum on 8 of 20 loose
@@ -144,16 +149,18 @@ class CourierSearch {
     }
     // Per place, the other places by travel time to it (nearest first), and the longest direct
     // leg into it (for the delay dominance's upper bound on finish times).
-    nearest_.resize(places_.size());
     longest_leg_in_.assign(places_.size(), 0.0);
+    std::vector<std::pair<double, int>> by_leg;
     for (std::size_t a = 0; a < places_.size(); ++a) {
+      by_leg.clear();
       for (std::size_t b = 0; b < places_.size(); ++b) {
         if (a == b) continue;
-        nearest_[a].push_back({sp(places_[b], places_[a]), static_cast<int>(b)});
+        by_leg.push_back({sp(places_[b], places_[a]), static_cast<int>(b)});
         const double leg = sim_.travel(places_[b], places_[a]);
         if (leg < kNoRoute) longest_leg_in_[a] = std::max(longest_leg_in_[a], leg);
       }
-      std::sort(nearest_[a].begin(), nearest_[a].end());
+      std::sort(by_leg.begin(), by_leg.end());
+      for (const auto& [leg, b] : by_leg) nearest_leg_.push_back(leg), nearest_from_.push_back(b);
     }
     masks_ok_ = places_.size() <= 64;
     for (std::size_t i = 0; i < jobs_.size(); ++i) by_deadline_.push_back(static_cast<int>(i));
@@ -319,19 +326,24 @@ class CourierSearch {
       ++r;
     }
     if (masks_ok_) charge_legs(local_[static_cast<std::size_t>(s.loc)], active);
-    sort_bound_values(work_, r);
     const double gap = shortest_delivery_left;
     const double now = rs_.problem().now_s;
     if (cut_at) {
+      // Every w_j is at least its delivery handover, so at least `gap`: the chain never binds
+      // here and the work part is t - now plus the k-th prefix sum of the sorted w, summed over
+      // k. That sum is sum_j w_j plus, over pairs, the smaller w of the pair, which needs no
+      // sort (the sort is done only for the labels this part does not cut).
       Objective partial = s.cost;
-      double busy = s.t, previous = -kNoRoute;
-      for (int k = 0; k < r; ++k) {
-        busy += work_[k];
-        previous = std::max(busy, previous + gap);
-        partial.completion_s += previous - now;
+      double pairs = 0.0;
+      for (int i = 0; i < r; ++i) {
+        const double wi = work_[i];
+        pairs += wi;
+        for (int j = i + 1; j < r; ++j) pairs += std::min(wi, work_[j]);
       }
+      partial.completion_s += r * (s.t - now) + pairs;
       if (compare(partial, *cut_at) >= 0) return false;
     }
+    sort_bound_values(work_, r);
     int late_alone = 0;
     double lateness_alone = 0.0;
     for (int i = 0, k = 0; i < static_cast<int>(jobs_.size()); ++i) {
@@ -380,9 +392,11 @@ class CourierSearch {
       touching_[a] = 0;
       if (a == here) continue;
       double leg = 0.0;
-      for (const auto& [t, src] : nearest_[static_cast<std::size_t>(a)])
-        if (sources >> src & 1ull) {
-          leg = t < kNoRoute ? t : 0.0;
+      const std::size_t others = places_.size() - 1;
+      const std::size_t row = static_cast<std::size_t>(a) * others;
+      for (std::size_t k = row; k < row + others; ++k)
+        if (sources >> nearest_from_[k] & 1ull) {
+          leg = nearest_leg_[k] < kNoRoute ? nearest_leg_[k] : 0.0;
           break;
         }
       if (leg <= 0.0) continue;
@@ -704,7 +718,10 @@ class CourierSearch {
   LocalJob local_jobs_[kMaxJobsPerCourier] = {};
   std::vector<int> local_;   // location -> place id, -1 if not a place of this search
   std::vector<int> places_;  // place id -> location
-  std::vector<std::vector<std::pair<double, int>>> nearest_;
+  // Per place a, row a (places - 1 entries): the other places by shortest travel into a, nearest
+  // first, as two flat arrays (a vector per place cost a pointer chase per leg charged).
+  std::vector<double> nearest_leg_;
+  std::vector<int> nearest_from_;
   std::vector<double> longest_leg_in_;
   bool masks_ok_ = true;  // at most 64 places (else no travel is charged)
   std::vector<int> by_deadline_;
@@ -795,8 +812,10 @@ class ExactEngine final : public SchedulerEngine {
     Routes heuristic;
     std::vector<Objective> heuristic_costs;
     Objective heuristic_total;
-    bool have_heuristic = large_search(rs, heuristic, kIncumbentRounds) &&
-                          rs.total_cost(heuristic, heuristic_costs, heuristic_total);
+    const bool beam_finds_incumbent = couriers == 1 && rs.free_jobs().size() >= kBeamFromJobs;
+    bool have_heuristic =
+        large_search(rs, heuristic, beam_finds_incumbent ? 0 : kIncumbentRounds) &&
+        rs.total_cost(heuristic, heuristic_costs, heuristic_total);
     if (rs.stopped()) return give_up(problem, rs, have_heuristic ? &heuristic : nullptr, 0);
     const auto shortest = shortest_travel(problem);
 
