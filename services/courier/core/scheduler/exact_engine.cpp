@@ -49,8 +49,8 @@ constexpr std::uint64_t kMaxAssignments = 1u << 14;
 // That was before the beam search below: with one courier and the beam's job count the rounds
 // are skipped (greedy dispatch and descent only), since the beam then finds the incumbent. They
 // were 15 % of a loose 12-job solve's instructions (callgrind, seeds 1-10 and 1001-1020), and
-// without them the solves took 12 % fewer instructions in all; CPU medians 10-25 % lower on
-// the loose and the default class at 12 jobs.
+// without them the solves took 12 % fewer instructions in all; at 12 jobs CPU medians 10-14 %
+// lower on the loose class, 16-45 % on the default class (docs/courier-scheduling.md).
 constexpr int kIncumbentRounds = 60;
 // Then a beam search over the exact search's own states (the labels of the best bound per layer)
 // from 8 jobs per courier: the large engine's routes were above the optimum on 8 of 20 loose
