@@ -223,6 +223,13 @@ class BehaviorNode {
   double waited_s_ = 0.0;
   std::optional<double> last_traffic_step_s_;
   std::set<std::string> forced_obstacles_;                // found in a passage by the rule
+  // Robots standing with nothing to drive (fresh itinerary, no path, no claim): where and since
+  // when (sim time) they stand; planned around once they have stood long (traffic_mode.cpp).
+  struct Standing {
+    geometry::Vec2 position;
+    double since_s = 0.0;
+  };
+  std::map<std::string, Standing> standing_;
   std::optional<double> traffic_since_s_;                 // sim time of the first traffic step
   double last_itinerary_s_ = -1e18;
   std::string last_itinerary_key_;                        // claim, passage, whom it waits for

@@ -24,6 +24,10 @@ constexpr double kObstacleRange_m = 6.0;       // robots that hold nothing are p
 constexpr double kObstacleMoved_m = 0.25;      // a robot obstacle that moved this far is replanned
 constexpr double kHoldingTolerance_m = 0.15;
 constexpr double kDroppedStill_m = 0.05;       // a waiting robot left out of the plan that moves more is tried again
+// A robot standing with nothing to drive this long is planned around: one that stands a moment
+// between goals is not (planning around every such robot lengthened the ten-robot swarm's goals
+// past its 300 s bound), one waiting at a door's lookout for minutes is.
+constexpr double kStandingLong_s = 15.0;
 
 std::string format_xy(const geometry::Vec2& p) {
   char b[64];
@@ -144,13 +148,18 @@ void BehaviorNode::refresh_robot_obstacles(const geometry::Vec2& me, double now_
     } else if (it->second.claim == "waiting" && it->second.path.size() <= 1) {
       kind = Kind::Waiting;  // soft: planned around only while a route is left beside it
     } else if (it->second.path.empty() && it->second.claim.empty()) {
-      // Standing with nothing to drive (parked, at a lookout, between goals): soft like a waiting
-      // robot. Not planned around, it was driven up to in the open hallway and the brake stalled
-      // the mover ("no progress for 10 s"), for minutes when the other stood long.
+      // Standing with nothing to drive (parked, at a lookout): once it has stood kStandingLong_s,
+      // soft like a waiting robot. Not planned around, it was driven up to in the open hallway and
+      // the brake stalled the mover ("no progress for 10 s"), for minutes when it stood long.
+      auto [at, fresh_stand] = standing_.try_emplace(id, Standing{p, now_s});
+      if (!fresh_stand && (at->second.position - p).norm() > kObstacleMoved_m) at->second = {p, now_s};
+      if (now_s - at->second.since_s < kStandingLong_s) continue;
       kind = Kind::Parked;
     } else {
+      standing_.erase(id);
       continue;  // it drives or waits by the rule: not an obstacle
     }
+    if (kind != Kind::Parked) standing_.erase(id);
     // Described (why) only when planned around: this runs at every tick. Only an obstacle the
     // traffic rule forced (a robot holding nothing in a passage) is hard.
     now[id] = {p, st.radius, "", kind == Kind::Waiting || (kind == Kind::Parked && !forced_obstacles_.count(id)), kind, age};
