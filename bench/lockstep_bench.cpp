@@ -21,7 +21,8 @@
 //   --run-domains K: the lockstep runs take the domains after --domain in turn, K of them (one
 //   after the other, each run's processes gone before the next starts); without it, those up to
 //   169 (bench/run.sh's range), or only the next one above 168.
-//   --dds-extra appends a Cyclone config snippet (e.g. bench/cyclone-lockstep.xml) to
+//   --dds-extra appends a Cyclone config snippet (a file:// URI or inline XML, e.g.
+//   '<Tracing><Verbosity>warning</Verbosity></Tracing>') to
 //   CYCLONEDDS_URI for the lockstep processes, and runs the same cases without it first, for
 //   comparison.
 //   --secure DIR runs the same cases once more with DDS Security: every process on its own
