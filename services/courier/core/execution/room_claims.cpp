@@ -8,10 +8,11 @@
 //
 // Why this cannot deadlock: a robot holds at most one room (the one it is in or bound for), and
 // a robot that waits holds none: it is sent out to a lookout in the hallway (or, not first in
-// line, to a parking spot outside the room it waits for, or it stays where it is, outside). A holder is never waiting, so
-// it only drives to its stop, hands over (bounded by the handover timeouts) and leaves, or is
-// given up (blocked goals, refused handovers): every wait ends. Robots waiting for one room go in
-// the order they began to wait (ties by id), so none waits for ever behind later ones.
+// line, to a parking spot outside the room it waits for, or it stays where it is, outside). A
+// holder is never waiting, so it only drives to its stop, hands over (bounded by the handover
+// timeouts) and leaves, or is given up (blocked goals, refused handovers): every wait ends.
+// Robots waiting for one room go in the order they began to wait (ties by id), so none waits for
+// ever behind later ones.
 #include "services/courier/core/execution/courier_executive.hpp"
 
 #include <algorithm>
