@@ -620,11 +620,18 @@ void CourierExecutive::dispatch(Robot& robot, double now_s) {
     return;
   }
   if (!robot.goal_id.empty() && !robot.goal_answered && now_s - robot.goal_sent_s >= settings_.goal_answer_s) {
-    // The robot's behavior said nothing about its goal (not running, or the goal was lost): the
-    // same as a refusal, so it is sent again and, if that goes on, the place is given up.
-    on_goal(robot.id, robot.goal_id, GoalOutcome::rejected,
-            "no answer from the behavior of " + robot.id + " within " + std::to_string(static_cast<int>(settings_.goal_answer_s)) + " s",
-            now_s);
+    // The robot's behavior said nothing about its goal: the goal was lost (written before the
+    // behavior's reader had matched ours again, e.g. after this process was stopped for a while:
+    // a lockstep world runs 10 s in a few milliseconds), so it is sent again. Not a refusal: that
+    // gave places up while DDS found its peers again. A behavior that is gone leaves the fleet
+    // by its heartbeat, and its jobs are reallocated or stranded there.
+    event(ExecutionEvent::Kind::goal_ended, "goal " + robot.goal_id + " unanswered: no answer from the behavior of " +
+                                                robot.id + " within " +
+                                                std::to_string(static_cast<int>(settings_.goal_answer_s)) +
+                                                " s; sent again");
+    robot.goal_id.clear();
+    robot.goal_place.clear();
+    robot.hold(now_s + settings_.goal_retry_s);
   }
   if (now_s < robot.hold_until_s) return;
   robot.held_for.clear();  // the wait is over

@@ -35,7 +35,7 @@ struct ExecutiveSettings {
   double accepted_timeout_s = 60.0;  // an accepted one not completed by then is asked again (same id)
   double retry_after_s = 20.0;       // a refused handover (nobody present, helper busy) is retried
   double goal_retry_s = 1.0;         // a refused or preempted goal is sent again after this
-  double goal_answer_s = 10.0;       // a goal its behavior never acknowledges counts as refused
+  double goal_answer_s = 10.0;       // a goal its behavior never acknowledges is sent again
   double schedule_retry_s = 1.0;     // a schedule that failed as a whole is tried again after this
   int max_blocked_goals = 2;         // a place unreachable this often, no door to blame: its job fails
   // With several robots, a goal blocked by traffic ("no progress", or a robot named in the way)
