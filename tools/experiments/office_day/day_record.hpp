@@ -33,6 +33,10 @@ struct DayRecord {
   int completed = 0;
   int on_time = 0;             // completed by their deadline
   double on_time_percent = 0;
+  // Jobs any fleet could have finished on time that day (on_time_bound.hpp): the ceiling of
+  // on_time, from the doors as they were and the people's hours.
+  int possible_on_time = 0;
+  double possible_percent = 0;
   double mean_lateness_s = 0;  // over every job; unfinished ones late by the day's end
   double max_lateness_s = 0;
   double distance_m = 0;

@@ -19,6 +19,7 @@
 #include "common/dds/waitset.hpp"
 #include "common/dds/writer.hpp"
 #include "common/process/child_process.hpp"
+#include "tools/experiments/office_day/on_time_bound.hpp"
 
 namespace autonomy::office_day {
 
@@ -121,6 +122,13 @@ DayRecord run_day(const RunSetup& setup, const Strategy& strategy, const DayPlan
   dds::Reader<msg::SimClock> clock_reader(participant, clock_topic);
   dds::Reader<msg::CourierJobStatus> status_reader(participant, status_topic);
   dds::Reader<msg::CourierSchedule> schedule_reader(participant, schedule_topic);
+  // Every change of every door (the ground truth), for the day's on-time bound: the reader keeps
+  // a door's changes until taken, where the topic's own state QoS would keep only the last.
+  dds::Topic<msg::DoorState> door_topic(participant, dds::topics::truth_door);
+  dds::Qos door_qos = dds::make_qos(dds::QosClass::State);
+  dds_qset_history(door_qos.get(), DDS_HISTORY_KEEP_LAST, 256);
+  dds::Reader<msg::DoorState> door_reader(participant, door_topic, door_qos.get());
+  DoorHistory doors;
   dds::Writer<msg::LockstepRegistration> registration(participant, registration_topic);
   dds::Writer<msg::TickAck> ack(participant, ack_topic);
   dds::Writer<msg::CourierCommand> commands(participant, command_topic);
@@ -141,6 +149,8 @@ DayRecord run_day(const RunSetup& setup, const Strategy& strategy, const DayPlan
       if (s.valid) jobs[s.value.job_id] = s.value;
     for (auto& s : schedule_reader.take())
       if (s.valid) ++schedules;
+    for (auto& s : door_reader.take())
+      if (s.valid) doors.observe(s.value.door_id, static_cast<double>(s.value.tick) * step_s, s.value.closed);
   };
   while (sim.running()) {
     if (std::chrono::steady_clock::now() - started > setup.timeout) {
@@ -199,6 +209,15 @@ DayRecord run_day(const RunSetup& setup, const Strategy& strategy, const DayPlan
     outcomes[s.command_id] = o;
   }
   DayRecord r = summarize(plan.commands, outcomes, setup.day_s);
+  // The ceiling over the same jobs (those the courier accepted); the ones no fleet could have
+  // done on time are listed with what stopped them.
+  std::ofstream bound_file(day_file(setup, strategy.id, day, "impossible.txt"));
+  for (const JobBound& b : on_time_bound(plan, doors.closures(), setup.day_s)) {
+    if (!outcomes.count(b.command_id)) continue;
+    if (b.possible) ++r.possible_on_time;
+    else bound_file << b.command_id << ": " << b.why << "\n";
+  }
+  r.possible_percent = r.jobs ? 100.0 * r.possible_on_time / r.jobs : 0;
   r.strategy = strategy.id;
   r.day = day;
   r.seed = seed;

@@ -3,6 +3,7 @@
 #include <google/protobuf/text_format.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -10,6 +11,7 @@
 #include "tools/experiments/office_day/day_plan.hpp"
 #include "tools/experiments/office_day/day_record.hpp"
 #include "tools/experiments/office_day/day_report.hpp"
+#include "tools/experiments/office_day/on_time_bound.hpp"
 
 namespace autonomy::office_day {
 namespace {
@@ -91,7 +93,9 @@ TEST(OfficeDay, DoorHabitsAreScriptedOnMostDaysAndTheFloorsStoryScriptIsGone) {
         EXPECT_NEAR(d.script().events(1).time_s(), 9000, 600);
         EXPECT_EQ(d.script().events(0).angle(), 0.0);
       }
-      if (d.id() == "A-116") EXPECT_TRUE(d.has_random());  // the floor's own random door stays
+      if (d.id() == "A-116") {
+        EXPECT_TRUE(d.has_random());  // the floor's own random door stays
+      }
     }
   }
   EXPECT_GE(closed_a120, 11);  // 80 % of 20 days, give or take
@@ -118,6 +122,98 @@ TEST(OfficeDay, ADayCountsOnTimeJobsAndLatenessUnfinishedOnesLateByTheEnd) {
   EXPECT_DOUBLE_EQ(r.mean_lateness_s, (0 + 300 + 1000) / 3.0);
   EXPECT_DOUBLE_EQ(r.max_lateness_s, 1000);
   EXPECT_EQ(csv_header().substr(0, 13), "strategy,day,");
+}
+
+// The shipped office's day with the given commands only (the day starts at 09:00; rhino drives
+// at 0.9 m/s; Anna hands over in 10 s, the mail tray in 4 s, Sebastian is in from 11:00).
+DayPlan day_with(std::vector<DayCommand> commands) {
+  DayPlan plan = plan_day(shipped_office(), settings(1), 7);
+  for (DayCommand& c : commands) c.deadline = clock_hhmm(9 * 3600 + c.deadline_s);
+  plan.commands = std::move(commands);
+  return plan;
+}
+
+DayCommand command(const std::string& id, const std::string& from, const std::string& to, double at_s, double due_s) {
+  DayCommand c;
+  c.command_id = id;
+  c.object_id = "item-" + id;
+  c.from = from;
+  c.to = to;
+  c.at_s = at_s;
+  c.deadline_s = due_s;
+  return c;
+}
+
+TEST(OnTimeBound, AnIdealCourierDrivesStraightAtTopSpeedAndHandsOverInTheShortestTime) {
+  const std::vector<DayCommand> jobs = {command("tray-anna", "mail-tray", "a114-desk", 1800, 3000),
+                                        command("anna-michael", "a114-desk", "michael-desk", 2400, 3600)};
+  const auto bound = on_time_bound(day_with(jobs), {}, 8 * 3600);
+  ASSERT_EQ(bound.size(), 2u);
+  // mail tray (25, 4.5) -> Anna's desk (19, 2.6): 4 s at the tray, the drive, 10 s with Anna.
+  EXPECT_TRUE(bound[0].possible);
+  EXPECT_NEAR(bound[0].earliest_s, 1800 + 4 + std::hypot(6.0, 1.9) / 0.9 + 10, 1e-6);
+  // Anna's desk (19, 2.6) -> Michael's (13, 2.6): Michael hands over in 5-15 s.
+  EXPECT_TRUE(bound[1].possible);
+  EXPECT_NEAR(bound[1].earliest_s, 2400 + 10 + 6.0 / 0.9 + 5, 1e-6);
+  EXPECT_TRUE(bound[0].why.empty());
+}
+
+TEST(OnTimeBound, AClosedDoorDelaysTheJobUntilItOpensAndAJobIsLostOnlyWhenThatIsPastItsDeadline) {
+  const DayCommand to_anna = command("to-anna", "mail-tray", "a114-desk", 1800, 3000);
+  const DayCommand from_michael = command("from-michael", "michael-desk", "a118-desk", 4000, 9000);
+  // A-114 closed before the robot can get there, open again in time: done as it opens.
+  auto b = on_time_bound(day_with({to_anna}), {{"A-114", 1700, 2500}}, 8 * 3600);
+  EXPECT_TRUE(b[0].possible);
+  EXPECT_NEAR(b[0].earliest_s, 2500 + 10, 1e-6);
+  // Open again after the deadline: lost, and the reason names the door and the times.
+  b = on_time_bound(day_with({to_anna}), {{"A-114", 1700, 4000}}, 8 * 3600);
+  EXPECT_FALSE(b[0].possible);
+  EXPECT_NEAR(b[0].earliest_s, 4010, 1e-6);
+  EXPECT_NE(b[0].why.find("delivery at a114-desk: A-114 closed 09:28-10:06"), std::string::npos) << b[0].why;
+  EXPECT_NE(b[0].why.find("due 09:50"), std::string::npos) << b[0].why;
+  // The pickup's door closed for the rest of the day: never, whatever the deadline.
+  b = on_time_bound(day_with({from_michael}), {{"A-120", 3000}}, 8 * 3600);
+  EXPECT_FALSE(b[0].possible);
+  EXPECT_FALSE(std::isfinite(b[0].earliest_s));
+  EXPECT_NE(b[0].why.find("pickup at michael-desk: A-120 closed 09:50-end of day"), std::string::npos) << b[0].why;
+  // Another door's closing changes nothing.
+  b = on_time_bound(day_with({to_anna}), {{"A-120", 0, 20000}, {"A-118", 1000, 5000}}, 8 * 3600);
+  EXPECT_TRUE(b[0].possible);
+}
+
+TEST(OnTimeBound, APersonAwayUntilAfterTheDeadlineMakesTheJobImpossible) {
+  // Sebastian comes in at 11:00 (7,200 s after 09:00); Wolfram is out 12:00-14:00.
+  const auto b = on_time_bound(day_with({command("early", "mail-tray", "a121-desk", 600, 5400),
+                                         command("late-enough", "mail-tray", "a121-desk", 600, 7300),
+                                         command("lunch", "a114-desk", "a118-desk", 10900, 14000)}),
+                               {}, 8 * 3600);
+  EXPECT_FALSE(b[0].possible);
+  EXPECT_NE(b[0].why.find("Sebastian away"), std::string::npos) << b[0].why;
+  EXPECT_TRUE(b[1].possible);
+  EXPECT_NEAR(b[1].earliest_s, 7200 + 15, 1e-6);
+  EXPECT_FALSE(b[2].possible);
+  EXPECT_NEAR(b[2].earliest_s, 5 * 3600 + 5, 1e-6);  // Wolfram back at 14:00, 5 s at the least
+}
+
+TEST(OnTimeBound, DoorSamplesFoldIntoClosuresTheLastOneOpenAtTheEnd) {
+  DoorHistory h;
+  h.observe("A-116", 0, false);
+  h.observe("A-116", 100, true);
+  h.observe("A-116", 150, true);  // the leaf still moving: the same closure
+  h.observe("A-113", 120, true);
+  h.observe("A-116", 300, false);
+  h.observe("A-116", 400, true);
+  const auto c = h.closures();
+  ASSERT_EQ(c.size(), 3u);
+  EXPECT_EQ(c[0].door, "A-116");
+  EXPECT_DOUBLE_EQ(c[0].from_s, 100);
+  EXPECT_DOUBLE_EQ(c[0].to_s, 300);
+  std::set<std::pair<std::string, double>> open_ended;
+  for (std::size_t i = 1; i < c.size(); ++i) {
+    EXPECT_FALSE(std::isfinite(c[i].to_s));
+    open_ended.insert({c[i].door, c[i].from_s});
+  }
+  EXPECT_EQ(open_ended, (std::set<std::pair<std::string, double>>{{"A-113", 120}, {"A-116", 400}}));
 }
 
 TEST(OfficeDay, TheReportTestsTheFindingsBetweenStrategies) {
