@@ -302,9 +302,14 @@ class CourierExecutive {
   // for whom.
   // `waited`: the room it waited for until this step. room_claims.cpp.
   bool wait_for_room(Robot& robot, const PlanStop& stop, const std::string& waited, double now_s);
-  // The robot other than `robot` that holds `room`: bound for a place in it, handing over in it,
-  // or inside its area and not parked. nullptr when the room is free.
-  const Robot* room_holder(const Robot& robot, const std::string& room) const;
+  // The robot other than `robot` that holds `claim` (a room, or a place in the hallway): bound
+  // for a place in it, handing over in it, or inside its area (on the place) and not parked.
+  // nullptr when it is free.
+  const Robot* room_holder(const Robot& robot, const std::string& claim) const;
+  // What a robot bound for `place` claims: its room when a door leads into it, else the place
+  // itself (a handover place in the hallway); "" for a place the floor does not have.
+  std::string claim_of(const std::string& place) const;
+  bool within_claim(const std::string& claim, const std::string& place) const;
   // When `robot` may set out, as the scheduler should see it: now, or while it waits for a room,
   // when the robot holding it is expected to have left (the end of its planned stops there).
   double free_to_go_s(const Robot& robot, double now_s) const;

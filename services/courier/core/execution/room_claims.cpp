@@ -13,6 +13,12 @@
 // timeouts) and leaves, or is given up (blocked goals, refused handovers): every wait ends.
 // Robots waiting for one room go in the order they began to wait (ties by id), so none waits for
 // ever behind later ones.
+//
+// A handover place in no room (a desk or a station in the hallway) is claimed the same way, by
+// itself: one robot bound for it, handing over at it or standing on it; the next waits where it
+// is (or parked, when not first in line). A robot standing on such a place while it waits holds
+// it no more, so the rule stays free of cycles: a robot on a hallway place waiting for a room
+// does not keep the robot in that room from coming out to the place.
 #include "services/courier/core/execution/courier_executive.hpp"
 
 #include <algorithm>
@@ -25,17 +31,34 @@ namespace {
 constexpr char kWaitingPrefix[] = "waiting for ";
 }  // namespace
 
-const CourierExecutive::Robot* CourierExecutive::room_holder(const Robot& robot, const std::string& room) const {
-  const auto area = floor_.room_areas.find(room);
-  const auto in_room = [&](const std::string& place) {
-    const FloorPlace* p = floor_.place(place);
-    return p && p->room == room;
-  };
+std::string CourierExecutive::claim_of(const std::string& place) const {
+  const FloorPlace* p = floor_.place(place);
+  if (!p) return {};
+  return floor_.door_to(place) ? p->room : place;
+}
+
+bool CourierExecutive::within_claim(const std::string& claim, const std::string& place) const {
+  if (place.empty()) return false;
+  if (place == claim) return true;
+  const FloorPlace* p = floor_.place(place);
+  return p && !p->room.empty() && p->room == claim && floor_.door_of_room.count(claim);
+}
+
+const CourierExecutive::Robot* CourierExecutive::room_holder(const Robot& robot, const std::string& claim) const {
+  const auto area = floor_.room_areas.find(claim);
+  const FloorPlace* spot_claimed = floor_.door_of_room.count(claim) ? nullptr : floor_.place(claim);
   for (const auto& [id, other] : robots_) {
     if (id == robot.id || !other.pose_known) continue;
-    if (in_room(other.goal_place)) return &other;
-    if (other.handover && in_room(other.handover->order.place)) return &other;
-    if (area == floor_.room_areas.end() || !area->second.contains(other.x, other.y)) continue;
+    if (within_claim(claim, other.goal_place)) return &other;
+    if (other.handover && within_claim(claim, other.handover->order.place)) return &other;
+    // Standing on a hallway place holds it unless the robot waits (for a room elsewhere): then
+    // it is on its way out of everybody's claim. A waiting robot inside a room still holds the
+    // room until it is out (it leaves for the lookout, outside).
+    const bool on_it = spot_claimed ? other.waiting_for_room.empty() &&
+                                          std::hypot(other.x - spot_claimed->x, other.y - spot_claimed->y) <=
+                                              spot_claimed->radius
+                                    : area != floor_.room_areas.end() && area->second.contains(other.x, other.y);
+    if (!on_it) continue;
     bool parked = other.at_place == kHomePlace;
     for (const auto& spot : floor_.parking)
       parked = parked || (spot.name == other.parking && std::hypot(other.x - spot.x, other.y - spot.y) <= kParkedM);
@@ -56,13 +79,12 @@ bool CourierExecutive::wait_for_room(Robot& robot, const PlanStop& stop, const s
     return false;
   };
   if (robots_.size() < 2) return go_in();
-  const FloorPlace* place = floor_.place(stop.place);
   const auto door = floor_.door_to(stop.place);
-  if (!place || !door) return go_in();  // the hallway, or a place in no room
-  const std::string& room = place->room;
+  const std::string room = claim_of(stop.place);  // the room, or the place itself in the hallway
+  if (room.empty()) return go_in();               // not a place of the floor
   // Already inside (a second stop in the room): leaving to wait would only cost time.
   const auto area = floor_.room_areas.find(room);
-  if (area != floor_.room_areas.end() && area->second.contains(robot.x, robot.y)) return go_in();
+  if (door && area != floor_.room_areas.end() && area->second.contains(robot.x, robot.y)) return go_in();
 
   const Robot* holder = room_holder(robot, room);
   // Robots that began to wait for the room before this one go first.
@@ -97,9 +119,10 @@ bool CourierExecutive::wait_for_room(Robot& robot, const PlanStop& stop, const s
   }
   // The first in line waits beside the door; the others park, out of the hallway (the lookout
   // is taken, and a robot standing in the hallway is in everybody's way), or, with no spot to
-  // park at, stop where they are.
-  if (!ahead && go_to_lookout(robot, *door, {}, now_s)) return true;
-  if (!floor_.parking.empty()) {
+  // park at, stop where they are. The first in line for a place in the hallway stops where it is:
+  // the wait is one handover.
+  if (!ahead && door && go_to_lookout(robot, *door, {}, now_s)) return true;
+  if (!floor_.parking.empty() && (door || ahead)) {
     park(robot, now_s, "waiting for " + room);
     return true;
   }
@@ -123,8 +146,7 @@ double CourierExecutive::free_to_go_s(const Robot& robot, double now_s) const {
   double leaves = now_s;
   for (const PlanStop& stop : holder->route) {
     if (!still_needed(*holder, stop)) continue;
-    const FloorPlace* p = floor_.place(stop.place);
-    if (!p || p->room != robot.waiting_for_room) break;
+    if (!within_claim(robot.waiting_for_room, stop.place)) break;
     leaves = std::max(leaves, stop.finish_s);
   }
   // Leaving the room and clearing its doorway takes a little while in any case.

@@ -224,5 +224,76 @@ TEST_F(RoomClaimsTest, ARobotParkedInARoomDoesNotHoldItOneDrivingToItsSpotDoes) 
   EXPECT_EQ(exec_.job("job-1")->reason, "");
 }
 
+TEST_F(RoomClaimsTest, APlaceInTheHallwayTakesOneRobotAtATimeTheNextWaitsWhereItIs) {
+  exec_.add_robot("rhino", 3);
+  exec_.add_robot("rhino2", 3);
+  exec_.add_robot("rhino3", 3);
+  exec_.on_pose("rhino", 6.0, 8.0);
+  exec_.on_pose("rhino2", 12.0, 8.0);
+  exec_.on_pose("rhino3", 14.0, 8.0);
+  scheduler_.prefer = {{"job-1", "rhino"}, {"job-2", "rhino2"}, {"job-3", "rhino3"}};
+  exec_.add_job(delivery("job-1", "red", "hallway-west", "a114-desk"), now_);
+  exec_.add_job(delivery("job-2", "blue", "hallway-west", "meeting-table"), now_);
+  exec_.add_job(delivery("job-3", "green", "hallway-west", "librarian-desk"), now_);
+  step();
+  // rhino drives to the place; rhino2, first in line, stops where it is (no lookout in the
+  // hallway, the wait is one handover); rhino3, second in line, parks.
+  EXPECT_TRUE(bound_for("rhino", "hallway-west"));
+  EXPECT_FALSE(bound_for("rhino2", "hallway-west"));
+  EXPECT_FALSE(bound_for("rhino3", "hallway-west"));
+  EXPECT_EQ(goals_.count("rhino2"), 0u);
+  ASSERT_EQ(goals_.count("rhino3"), 1u);
+  EXPECT_NE(goals_.at("rhino3").goal_id.find("rhino3/park/"), std::string::npos) << goals_.at("rhino3").goal_id;
+  EXPECT_EQ(exec_.job("job-2")->reason, "waiting for rhino to clear hallway-west");
+  EXPECT_EQ(exec_.job("job-3")->reason, "waiting for rhino to clear hallway-west");  // the holder named
+
+  // rhino loads and leaves: on its way but still on the place, it holds it; off it, rhino2 goes.
+  reach("rhino", 1.5, 8.0);
+  complete("rhino");
+  EXPECT_TRUE(bound_for("rhino", "a114-desk"));
+  now_ += 2;
+  step();
+  EXPECT_FALSE(bound_for("rhino2", "hallway-west"));
+  exec_.on_pose("rhino", 4.0, 8.0);
+  now_ += 2;
+  step();
+  EXPECT_TRUE(bound_for("rhino2", "hallway-west"));
+  EXPECT_EQ(exec_.job("job-2")->reason, "");
+  EXPECT_FALSE(bound_for("rhino3", "hallway-west"));
+  EXPECT_EQ(exec_.job("job-3")->reason, "waiting for rhino2 to clear hallway-west");
+
+  // rhino2 loads and leaves: rhino3's turn.
+  reach("rhino2", 1.5, 8.0);
+  complete("rhino2");
+  exec_.on_pose("rhino2", 5.0, 8.0);
+  now_ += 2;
+  step();
+  EXPECT_TRUE(bound_for("rhino3", "hallway-west"));
+  EXPECT_EQ(exec_.job("job-3")->reason, "");
+}
+
+TEST_F(RoomClaimsTest, ARobotWaitingOnAHallwayPlaceDoesNotHoldItAgainstTheRobotItWaitsFor) {
+  // rhino3 is in the meeting room and goes to the hallway place next; rhino loads on that place
+  // and then needs the meeting room. Holding the place while it waits would be a cycle.
+  exec_.add_robot("rhino", 3);
+  exec_.add_robot("rhino3", 3);
+  exec_.on_pose("rhino", 1.5, 8.0);
+  exec_.on_pose("rhino3", 4.0, 10.7);
+  scheduler_.prefer = {{"job-1", "rhino"}, {"job-2", "rhino3"}};
+  exec_.add_job(delivery("job-1", "red", "hallway-west", "meeting-table"), now_);
+  exec_.add_job(delivery("job-2", "blue", "meeting-table", "hallway-west"), now_);
+  step();
+  ASSERT_EQ(handovers_.count("rhino"), 1u);
+  ASSERT_EQ(handovers_.count("rhino3"), 1u);
+  complete("rhino");
+  complete("rhino3");
+  now_ += 1;
+  step();
+  // rhino, still on the place, waits for the room; rhino3 is sent out to the place all the same.
+  EXPECT_FALSE(bound_for("rhino", "meeting-table"));
+  EXPECT_EQ(exec_.job("job-1")->reason, "waiting for rhino3 to clear A-111");
+  EXPECT_TRUE(bound_for("rhino3", "hallway-west"));
+}
+
 }  // namespace
 }  // namespace autonomy::courier
