@@ -1,8 +1,12 @@
 // Large-neighbourhood search (Shaw 1998; for scheduling with precedence relaxation: Godard,
 // Laborie and Nuijten 2005): anytime improvement of the best plan for problems too big to prove.
 //
-//  - The first solve() is the chronological engine's (complete): its plan, or its proof that
-//    there is none. The engine then remembers the plan's order on every timeline (the tokens
+//  - The first solve() on a makespan problem is the best of a few greedy dives by active
+//    schedule generation (active_schedule.hpp; the chronological engine's earliest-start first
+//    plan is far worse, abz5 2322 against 1564, optimum 1234). When the first dive meets a dead
+//    end, and on problems without a makespan objective, it is the chronological engine's
+//    (complete): its plan, or its proof that there is none (explained as with that engine).
+//    The engine then remembers the plan's order on every timeline (the tokens
 //    that exist before any decision, problem facts and their forced slaves, named by their ids,
 //    which the anytime loop's undo to the root keeps).
 //  - A later solve() (the loop has tightened the makespan bound below the remembered plan)
@@ -10,8 +14,8 @@
 //    starting in a window of the plan's time, those of a few random timelines, or a random
 //    sample). The other tokens keep their order on their timelines (each consecutive kept pair
 //    is ordered, a kOrder decision); the relaxed ones, the slaves and every other choice are
-//    left to the chronological engine, every other neighbourhood to iterative sampling, under
-//    a small decision budget. A plan found there is an
+//    left to the chronological engine, every other neighbourhood to greedy dives drawn around
+//    the active schedule rule, under a small decision budget. A plan found there is an
 //    improvement (the bound is in the network): it is returned and remembered. Else the next
 //    neighbourhood is tried.
 //  - The neighbourhood's size adapts: a sub-search that exhausts its neighbourhood (nothing
@@ -27,6 +31,8 @@
 // Resource orderings and parameter choices are not remembered: the sub-search makes them again.
 #include "large_neighbourhood.hpp"
 
+#include "active_schedule.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -40,13 +46,13 @@ constexpr double kMinFraction = 0.05, kGrowth = 1.15;
 constexpr std::size_t kFullSearchShare = 4;  // neighbourhood effort per full-search decision
 constexpr std::size_t kFirstFullBudget = 1000;
 
+
 class LargeNeighbourhood final : public SearchEngine {
  public:
   explicit LargeNeighbourhood(const EngineOptions& options)
       : options_(options),
         rng_(options.seed),
-        inner_(make_search_engine("chronological", options)),
-        sampler_(make_search_engine("sampling", options)) {}
+        inner_(make_search_engine("chronological", options)) {}
   std::string name() const override { return "lns"; }
   SearchOutcome solve(TokenNetwork& net, const Termination& term) override;
 
@@ -129,9 +135,54 @@ class LargeNeighbourhood final : public SearchEngine {
     return true;
   }
 
+  // The best of first_dives greedy dives by active schedule generation (active_schedule.hpp),
+  // left in the network. False when the first dive meets a dead end (or the budget ends): the
+  // chronological engine then finds the first plan or proves there is none, as without dives.
+  bool first_plan_by_dives(TokenNetwork& net, const Termination& term, SearchStatistics& stats) {
+    const FlawSelector rule = active_schedule_selector(), drawn = active_schedule_selector(&rng_);
+    const TokenNetwork::Mark start = net.mark();
+    std::vector<Decision> best, dive;
+    Time best_makespan = kInfinity;
+    for (std::size_t k = 0; k < options_.first_dives; ++k) {
+      if (!greedy_dive(net, k == 0 ? rule : drawn, term, stats, &dive)) {
+        if (k == 0) return false;
+        continue;
+      }
+      Time makespan = 0;
+      for (const Token& t : net.tokens())
+        if (t.state == Token::State::kPlaced)
+          makespan = std::max(makespan, net.temporal().earliest(t.end));
+      if (makespan < best_makespan) {
+        best_makespan = makespan;
+        best.swap(dive);
+      }
+      net.undo_to(start);
+    }
+    // The dives are deterministic in the network's state: the best one's decisions apply again.
+    for (const Decision& d : best) {
+      ++stats.decisions;
+      if (!net.apply(d)) {
+        net.undo_to(start);
+        return false;
+      }
+    }
+    return true;
+  }
+
+  // Greedy dives with the drawn rule until one finds a plan (under the bound: a better one) or
+  // the neighbourhood's budget is spent. A dead end ends a dive, not the neighbourhood.
+  SearchStatus dives(TokenNetwork& net, const Termination& term, SearchStatistics& stats) {
+    const std::size_t start = stats.decisions;
+    const FlawSelector drawn = active_schedule_selector(&rng_);
+    while (stats.decisions - start < options_.neighbourhood_decisions &&
+           !term.should_stop(stats.decisions))
+      if (greedy_dive(net, drawn, term, stats, nullptr)) return SearchStatus::kPlanFound;
+    return SearchStatus::kOutOfBudget;
+  }
+
   EngineOptions options_;
   std::mt19937 rng_;
-  std::unique_ptr<SearchEngine> inner_, sampler_;
+  std::unique_ptr<SearchEngine> inner_;
   std::size_t neighbourhoods_ = 0;
   std::optional<Remembered> best_;
   double fraction_ = kStartFraction;
@@ -168,6 +219,11 @@ SearchOutcome LargeNeighbourhood::solve(TokenNetwork& net, const Termination& te
   const bool fresh = !best_ || best_->root_tokens != root.tokens ||
                      best_->sequences.size() != net.timelines().size();
   if (fresh) {
+    if (net.problem().objective == pb::Problem::MAKESPAN && options_.first_dives > 0 &&
+        first_plan_by_dives(net, term, stats)) {
+      remember(net, root.tokens);
+      return finish(SearchStatus::kPlanFound);
+    }
     const SearchStatus s = run_inner(static_cast<std::size_t>(-1), *inner_);
     if (s == SearchStatus::kPlanFound) remember(net, root.tokens);
     return finish(s);
@@ -191,11 +247,12 @@ SearchOutcome LargeNeighbourhood::solve(TokenNetwork& net, const Termination& te
     const std::vector<char> relaxed = neighbourhood();
     const std::size_t before = stats.decisions;
     SearchStatus s = SearchStatus::kExhausted;
-    // Every other neighbourhood is re-planned by iterative sampling: the chronological
-    // engine's fixed option order gives the same plan for the same neighbourhood.
+    // Every other neighbourhood is re-planned by greedy dives drawn around the active schedule
+    // rule: the chronological engine's fixed option order gives the same plan for the same
+    // neighbourhood.
     const bool sample = neighbourhoods_++ % 2 == 1;
     if (keep_orders(net, relaxed, stats))
-      s = run_inner(options_.neighbourhood_decisions, sample ? *sampler_ : *inner_);
+      s = sample ? dives(net, term, stats) : run_inner(options_.neighbourhood_decisions, *inner_);
     since_full_ += stats.decisions - before;
     if (s == SearchStatus::kPlanFound) {
       remember(net, root.tokens);
@@ -203,7 +260,7 @@ SearchOutcome LargeNeighbourhood::solve(TokenNetwork& net, const Termination& te
     }
     net.undo_to(root);
     // Nothing better in this neighbourhood: look wider; too wide to search: look narrower.
-    // (Sampling never exhausts anything: only the chronological sub-searches tell.)
+    // (Dives never exhaust anything: only the chronological sub-searches tell.)
     if (s == SearchStatus::kExhausted)
       fraction_ = std::min(1.0, fraction_ * kGrowth);
     else if (!sample)

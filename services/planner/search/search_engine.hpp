@@ -73,6 +73,10 @@ struct EngineOptions {
   std::size_t restarts = 1000;    // iterative sampling: probes per solve()
   // Large-neighbourhood search: the decision budget of each neighbourhood's re-planning.
   std::size_t neighbourhood_decisions = 300;
+  // Large-neighbourhood search on a makespan problem: greedy dives by active schedule
+  // generation (active_schedule.hpp) for the first plan, the best kept; 0: the chronological
+  // engine's first plan.
+  std::size_t first_dives = 8;
   // Iterative repair reports each decision it applies, why it took that option (the memory of
   // the previous plan's choice, the heuristic's order, or a repair of a culprit) and whether
   // it applied (its propagation succeeded).
@@ -85,9 +89,10 @@ struct EngineOptions {
 // iterative sampling with seeded restarts; incomplete), "repair" (iterative repair: at a dead
 // end one culprit decision changes and the rest of the plan is re-applied; incomplete, its
 // backtracks count the repairs; iterative_repair.cpp) or "lns" (large-neighbourhood search:
-// the chronological engine's first plan, then parts of the best plan relaxed and re-planned
-// (by the chronological engine or by iterative sampling) under a small budget, anytime; complete through full searches with doubling budgets;
-// large_neighbourhood.cpp). Null for an unknown name.
+// a greedy first plan (the best of a few active-schedule dives on a makespan problem, else the
+// chronological engine's), then parts of the best plan relaxed and re-planned (by the
+// chronological engine or by greedy dives) under a small budget, anytime; complete through
+// full searches with doubling budgets; large_neighbourhood.cpp). Null for an unknown name.
 std::unique_ptr<SearchEngine> make_search_engine(const std::string& name,
                                                  const EngineOptions& options = {});
 std::vector<std::string> search_engine_names();

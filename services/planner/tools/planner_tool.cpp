@@ -31,6 +31,10 @@ int main(int argc, char** argv) {
   unsigned seed = 1;
   app.add_option("--engine", engine, "search engine: " + engines)->capture_default_str();
   app.add_option("--seed", seed, "seed of the sampling, repair and lns engines")->capture_default_str();
+  std::size_t first_dives = EngineOptions{}.first_dives;
+  app.add_option("--first-dives", first_dives,
+                 "lns: greedy dives for the first plan of a makespan problem (0: chronological)")
+      ->capture_default_str();
   app.add_option("--seconds", seconds, "time budget (0: none)");
   app.add_option("--max-decisions", max_decisions, "decision budget (0: none)");
   app.add_option("--svg", svg_file, "write a Gantt chart of the plan here");
@@ -72,6 +76,7 @@ int main(int argc, char** argv) {
   PlanningOptions options;
   options.engine = engine;
   options.engine_options.seed = seed;
+  options.engine_options.first_dives = first_dives;
   options.not_first_not_last = not_first_not_last;
   if (max_decisions) options.termination.max_decisions = max_decisions;
   const auto started = std::chrono::steady_clock::now();

@@ -1,7 +1,7 @@
-// The large-neighbourhood search engine: it starts from the chronological engine's first plan
-// and improves on it, every plan it hands over is valid, the same seed runs the same search,
-// its proofs come only from exhausted full searches, and the budget and the stop predicate end
-// it with the best plan so far.
+// The large-neighbourhood search engine: it starts from a greedy first plan (the chronological
+// engine's without a makespan objective) and improves on it, every plan it hands over is
+// valid, the same seed runs the same search, its proofs come only from exhausted full
+// searches, and the budget and the stop predicate end it with the best plan so far.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -30,7 +30,8 @@ ShopRun plan_shop(const ShippedShop& shop, const std::string& engine, std::size_
 }
 
 // la01 (10 jobs x 5 machines, optimum 666): within 20,000 decisions the chronological engine
-// ends at 773 unproved; the neighbourhoods reach 666 and the full search proves it.
+// ends at 773 unproved; lns starts from a better first plan (greedy dives by active schedule
+// generation), the neighbourhoods reach 666 and the full search proves it.
 TEST(LnsEngine, ImprovesOnTheFirstPlanAndEveryPlanIsValid) {
   auto la01 = load_shipped_jobshop("la01");
   ASSERT_TRUE(la01);
@@ -38,8 +39,8 @@ TEST(LnsEngine, ImprovesOnTheFirstPlanAndEveryPlanIsValid) {
   ShopRun lns = plan_shop(*la01, "lns", 20000);
   ASSERT_TRUE(chrono.result.plan && lns.result.plan);
   ASSERT_GE(lns.improvements.size(), 2u);
-  // The same first plan (the chronological engine's), then strictly better ones.
-  EXPECT_EQ(lns.improvements.front().makespan, chrono.improvements.front().makespan);
+  // A better first plan than the chronological engine's, then strictly better ones.
+  EXPECT_LT(lns.improvements.front().makespan, chrono.improvements.front().makespan);
   for (std::size_t i = 1; i < lns.improvements.size(); ++i)
     EXPECT_LT(lns.improvements[i].makespan, lns.improvements[i - 1].makespan) << i;
   for (const FlexiblePlan& p : lns.improvements)
