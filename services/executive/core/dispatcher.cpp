@@ -116,6 +116,10 @@ std::vector<DispatchEvent> Dispatcher::step(Time now) {
   return events;
 }
 
+void Dispatcher::start() {
+  pending_ = step(at_[0]);
+}
+
 bool Dispatcher::finished() const {
   return std::all_of(done_.begin(), done_.end(), [](bool b) { return b; });
 }

@@ -34,6 +34,12 @@ class Dispatcher {
   // its earliest; a timeline's last end at its latest, the horizon at most);
   // reports windows that closed. Returns the events of this tick in execution order.
   std::vector<DispatchEvent> step(Time now);
+  // The plan's first step, at its origin, whenever the plan is started: what is due at the
+  // origin (the starts of its initial values, tokens pinned to it) executes at the origin. A
+  // plan that arrives after its origin (paced time goes on while the planner searches) would
+  // otherwise find those timepoints past their bound at the first tick it is stepped, and break.
+  // Call after set_observed(); the events are returned by the next step().
+  void start();
   // An observed time for a timepoint (a token end seen in telemetry, a confirmed command).
   // Events are appended to the next step's result; an observation outside the window is a
   // violation, and the time is still recorded (it is what happened).

@@ -53,6 +53,7 @@ std::unique_ptr<Executive> Executive::create(planner::FlexiblePlan plan, Command
     const CommandRule* r = commands.rule_for(tokens[i]);
     if (r && !r->end_mode.empty()) dispatcher.set_observed(i, false, true);
   }
+  dispatcher.start();
   return std::unique_ptr<Executive>(new Executive(std::move(dispatcher), std::move(commands),
                                                   std::move(faults), std::move(options)));
 }

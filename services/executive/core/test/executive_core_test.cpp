@@ -660,6 +660,31 @@ TEST(Executive, APlanNamingAMissingTokenIsRefusedWithTheReason) {
   EXPECT_NE(error.find("names token 99 of"), std::string::npos) << error;
 }
 
+TEST(Executive, APlanStartedAfterItsOriginStartsItsInitialValuesAtTheOrigin) {
+  // Paced time goes on while the planner searches: the plan for origin 0 is first stepped at 4.
+  // Its initial values start at the origin (their window is [0, 0]), not at 4 and not never.
+  auto exec = ds1_executive();
+  ToySpacecraft sc;
+  Tick first = exec->step(sc.observe(4));
+  std::vector<std::string> started;
+  for (const auto& e : first.events) started.push_back(e.kind + " " + e.text + "@" + std::to_string(e.time));
+  EXPECT_EQ(started, (std::vector<std::string>{"started sc.camera == ready() #0@0", "started sc.engine == off() #3@0"}));
+  EXPECT_FALSE(exec->aborted());
+  EXPECT_EQ(exec->dispatcher().executed_at(0, true), 0);
+  sc.receive(first.commands, 4);
+  bool violation = false;
+  for (Time t = 5; t <= 100; ++t) {
+    for (const DeviceCommand& c : sc.to_confirm) exec->confirm(c.device, c.command);
+    sc.to_confirm.clear();
+    Tick tick = exec->step(sc.observe(t));
+    sc.receive(tick.commands, t);
+    for (const auto& e : tick.events) violation = violation || e.kind == "violation";
+  }
+  EXPECT_FALSE(violation);
+  EXPECT_EQ(sent(sc), (std::vector<std::string>{"camera take_image@10", "ips thrust@30", "ips standby@40"}));
+  EXPECT_TRUE(exec->finished());
+}
+
 TEST(Executive, WithoutFaultsCommandsThePlanInOrderAndFinishes) {
   auto exec = ds1_executive();
   ToySpacecraft sc;
