@@ -5,7 +5,7 @@
 # Environment: BUILD_DIR (default <repo>/build-bench), BENCH_DOMAIN (default 160; the lockstep
 # bench uses the next few ids too, up to 169; paced_sim_bench uses BENCH_DOMAIN + 10, i.e. 170;
 # experiment_bench.sh uses BENCH_DOMAIN + 20 to + 23, the runner's four jobs; executive_replan_bench
-# BENCH_DOMAIN + 24, office_day_bench.sh BENCH_DOMAIN + 25),
+# BENCH_DOMAIN + 24 (lockstep) and + 46 (--paced: 206 by default), office_day_bench.sh BENCH_DOMAIN + 25),
 # CYCLONEDDS_URI (default: the loopback profile),
 # LOCKSTEP_DDS_EXTRA (a Cyclone config snippet to compare against the default, optional).
 # The figures are noisy on a shared 2-core machine: read the ratios measured in the same run.
@@ -59,6 +59,8 @@ if [[ ${#quick[@]} -gt 0 ]]; then planner_quick=(--jobshop-seconds 5 --repeats 1
   --minizinc-model "$repo/bench/jobshop.mzn" "${planner_quick[@]}"
 "$build/bin/executive_bench" "${quick[@]}"
 "$build/bin/executive_replan_bench" --domain "$((domain + 24))" "${quick[@]}"
+# Issue 28: fault -> new plan executing in paced time at ~1,000 tokens, beside ~85 tokens.
+"$build/bin/executive_replan_bench" --paced --domain "$((domain + 46))" "${quick[@]}"
 if [[ ${#quick[@]} -gt 0 ]]; then pairs=(--pairs 5); else pairs=(); fi
 # path_bench writes OMPL benchmark logs and a summary: into the build folder, not over docs/.
 "$build/bin/path_bench" "${pairs[@]}" --out "$build"
