@@ -175,6 +175,7 @@ class CourierSearch {
     masks_ok_ = places_.size() <= 64;
     sequence_ = std::move(sequence);
     build_sequence_bound();
+    if (sequence_) prepare_sequence_completion();
     for (std::size_t i = 0; i < jobs_.size(); ++i) by_deadline_.push_back(static_cast<int>(i));
     std::sort(by_deadline_.begin(), by_deadline_.end(), [&](int x, int y) {
       return sim_.job(jobs_[static_cast<std::size_t>(x)]).deadline <
@@ -210,6 +211,8 @@ class CourierSearch {
   bool out_of_memory() const { return out_of_memory_; }
   // Beam search instead, for an incumbent: each layer keeps only its `width` labels of the best
   // lower bound. Its result is a complete route (if found), never proved optimal.
+  // The beam ranks by the bound without the delivery-sequence part: with it, its route was worse
+  // on some offices (one loose 16-job office of 20 then stopped at the label cap).
   void set_beam(std::size_t width) { beam_ = width; }
 
  private:
@@ -301,6 +304,14 @@ class CourierSearch {
     sequence_ = std::make_shared<const DeliverySequenceBound>(del_place, del_dur, travel,
                                                               static_cast<int>(places_.size()));
   }
+  void prepare_sequence_completion() {
+    for (std::size_t i = 0; i < jobs_.size(); ++i) {
+      const LocalJob& lj = local_jobs_[i];
+      if (lj.pick_place >= 0) picks_at_[lj.pick_place] |= 1u << i;
+      pick_dur_[i] = data(i).pick_dur;
+      del_place_bit_[i] = 1ull << lj.del_place;
+    }
+  }
 
   // The delivery-sequence bound on the completion still to come from s (r jobs left, from now):
   // the table's deliveries from where s stands, plus the pickups left, each its handover and its
@@ -308,29 +319,29 @@ class CourierSearch {
   // none where a delivery is left or where s stands, since a delivery's visit or the visit under
   // way may do it), the largest at weight 1, the next at 2, ... (each is done no later than its
   // own delivery, and the deliveries take distinct positions).
-  double sequence_completion(const Label& s, int r) {
+  double sequence_completion(const Label& s, int r) const {
     const std::uint32_t left = all_ & ~s.delivered;
     const std::uint32_t to_pick = left & ~s.picked;
     const int here = local_[static_cast<std::size_t>(s.loc)];
     std::uint64_t delivery_places = 0;
-    for (std::uint32_t b = left; b; b &= b - 1)
-      delivery_places |= 1ull << local_jobs_[__builtin_ctz(b)].del_place;
-    for (std::uint32_t b = to_pick; b; b &= b - 1)
-      pickups_at_[local_jobs_[__builtin_ctz(b)].pick_place] = 0;
-    for (std::uint32_t b = to_pick; b; b &= b - 1)
-      ++pickups_at_[local_jobs_[__builtin_ctz(b)].pick_place];
+    for (std::uint32_t b = left; b; b &= b - 1) delivery_places |= del_place_bit_[__builtin_ctz(b)];
+    // Sum of x_k times its weight (1 for the largest, ...): the sum of the x plus, over each
+    // pair, the smaller one (no sort).
+    double x[kMaxJobsPerCourier];
     int u = 0;
     for (std::uint32_t b = to_pick; b; b &= b - 1) {
       const int i = __builtin_ctz(b);
       const int place = local_jobs_[i].pick_place;
-      double x = data(static_cast<std::size_t>(i)).pick_dur;
+      x[u] = pick_dur_[i];
       if (place != here && !(delivery_places >> place & 1ull))
-        x += sequence_->detour(place) / pickups_at_[place];
-      pickup_cost_[u++] = x;
+        x[u] += sequence_->detour(place) / __builtin_popcount(picks_at_[place] & to_pick);
+      ++u;
     }
-    sort_bound_values(pickup_cost_, u);  // ascending: the smallest at weight u
     double pickups = 0.0;
-    for (int k = 0; k < u; ++k) pickups += (u - k) * pickup_cost_[k];
+    for (int i = 0; i < u; ++i) {
+      pickups += x[i];
+      for (int j = i + 1; j < u; ++j) pickups += std::min(x[i], x[j]);
+    }
     return r * (s.t - rs_.problem().now_s) + sequence_->cost(left, here) + pickups;
   }
 
@@ -407,7 +418,7 @@ class CourierSearch {
       if (compare(partial, *cut_at) >= 0) return false;
       // Then the delivery-sequence bound (cut 19 % of the labels expanded on the 30 loose 12-job
       // offices), only for the labels the work part leaves (about a third).
-      if (sequence_) {
+      if (sequence_ && !beam_) {
         sequence_value_ = sequence_completion(s, r);
         partial.completion_s = s.cost.completion_s + sequence_value_;
         if (compare(partial, *cut_at) >= 0) return false;
@@ -448,7 +459,7 @@ class CourierSearch {
       if (next_slot < r && slot_[next_slot] <= due_[k] + 1e-9) ++next_slot, ++on_time;
     lb.late_jobs += std::max(late_alone, r - on_time);
     lb.lateness_s += std::max(lateness_alone, lateness_sorted);
-    if (sequence_)
+    if (sequence_ && !beam_)
       completion = std::max(completion, cut_at ? sequence_value_ : sequence_completion(s, r));
     lb.completion_s += completion;
     return true;
@@ -798,8 +809,11 @@ class CourierSearch {
   bool masks_ok_ = true;  // at most 64 places (else no travel is charged)
   std::vector<int> by_deadline_;
   std::shared_ptr<const DeliverySequenceBound> sequence_;  // null: not built (job count)
-  int pickups_at_[64] = {};  // scratch of sequence_completion, per place
-  double pickup_cost_[kMaxJobsPerCourier] = {};
+  // For sequence_completion: per place the jobs picked up there, per job its pickup handover
+  // and its delivery place as a place mask.
+  std::uint32_t picks_at_[64] = {};
+  double pick_dur_[kMaxJobsPerCourier] = {};
+  std::uint64_t del_place_bit_[kMaxJobsPerCourier] = {};
   double sequence_value_ = 0.0;  // sequence_completion of the label lower_bound works on
   std::uint32_t pick_windowed_ = 0;  // local jobs whose pickup / delivery has presence windows
   std::uint32_t del_windowed_ = 0;
