@@ -77,6 +77,10 @@ struct EngineOptions {
   // generation (active_schedule.hpp) for the first plan, the best kept; 0: the chronological
   // engine's first plan.
   std::size_t first_dives = 8;
+  // The chronological engine with conflict-directed backjumping (backjumping.cpp): the same
+  // flaw and option order, but an exhausted decision point goes back to the latest decision
+  // its failures depend on. Off by default: see docs/planner-search.md for what it measured.
+  bool backjumping = false;
   // Iterative repair reports each decision it applies, why it took that option (the memory of
   // the previous plan's choice, the heuristic's order, or a repair of a culprit) and whether
   // it applied (its propagation succeeded).

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <random>
 
+#include "backjumping.hpp"
 #include "iterative_repair.hpp"
 #include "large_neighbourhood.hpp"
 #include "search_engine.hpp"
@@ -224,7 +225,9 @@ class IterativeSampling final : public EngineBase {
 
 std::unique_ptr<SearchEngine> make_search_engine(const std::string& name,
                                                  const EngineOptions& options) {
-  if (name == "chronological") return std::make_unique<ChronologicalBacktracking>(options);
+  if (name == "chronological")
+    return options.backjumping ? make_backjumping_search(options)
+                               : std::make_unique<ChronologicalBacktracking>(options);
   if (name == "discrepancy") return std::make_unique<LimitedDiscrepancy>(options);
   if (name == "sampling") return std::make_unique<IterativeSampling>(options);
   if (name == "repair") return make_iterative_repair(options);

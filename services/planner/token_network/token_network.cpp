@@ -89,6 +89,9 @@ bool TokenNetwork::add_temporal(TimepointId from, TimepointId to, Time lb, Time 
   temporal_reasons_.resize(tn_.constraints().size());
   temporal_reasons_.back() = why;
   if (r) return true;
+  // Every caller gives up on a failure, so this cycle is why the current apply() fails.
+  cycle_ = r.conflict;
+  cycle_valid_ = explain_;
   // Name the statements of the cycle, each once, the closing one first.
   std::vector<std::string> reasons;
   for (TemporalConstraintId c : r.conflict) {
@@ -233,8 +236,9 @@ bool TokenNetwork::initialize() {
   tn_.set_explain_conflicts(true);
   struct Off {
     TemporalNetwork& tn;
-    ~Off() { tn.set_explain_conflicts(false); }
-  } off{tn_};
+    bool restore;
+    ~Off() { tn.set_explain_conflicts(restore); }
+  } off{tn_, explain_};
   makespan_ = tn_.add_timepoint();
   for (std::size_t o = 0; o < problem_.objects.size(); ++o) {
     const ClassDef& cls = model_.classes[problem_.objects[o].class_index];
@@ -352,6 +356,7 @@ bool TokenNetwork::propagate_constraints(const std::string& why) {
 
 bool TokenNetwork::apply(const Decision& d) {
   ++decisions_;
+  cycle_valid_ = false;
   bool ok = false;
   switch (d.kind) {
     case Decision::Kind::kInsert:

@@ -135,6 +135,19 @@ class TokenNetwork {
 
   std::size_t decisions_applied() const { return decisions_; }
 
+  // Conflict-directed backjumping (search/backjumping.cpp) needs to know why an apply() failed.
+  // With explanations on, a failure in the temporal network names the constraints of one
+  // negative cycle exactly (a Bellman-Ford pass, only on failure); failed_cycle() is then that
+  // cycle (TemporalNetwork::kHorizonConstraint for the implicit horizon), and null when the
+  // last apply() failed elsewhere (parameters, overload, ...) or explanations are off.
+  void set_explain_conflicts(bool on) {
+    explain_ = on;
+    tn_.set_explain_conflicts(on);
+  }
+  const std::vector<TemporalConstraintId>* failed_cycle() const {
+    return cycle_valid_ ? &cycle_ : nullptr;
+  }
+
   // Asked during parameter propagation (a deadline, a cancellation): true ends it as a failure
   // that interrupted() marks, so that no search takes it for a proof.
   void set_stop(std::function<bool()> stop) { cn_.set_stop(std::move(stop)); }
@@ -178,6 +191,9 @@ class TokenNetwork {
   std::size_t decisions_ = 0;
   bool interrupted_ = false;
   bool not_first_not_last_ = false;
+  bool explain_ = false;
+  bool cycle_valid_ = false;  // the last apply() failed at cycle_ (see failed_cycle())
+  std::vector<TemporalConstraintId> cycle_;
 };
 
 }  // namespace autonomy::planner

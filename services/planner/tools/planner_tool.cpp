@@ -40,6 +40,9 @@ int main(int argc, char** argv) {
   app.add_option("--svg", svg_file, "write a Gantt chart of the plan here");
   app.add_option("--json", json_file, "write the plan here instead of standard output");
   app.add_flag("--quiet", quiet, "no plan on standard output, only the summary");
+  bool backjumping = false;
+  app.add_flag("--backjumping", backjumping,
+               "chronological: conflict-directed backjumping instead of chronological backtracking");
   bool not_first_not_last = false;
   app.add_flag("--not-first-not-last", not_first_not_last,
                "not-first/not-last propagation on timelines beside edge finding");
@@ -77,6 +80,7 @@ int main(int argc, char** argv) {
   options.engine = engine;
   options.engine_options.seed = seed;
   options.engine_options.first_dives = first_dives;
+  options.engine_options.backjumping = backjumping;
   options.not_first_not_last = not_first_not_last;
   if (max_decisions) options.termination.max_decisions = max_decisions;
   const auto started = std::chrono::steady_clock::now();
