@@ -247,6 +247,11 @@ int run_replay(const ReplayOptions& o, Context& ctx) {
   };
   while (!matched() && std::chrono::steady_clock::now() < match_deadline)
     if (!sleep_for(interrupt, participant, std::chrono::milliseconds(20))) return kExitInterrupted;
+  // Each side of a topic matches the other on its own: the world's writer of robot states may
+  // match this reader a moment after this reader matched it, and a volatile tick-0 state would
+  // then go to nobody (seen as "published nothing at tick 0" in CI under load). A short settle
+  // lets the world's side finish discovery before the registration starts the world.
+  if (!sleep_for(interrupt, participant, std::chrono::milliseconds(500))) return kExitInterrupted;
 
   auto write_own = [&](const char* topic, const Json& value) {
     auto& t = inputs.at(topic);
