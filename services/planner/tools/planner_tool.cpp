@@ -76,6 +76,10 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  if (backjumping && engine != "chronological") {
+    std::cerr << "--backjumping is an option of --engine chronological, not of '" << engine << "'\n";
+    return 2;
+  }
   PlanningOptions options;
   options.engine = engine;
   options.engine_options.seed = seed;
