@@ -11,7 +11,9 @@ namespace autonomy::sim {
 
 void SimulatorCli::add_options(CLI::App& app) {
   app.add_option("--wait-for", wait_for_,
-                 "Hold tick 0 until these lockstep participants registered (e.g. behavior/r1)");
+                 "Hold tick 0 until these lockstep participants registered (e.g. behavior/r1; several: "
+                 "behavior/r1,behavior/r2 or the option again)")
+      ->delimiter(',');
   app.add_option("--max-ticks", max_ticks_, "Stop after this many ticks (0: run until stopped)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--trajectory", trajectory_, "Write every robot's pose per tick to this CSV file");

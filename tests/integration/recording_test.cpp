@@ -18,6 +18,7 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <thread>
 
 #include "common/mcap/reader.hpp"
 #include "tests/support/goal_statuses.hpp"
@@ -203,9 +204,10 @@ TEST_F(RecordingTest, ARecorderKilledLeavesItsChunksReadable) {
   ASSERT_GT(c.by_topic.count("autonomy/heartbeat"), 0u);
   // Every message of the complete chunks decodes with its type.
   EXPECT_GT(decode_all<msg::Heartbeat>(c.by_topic.at("autonomy/heartbeat"), "autonomy/heartbeat").size(), 0u);
-  if (c.by_topic.count("autonomy/robot/state"))
+  if (c.by_topic.count("autonomy/robot/state")) {
     for (const auto& s : decode_all<msg::RobotState>(c.by_topic.at("autonomy/robot/state"), "autonomy/robot/state"))
       EXPECT_EQ(s.robot_id, "r1");
+  }
 }
 
 // Replay (issue 26): a lockstep run recorded from before the world started, fed back by
@@ -219,11 +221,22 @@ TEST_F(RecordingTest, ALockstepRunReplaysExactlyAndAnotherWorldDiffers) {
   Recorder<msg::GoalStatus> goals(participant(), dds::topics::goal_status);
   dds::Topic<msg::NavGoal> goal_topic(participant(), dds::topics::nav_goal);
   dds::Writer<msg::NavGoal> goal_writer(participant(), goal_topic);
+  dds::Topic<msg::LockstepRegistration> registration_topic(participant(), dds::topics::lockstep_registration);
+  dds::Writer<msg::LockstepRegistration> hand(participant(), registration_topic);
   const std::string file = dir().file("run.mcap");
-  auto& recorder = start_recorder(file);
+  auto& recorder = start_recorder(file, {"--verbose"});
   ASSERT_TRUE(await("the recorder's readers", [&] { return log_says(recorder, "Ctrl-C stops"); }));
-  auto& simulator = start_simulator({"--wait-for", "behavior/r1"}, true, "simulator-recorded");
+  // A lockstep world runs the whole trip in well under a second; a loaded machine discovers
+  // slower than that. The world is held (for the test's hand too) until the recorder's readers
+  // have matched the writers whose samples the replay needs: the world's clock and states, the
+  // behavior's commands and acks (without an ack the fresh world would apply its commands a tick
+  // late: the replay refuses such a file).
+  auto& simulator = start_simulator({"--wait-for", "behavior/r1,test/hand"}, true, "simulator-recorded");
   auto& behavior = start_behavior("r1");
+  for (const char* topic : {"autonomy/clock", "autonomy/robot/state", "autonomy/lockstep/ack", "autonomy/robot/cmd_vel"})
+    ASSERT_TRUE(await(std::string("the recorder matched the writer of ") + topic,
+                      [&] { return log_says(recorder, std::string(topic) + ": 1 writer(s) matched"); }));
+  hand.write({"test/hand", false});  // registered once and left: the world starts with behavior/r1 alone
   ASSERT_TRUE(await_ready(beats, behavior));
   ASSERT_TRUE(goal_writer.wait_for_readers(2, kDeadline));
   goal_writer.write({"r1", "replay-goal", 18.0, 2.0, 0.0, ""});
@@ -233,7 +246,32 @@ TEST_F(RecordingTest, ALockstepRunReplaysExactlyAndAnotherWorldDiffers) {
       if (g.goal_id == "replay-goal" && g.state == msg::GoalState::Reached) return true;
     return false;
   }, 60s)) << states_text(goals.all());
-  // Stopped at once: the checks below count what the file holds, not what was published.
+  // The world is quiet once r1 stands at its goal. The recorder, slower than the world on a
+  // loaded machine, has taken everything when the file holds the goal reached and its counts of
+  // the ticked topics no longer grow from one chunk to the next.
+  auto ticked_counts = [&] {
+    std::vector<std::size_t> n;
+    try {
+      const auto c = read_recording(file);
+      bool reached = false;
+      if (c.by_topic.count("autonomy/nav/goal_status"))
+        for (const auto& g : decode_all<msg::GoalStatus>(c.by_topic.at("autonomy/nav/goal_status"), "autonomy/nav/goal_status"))
+          reached = reached || (g.goal_id == "replay-goal" && g.state == msg::GoalState::Reached);
+      if (!reached) return n;
+      for (const char* topic : {"autonomy/clock", "autonomy/robot/state", "autonomy/lockstep/ack", "autonomy/robot/cmd_vel"})
+        n.push_back(c.by_topic.count(topic) ? c.by_topic.at(topic).size() : 0);
+    } catch (const mcap::McapError&) {
+    }
+    return n;
+  };
+  std::vector<std::size_t> counts;
+  ASSERT_TRUE(await("the recorder caught up with the quiet world", [&] {
+    const auto now = ticked_counts();
+    const bool same = !now.empty() && now == counts;
+    counts = now;
+    if (!same) std::this_thread::sleep_for(400ms);  // two chunks
+    return same;
+  }, 60s));
   recorder.signal(SIGINT);
   const auto recorded = recorder.wait_for_exit(10s);
   ASSERT_TRUE(recorded && recorded->exited && recorded->code == 0);

@@ -32,6 +32,7 @@ struct RecordOptions {
   double chunk_s = 1.0;
   double duration_s = 0.0;
   bool progress = false, no_progress = false;
+  bool verbose = false;
 };
 
 // One recorded topic: its reader, and its channel once the first sample arrived.
@@ -40,6 +41,7 @@ struct Recorded {
   int channel = -1;
   uint32_t sequence = 0;
   uint64_t messages = 0, bytes = 0;
+  uint32_t writers_matched = 0;  // said with --verbose when it changes
 };
 
 // The QoS of the topic's writers as channel metadata: the first discovered writer's (they match
@@ -169,6 +171,15 @@ int run_record(const RecordOptions& o, Context& ctx) {
         writer.write(m);
       }
     }
+    // Discovery matches the recorder's readers with writers a moment after both exist: whoever
+    // starts a fast (lockstep) world right after the recorder can wait for these lines instead
+    // of losing its first ticks.
+    if (o.verbose)
+      for (auto& [name, r] : recorded)
+        if (const auto n = r.reader->matched_writers(); n != r.writers_matched) {
+          r.writers_matched = n;
+          std::cerr << "autonomy record: " << name << ": " << n << " writer(s) matched\n";
+        }
     const auto now = std::chrono::steady_clock::now();
     const double elapsed = std::chrono::duration<double>(now - start).count();
     if (now >= next_flush) {
@@ -229,6 +240,8 @@ Command add_record(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--progress", o->progress, "Print progress every chunk even when stderr is not a terminal");
   cmd->add_flag("--no-progress", o->no_progress, "No progress on a terminal");
+  cmd->add_flag("-v,--verbose", o->verbose,
+                "Say on stderr whenever the number of writers a topic's reader is matched with changes");
   return {cmd, [o](Context& ctx) { return run_record(*o, ctx); }};
 }
 

@@ -206,6 +206,13 @@ int run_replay(const ReplayOptions& o, Context& ctx) {
     std::cerr << "autonomy replay: " << o.file << ": a sample does not decode: " << e.what() << "\n";
     return kExitUsage;
   }
+  if (const auto holes = recording::unacknowledged_commands(script_inputs)) {
+    std::cerr << "autonomy replay: " << o.file << " is incomplete: " << *holes
+              << ". The recorder missed samples: start `autonomy record -a` before the world and let it match the "
+                 "writers before the world runs (`autonomy record -v` says when they match), and stop it after the "
+                 "world went quiet\n";
+    return kExitUsage;
+  }
   // The fresh world writes tick 0 when it starts, before this tool can have joined it (it then
   // holds tick 0 for the replay): what it wrote on volatile topics then is gone. Not compared.
   const auto before = script_outputs.size();

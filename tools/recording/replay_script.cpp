@@ -156,4 +156,31 @@ std::map<std::string, std::size_t> ReplayScript::outputs_by_topic() const {
   return out;
 }
 
+std::optional<std::string> unacknowledged_commands(const std::vector<RecordedSample>& inputs) {
+  std::set<std::string> participants;
+  std::set<std::pair<std::string, int64_t>> acked;
+  for (const auto& s : inputs) {
+    const auto& v = s.value;
+    if (!v.is_object() || !v.contains("participant") || !v.at("participant").is_string()) continue;
+    const auto name = v.at("participant").get<std::string>();
+    if (s.topic == kLockstepRegistrationTopic && v.value("active", false)) participants.insert(name);
+    if (s.topic == kLockstepAckTopic && s.tick) acked.insert({name, *s.tick});
+  }
+  std::size_t missing = 0;
+  const RecordedSample* first = nullptr;
+  for (const auto& s : inputs) {
+    const auto& v = s.value;
+    if (s.topic == kLockstepAckTopic || !s.tick || !v.is_object() || !v.contains("source") || !v.at("source").is_string())
+      continue;
+    const auto source = v.at("source").get<std::string>();
+    if (!participants.count(source) || acked.count({source, *s.tick})) continue;
+    if (!first || s.publish_time < first->publish_time) first = &s;
+    ++missing;
+  }
+  if (!first) return std::nullopt;
+  return std::to_string(missing) + " recorded command(s) have no acknowledgement of their tick from their lockstep " +
+         "participant in the file (the first: " + first->topic + " from " + first->value.at("source").get<std::string>() +
+         " at tick " + std::to_string(*first->tick) + ")";
+}
+
 }  // namespace autonomy::recording

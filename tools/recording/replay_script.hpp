@@ -53,6 +53,17 @@ inline constexpr const char* kLockstepAckTopic = "autonomy/lockstep/ack";
 // A value without the members that name the run rather than the world (world_id, at any depth).
 Json world_content(Json value);
 
+inline constexpr const char* kLockstepRegistrationTopic = "autonomy/lockstep/registration";
+
+// A recording a replay cannot reproduce exactly, found before replaying it: commands stamped
+// with a tick (inputs with a "source") from a registered lockstep participant whose ack of that
+// tick is not in the file. Every such participant acks each tick it sent commands for, after
+// them, and the fresh world waits for the replayed ack before it applies them: without it the
+// world may apply them a tick late. A recorder whose readers matched the writers only after the
+// world began (or that stopped before the last samples reached it) leaves such holes. Returns
+// one sentence naming how many and the first; nullopt when every command has its ack.
+std::optional<std::string> unacknowledged_commands(const std::vector<RecordedSample>& inputs);
+
 struct OutputMismatch {
   std::string topic;
   int64_t tick = 0;

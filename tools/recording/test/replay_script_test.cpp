@@ -95,5 +95,35 @@ TEST(ReplayScript, WorldContentDropsTheWorldIdAtAnyDepth) {
             (Json{{"a", {{"b", 3}}}, {"c", Json::array({Json::object()})}}));
 }
 
+RecordedSample command(uint64_t published, const std::string& source, int64_t tick) {
+  return input("autonomy/robot/cmd_vel", published, "cmd", tick, Json{{"robot_id", "r1"}, {"source", source}, {"tick", tick}});
+}
+RecordedSample registration(uint64_t published, const std::string& participant, bool active = true) {
+  return input("autonomy/lockstep/registration", published, "reg", std::nullopt,
+               Json{{"participant", participant}, {"active", active}});
+}
+
+TEST(ReplayScript, CommandsOfALockstepParticipantWithoutItsAckOfTheirTickAreNamed) {
+  // Complete: every command of the registered behavior/r2 has its ack; a tool's command (not a
+  // participant) needs none.
+  EXPECT_EQ(unacknowledged_commands({registration(1, "behavior/r2"), command(5, "behavior/r2", 3), ack(6, "behavior/r2", 3, "a"),
+                                     command(7, "teleop", 4), command(8, "behavior/r2", 4), ack(9, "behavior/r2", 4, "a")}),
+            std::nullopt);
+  // The recorder matched the ack writer late: the commands of ticks 3 and 4 have no ack, the
+  // one of tick 5 has. The first hole is named by the time it was written.
+  const auto holes = unacknowledged_commands({registration(1, "behavior/r2"), command(8, "behavior/r2", 4),
+                                              command(5, "behavior/r2", 3), command(10, "behavior/r2", 5),
+                                              ack(11, "behavior/r2", 5, "a")});
+  ASSERT_TRUE(holes.has_value());
+  EXPECT_EQ(*holes,
+            "2 recorded command(s) have no acknowledgement of their tick from their lockstep participant in the file "
+            "(the first: autonomy/robot/cmd_vel from behavior/r2 at tick 3)");
+  // An ack of another participant or another tick does not count; a participant that only left
+  // (active false) is not one.
+  EXPECT_TRUE(unacknowledged_commands({registration(1, "behavior/r2"), command(5, "behavior/r2", 3), ack(6, "behavior/r1", 3, "a"),
+                                       ack(7, "behavior/r2", 2, "a")}).has_value());
+  EXPECT_EQ(unacknowledged_commands({registration(1, "behavior/r2", false), command(5, "behavior/r2", 3)}), std::nullopt);
+}
+
 }  // namespace
 }  // namespace autonomy::recording
