@@ -8,6 +8,7 @@
 //   ------  -----------------------------------------------
 //     53    CourierTest.ARecordedRunReplaysIntoAFreshWorldExactly
 #include "tests/integration/courier_fixture.hpp"
+#include "tests/support/recorder_log.hpp"
 
 #include <gtest/gtest.h>
 
@@ -23,22 +24,36 @@ TEST_F(CourierTest, ARecordedRunReplaysIntoAFreshWorldExactly) {
   setup_observers(53);
   const std::string file = dir().file("courier.mcap");
   auto& recorder = start("recorder", AUTONOMY_AUTONOMY_BIN,
-                         {"record", "-a", "-o", file, "--domain", std::to_string(domain_), "--chunk", "0.2"}, false);
+                         {"record", "-a", "-o", file, "--domain", std::to_string(domain_), "--chunk", "0.2", "--verbose"},
+                         false);
   ASSERT_TRUE(await("the recorder's readers", [&] {
     return read_file(dir().file("recorder.out")).find("Ctrl-C stops") != std::string::npos;
   }));
   start_world(office_scenario(kFig5Script));
+  // The world is held until the test releases it (send_paper_commands): by then the recorder's
+  // readers must have matched every writer a replay needs, or the replay refuses the file. Acks
+  // come from the test, rhino's behavior and the courier.
+  for (const auto& [topic, writers] : std::vector<std::pair<std::string, unsigned>>{
+           {"autonomy/clock", 1}, {"autonomy/robot/state", 1}, {"autonomy/lockstep/ack", 3},
+           {"autonomy/robot/cmd_vel", 1}, {"autonomy/office/handover_request", 1}})
+    ASSERT_TRUE(await("the recorder matched the writers of " + topic,
+                      [&] { return recorder_matched(read_file(dir().file("recorder.out")), topic, writers); }))
+        << read_file(dir().file("recorder.out"));
   send_paper_commands();
   ASSERT_TRUE(both_jobs_finished("both jobs finished"));
   EXPECT_TRUE(job_in("job-1", msg::JobState::Completed)) << job_story("job-1");
-  // Stopped at once: whatever the recorder did not take yet is simply not compared.
+  // The world stops first; the recorder, slower than the world on a loaded machine, is stopped
+  // once it took everything that was sent (a file cut at another point for each topic would
+  // hold outputs whose inputs it lost).
+  for (ChildProcess* c : {simulator_, behavior_, courier_}) stop_watching(*c);
+  simulator_->kill_and_wait();
+  std::map<std::string, std::size_t> counts;
+  ASSERT_TRUE(await("the recorder caught up with the stopped world", [&] { return recording_stopped_growing(file, counts); },
+                    60s));
   recorder.signal(SIGINT);
   const auto recorded = recorder.wait_for_exit(10s);
   ASSERT_TRUE(recorded && recorded->exited && recorded->code == 0) << read_file(dir().file("recorder.out"));
-  for (ChildProcess* c : {simulator_, behavior_, courier_}) {
-    stop_watching(*c);
-    c->kill_and_wait();
-  }
+  for (ChildProcess* c : {behavior_, courier_}) c->kill_and_wait();
 
   auto& fresh = start_simulator({"--config", scenario_, "--mode", "lockstep", "--wait-for", "replay"}, false,
                                 "simulator-replay");
