@@ -305,6 +305,12 @@ void SimulatorNode::on_acks(std::vector<dds::Sample<msg::TickAck>> samples) {
 }
 
 void SimulatorNode::on_registrations(std::vector<dds::Sample<msg::LockstepRegistration>> samples) {
+  // A take returns the samples of one batch instance by instance (registrations are keyed by
+  // participant), not in the order they were written: a replay that registers the recorded
+  // participants and then itself had itself end the start hold before the last of them, which
+  // then took part from tick 1 instead of 0. Written order it is.
+  std::stable_sort(samples.begin(), samples.end(),
+                   [](const auto& a, const auto& b) { return a.source_timestamp < b.source_timestamp; });
   for (const auto& s : samples) {
     const std::string& name = s.value.participant;
     if (auto problem = msg::length_problem("participant", name, msg::kMaxNameLength)) {

@@ -95,7 +95,9 @@ class ReplayScript {
   void fresh_output(const std::string& topic, int64_t tick, Json value);
   // Matches the outputs due by `clock` against the fresh ones. Returns the first that has no
   // fresh twin (so far), or nullopt when every output due has one. Matched outputs are not
-  // looked at again.
+  // looked at again. One fresh sample answers every recorded sample equal to it: a world held
+  // at a tick writes its clock again each second, so how many copies a recording holds follows
+  // wall time, not the world.
   std::optional<OutputMismatch> check_due_by(int64_t clock);
   std::size_t matched() const { return matched_; }
   // Topics of the outputs, with their counts (for the summary).

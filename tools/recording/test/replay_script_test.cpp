@@ -79,6 +79,23 @@ TEST(ReplayScript, OutputsAreDueAtTheNextClockAndMatchedExactlyWithoutTheWorldId
   EXPECT_EQ(text.find("/robot_id"), std::string::npos) << "the nearest fresh sample is r2's: " << text;
 }
 
+TEST(ReplayScript, RepeatsOfOneSampleAtOneTickAreAnsweredByOneFreshSample) {
+  // The recorded world was held at tick 0 for three seconds: its clock 0 three times.
+  const std::vector<RecordedSample> clocks = {clock(10, 0), clock(1010, 0), clock(2010, 0), clock(2020, 1), clock(2030, 2)};
+  ReplayScript s({}, clocks, clocks);  // the tool checks the clocks as outputs too
+  EXPECT_EQ(s.outputs(), 5u);
+  s.fresh_output("autonomy/clock", 0, Json{{"tick", 0}, {"world_id", 8}});
+  s.fresh_output("autonomy/clock", 1, Json{{"tick", 1}, {"world_id", 8}});
+  EXPECT_FALSE(s.check_due_by(1).has_value());
+  EXPECT_EQ(s.matched(), 3u);
+  // Another value at the same tick is still a difference.
+  ReplayScript t({}, {state(9, "r1", 0, 1.0), state(11, "r1", 0, 1.5)}, {clock(10, 0), clock(20, 1)});
+  t.fresh_output("autonomy/robot/state", 0, Json{{"robot_id", "r1"}, {"tick", 0}, {"x", 1.0}});
+  const auto other = t.check_due_by(1);
+  ASSERT_TRUE(other.has_value());
+  EXPECT_NE(other->describe().find("/x recorded 1.5, replayed 1.0"), std::string::npos) << other->describe();
+}
+
 TEST(ReplayScript, OutputsReceivedAfterTheLastClockAreCheckedAtTheEnd) {
   ReplayScript s({}, {state(39, "r1", 3, 2.0), state(45, "r1", 5, 2.5)}, {clock(40, 3)});
   EXPECT_EQ(s.last_tick(), 5) << "the world must reach the last state recorded, after the last clock";
