@@ -25,6 +25,7 @@ WaitSet::WaitSet(const Participant& participant)
 void WaitSet::attach(dds_entity_t condition, dds_attach_t tag) {
   check(dds_waitset_attach(entity_.handle(), condition, tag), "dds_waitset_attach");
   attached_.emplace_back(condition, tag);
+  attached_count_.store(attached_.size());
 }
 
 void WaitSet::detach(dds_entity_t condition) {
@@ -32,11 +33,13 @@ void WaitSet::detach(dds_entity_t condition) {
   attached_.erase(std::remove_if(attached_.begin(), attached_.end(),
                                  [condition](const auto& a) { return a.first == condition; }),
                   attached_.end());
+  attached_count_.store(attached_.size());
 }
 
 std::vector<dds_attach_t> WaitSet::wait(std::chrono::nanoseconds timeout) const {
   if (timeout <= std::chrono::nanoseconds(0)) return triggered_now();
-  std::vector<dds_attach_t> triggered(attached_.empty() ? 1 : attached_.size());
+  const size_t attached = attached_count_.load();
+  std::vector<dds_attach_t> triggered(attached == 0 ? 1 : attached);
   const dds_return_t n = check(
       dds_waitset_wait(entity_.handle(), triggered.data(), triggered.size(), timeout.count()), "dds_waitset_wait");
   triggered.resize(static_cast<size_t>(n) < triggered.size() ? static_cast<size_t>(n) : triggered.size());

@@ -1,9 +1,12 @@
 #pragma once
 // Blocking on DDS conditions from a thread the service owns, rather than running service logic
-// inside Cyclone's listener callbacks (closing an entity while a listener runs aborts).
+// inside Cyclone's listener callbacks (closing an entity while a listener runs aborts). The one
+// exception, for short lockstep handlers, is EventLoop::on_samples_at_arrival: its handlers never
+// close their own reader, and none runs once the loop's run() has ended.
 #include "common/dds/entity.hpp"
 #include "common/dds/participant.hpp"
 
+#include <atomic>
 #include <chrono>
 #include <utility>
 #include <vector>
@@ -27,7 +30,8 @@ class WaitSet {
  public:
   explicit WaitSet(const Participant& participant);
 
-  // tag is returned by wait() when the condition triggers.
+  // tag is returned by wait() when the condition triggers. attach/detach may run while another
+  // thread is in wait() (not in triggered_now()).
   void attach(dds_entity_t condition, dds_attach_t tag);
   void detach(dds_entity_t condition);
 
@@ -45,6 +49,9 @@ class WaitSet {
 
   Entity entity_;
   std::vector<std::pair<dds_entity_t, dds_attach_t>> attached_;  // condition, tag
+  // attached_.size() for wait(): a handler running in a receive thread (EventLoop) may attach
+  // while the loop's thread waits.
+  std::atomic<size_t> attached_count_{0};
 };
 
 }  // namespace autonomy::dds

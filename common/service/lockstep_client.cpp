@@ -25,7 +25,7 @@ int64_t steady_ns() {
 }  // namespace
 
 LockstepClient::LockstepClient(Service& service, std::string participant_name,
-                               std::function<void(const msg::SimClock&)> on_tick)
+                               std::function<void(const msg::SimClock&)> on_tick, TickHandling handling)
     : name_(std::move(participant_name)),
       heartbeat_(service.heartbeat()),
       on_tick_(std::move(on_tick)),
@@ -35,7 +35,7 @@ LockstepClient::LockstepClient(Service& service, std::string participant_name,
       clock_reader_(service.participant(), clock_topic_, clock_reader_qos().get()),
       registration_writer_(service.participant(), registration_topic_),
       ack_writer_(service.participant(), ack_topic_) {
-  service.loop().on_samples<msg::SimClock>(clock_reader_, [this](std::vector<dds::Sample<msg::SimClock>> samples) {
+  auto on_clock = [this](std::vector<dds::Sample<msg::SimClock>> samples) {
     // Only the newest tick matters: a participant that fell behind catches up in one step.
     const msg::SimClock* newest = nullptr;
     bool ack_again = false;
@@ -70,7 +70,11 @@ LockstepClient::LockstepClient(Service& service, std::string participant_name,
     heartbeat_.set_world(newest->world_id);
     clock_.advance(newest->tick, newest->sim_time_ns);
     on_tick_(*newest);
-  });
+  };
+  if (handling == TickHandling::AtArrival)
+    service.loop().on_samples_at_arrival<msg::SimClock>(clock_reader_, std::move(on_clock));
+  else
+    service.loop().on_samples<msg::SimClock>(clock_reader_, std::move(on_clock));
 }
 
 LockstepClient::~LockstepClient() {

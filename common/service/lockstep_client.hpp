@@ -25,11 +25,18 @@
 
 namespace autonomy::service {
 
+// Where on_tick runs: InLoop on the loop's thread; AtArrival in the DDS receive thread that
+// delivered the clock when the loop allows it (EventLoop::on_samples_at_arrival; one thread
+// wake-up less per tick), for participants whose tick handler is short.
+enum class TickHandling { InLoop, AtArrival };
+
 class LockstepClient {
  public:
-  // on_tick runs on the loop's thread for every new tick of the joined world; repeated ticks are
-  // skipped, ignored ones (clock_check()) are warned about and counted in the service's heartbeat.
-  LockstepClient(Service& service, std::string participant_name, std::function<void(const msg::SimClock&)> on_tick);
+  // on_tick runs for every new tick of the joined world (one at a time with the loop's other
+  // handlers, see TickHandling); repeated ticks are skipped, ignored ones (clock_check()) are
+  // warned about and counted in the service's heartbeat.
+  LockstepClient(Service& service, std::string participant_name, std::function<void(const msg::SimClock&)> on_tick,
+                 TickHandling handling = TickHandling::InLoop);
   // Leaves the lockstep set at once (disposes the registration) instead of waiting for a timeout.
   ~LockstepClient();
 

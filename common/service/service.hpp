@@ -59,6 +59,7 @@ int run_service(int argc, char** argv, const char* service_name, const char* des
   try {
     const std::string log_file = setup_logging(options);
     Service service(options);
+    service.loop().allow_handling_at_arrival();  // this process runs one loop
     spdlog::info("starting on DDS domain {}, log file {}", options.domain, log_file);
     auto node = make_node(service);
     service.run();

@@ -137,6 +137,7 @@ SimulatorNode::SimulatorNode(service::Service& service, Scenario scenario, Simul
       options_(std::move(options)),
       last_advance_(std::chrono::steady_clock::now()),
       quiet_continue_(service.participant()),
+      step_due_(service.participant()),
       radio_(make_radio_model(scenario_)),
       clock_topic_(service.participant(), dds::topics::clock),
       state_topic_(service.participant(), dds::topics::robot_state),
@@ -215,7 +216,17 @@ SimulatorNode::SimulatorNode(service::Service& service, Scenario scenario, Simul
   // same socket, so they are taken when the ack is (on_acks), and before every step (take_commands
   // in advance_while_complete and advance) for commands from outside lockstep. Waking the loop
   // for each command as well cost a wake-up per participant and tick.
-  loop.on_samples<msg::TickAck>(ack_reader_, [this](auto s) { on_acks(std::move(s)); });
+  // Acks are counted in the receive thread that delivers them (a standalone process:
+  // EventLoop::on_samples_at_arrival), and only the one that completes a tick wakes the loop's
+  // thread (step_due_), instead of every ack. The world does not step in a receive thread: a
+  // tick's writes (scans, radio links) can exceed what a reliable writer may have unacknowledged,
+  // and the writer would then wait for acks that only that thread could take in (up to the
+  // writer's max blocking time, then the write fails).
+  loop.on_samples_at_arrival<msg::TickAck>(ack_reader_, [this](auto s) { on_acks(std::move(s)); });
+  loop.on_condition(step_due_.handle(), [this] {
+    step_due_.reset();
+    advance_while_complete();
+  });
   loop.on_samples<msg::LockstepRegistration>(registration_reader_, [this](auto s) { on_registrations(std::move(s)); });
   loop.on_samples<msg::SpawnRequest>(spawn_request_reader_, [this](auto s) { on_spawn_requests(std::move(s)); });
   loop.on_samples<msg::DoorCommand>(door_command_reader_, [this](auto s) { on_door_commands(std::move(s)); });
@@ -301,7 +312,10 @@ void SimulatorNode::on_acks(std::vector<dds::Sample<msg::TickAck>> samples) {
       lockstep_changed(s.value.participant, false, "it acknowledged tick " + std::to_string(s.value.tick) + " again");
     }
   }
-  advance_while_complete();
+  if (!service_.loop().in_receive_thread())
+    advance_while_complete();
+  else if (may_advance())
+    step_due_.trigger();
 }
 
 void SimulatorNode::on_registrations(std::vector<dds::Sample<msg::LockstepRegistration>> samples) {
@@ -418,15 +432,16 @@ void SimulatorNode::on_timer() {
   }
 }
 
+bool SimulatorNode::may_advance() const {
+  return !finished_ && barrier_.has_participants() && !holding_start() && (quiet_ || barrier_.complete(tick_));
+}
+
 void SimulatorNode::advance_while_complete() {
   if (!lockstep() || service_.loop().draining()) return;  // a handler run by the drain below: looked at after it
   take_commands();
   // Quiet ticks are stepped in batches: between two, the loop reads what arrived (a wake-up).
   constexpr int kQuietBatch = 50;
   int quiet_in_a_row = 0;
-  const auto may_advance = [this] {
-    return !finished_ && barrier_.has_participants() && !holding_start() && (quiet_ || barrier_.complete(tick_));
-  };
   while (may_advance()) {
     if (quiet_ && ++quiet_in_a_row > kQuietBatch) {
       quiet_continue_.trigger();

@@ -97,6 +97,8 @@ class SimulatorNode {
   bool lockstep() const { return options_.settings.mode == ClockMode::Lockstep; }
   bool holding_start() const;
   void advance_while_complete();
+  // Whether the world may step now (a lockstep tick every participant answered, or quiet ticks).
+  bool may_advance() const;
   void advance();  // applies commands, steps the world, opens the next tick
   bool every_robot_finished() const;  // the world has robots and each reported finished
   void apply_commands(const std::vector<msg::VelocityCommand>& commands);
@@ -169,6 +171,9 @@ class SimulatorNode {
   uint64_t quiet_ticks_ = 0;
   std::map<std::string, geometry::Pose2> published_poses_;
   dds::GuardCondition quiet_continue_;
+  // The acks that complete a tick are taken in the receive thread that delivers them (on_acks);
+  // the world steps on the loop's thread, woken by this once per tick (docs/scale.md).
+  dds::GuardCondition step_due_;
 
   // Radio: robots in id order are the table's indices; only connected links are held.
   radio::RadioModel radio_;

@@ -62,8 +62,9 @@ BehaviorNode::BehaviorNode(service::Service& service, BehaviorNodeOptions option
       mission_status_writer_(service.participant(), mission_status_topic_),
       cmd_writer_(service.participant(), cmd_topic_),
       spawn_request_writer_(service.participant(), spawn_request_topic_),
-      lockstep_(service, participant_name_,
-                [this](const msg::SimClock& c) { on_tick(c); }) {
+      // A tick's control (a few tens of µs) runs in the receive thread that delivered the clock.
+      lockstep_(service, participant_name_, [this](const msg::SimClock& c) { on_tick(c); },
+                service::TickHandling::AtArrival) {
   spawn_request_id_ = options_.robot_id + "@" + std::to_string(getpid());
   contact_ = ContactJudge(options_.contact);
   doors_ = DoorKnowledge(options_.doors);

@@ -40,9 +40,14 @@ std::string format_xy(const geometry::Vec2& p) {
 void BehaviorNode::open_traffic_topics() {
   const auto& p = service_.participant();
   itinerary_topic_ = std::make_unique<dds::Topic<msg::Itinerary>>(p, dds::topics::itinerary);
-  itinerary_reader_ = std::make_unique<dds::Reader<msg::Itinerary>>(p, *itinerary_topic_);
+  // This process's own itineraries are not delivered to it (they were skipped below, after a
+  // wake-up of the loop for each), and the others' are stored in the receive thread that delivers
+  // them: a short handler, and no wake-up of the loop's thread per itinerary.
+  dds::Qos qos = dds::make_qos(dds::topics::itinerary.qos);
+  dds_qset_ignorelocal(qos.get(), DDS_IGNORELOCAL_PARTICIPANT);
+  itinerary_reader_ = std::make_unique<dds::Reader<msg::Itinerary>>(p, *itinerary_topic_, qos.get());
   itinerary_writer_ = std::make_unique<dds::Writer<msg::Itinerary>>(p, *itinerary_topic_);
-  service_.loop().on_samples<msg::Itinerary>(*itinerary_reader_, [this](auto samples) {
+  service_.loop().on_samples_at_arrival<msg::Itinerary>(*itinerary_reader_, [this](auto samples) {
     for (auto& s : samples) {
       if (!s.valid || s.value.robot_id == options_.robot_id) continue;
       auto& held = itineraries_[s.value.robot_id];
