@@ -382,7 +382,12 @@ TEST_F(BehaviorTest, KilledMidGoalDrivesOnFromItsJournal) {
     ++next;
   }
   ASSERT_FALSE(far.empty());
-  EXPECT_EQ(far.front().state, GoalState::Accepted) << states_text(far);
+  // The first run's Accepted can be superseded by its Active before this reader took it (a
+  // keep-last-1 writer delivers the newest reliably, not every one: seen once on a loaded
+  // machine); the first run's log says it accepted the goal.
+  EXPECT_TRUE(far.front().state == GoalState::Accepted || (far.front().state == GoalState::Active && far.front().reason.empty()))
+      << states_text(far);
+  EXPECT_NE(read_file(first.log_file()).find("goal far accepted"), std::string::npos) << first.log_tail();
   EXPECT_EQ(far.back().state, GoalState::Reached) << states_text(far);
   const std::string resumed_log = read_file(second.log_file());
   EXPECT_NE(resumed_log.find("journal: resuming goal far (active before the restart)"), std::string::npos)
