@@ -18,7 +18,6 @@
 #include <fstream>
 #include <map>
 #include <sstream>
-#include <thread>
 
 #include "common/mcap/reader.hpp"
 #include "tests/support/goal_statuses.hpp"
@@ -113,7 +112,9 @@ TEST_F(RecordingTest, ALockstepRunIsReadByIndependentReaders) {
       if (s.goal_id == goal.goal_id && s.state == msg::GoalState::Reached) return true;
     return false;
   }, 60s)) << states_text(goals.all());
-  std::this_thread::sleep_for(500ms);  // the recorder takes the last statuses
+  std::map<std::string, std::size_t> counts;  // the recorder takes the last statuses
+  ASSERT_TRUE(await("the recorder caught up with the quiet world", [&] { return recording_stopped_growing(file, counts); },
+                    60s));
   recorder.signal(SIGINT);
   const auto ended = recorder.wait_for_exit(10s);
   ASSERT_TRUE(ended && ended->exited && ended->code == 0) << (ended ? ended->describe() : "still running");

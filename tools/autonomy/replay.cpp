@@ -224,6 +224,10 @@ int run_replay(const ReplayOptions& o, Context& ctx) {
                                       }),
                        script_outputs.end());
   const std::size_t unreachable = before - script_outputs.size();
+  // What is left of tick 0 is durable: the held fresh world has it written already.
+  std::set<std::string> at_tick_zero;
+  for (const auto& s : script_outputs)
+    if (s.tick == 0) at_tick_zero.insert(s.topic);
   recording::ReplayScript script(std::move(script_inputs), std::move(script_outputs), std::move(script_clocks));
   if (script.clock_ticks().empty()) {
     std::cerr << "autonomy replay: " << o.file << ": no clock sample: nothing to replay\n";
@@ -254,12 +258,6 @@ int run_replay(const ReplayOptions& o, Context& ctx) {
   };
   while (!matched() && std::chrono::steady_clock::now() < match_deadline)
     if (!sleep_for(interrupt, participant, std::chrono::milliseconds(20))) return kExitInterrupted;
-  // Each side of a topic matches the other on its own: the world's writer of robot states may
-  // match this reader a moment after this reader matched it, and a volatile tick-0 state would
-  // then go to nobody (seen as "published nothing at tick 0" in CI under load). A short settle
-  // lets the world's side finish discovery before the registration starts the world.
-  if (!sleep_for(interrupt, participant, std::chrono::milliseconds(500))) return kExitInterrupted;
-
   auto write_own = [&](const char* topic, const Json& value) {
     auto& t = inputs.at(topic);
     t.writer->write(xtypes::json_to_cdr(*t.type, value).cdr);
@@ -310,6 +308,19 @@ int run_replay(const ReplayOptions& o, Context& ctx) {
     return !interrupt.requested();
   };
 
+  // Each side of a topic matches the other on its own: the world's writer of robot states may
+  // match this reader a moment after this reader matched it, and once the world went past tick 0
+  // its durable tick-0 state would be gone (seen as "published nothing at tick 0" in CI under
+  // load). The held world has written tick 0 already: the registration that starts it goes out
+  // once every durable tick-0 output the recording holds has come from the fresh world.
+  std::vector<int64_t> held_clocks;
+  auto tick_zero_arrived = [&] {
+    return std::all_of(at_tick_zero.begin(), at_tick_zero.end(), [&](const auto& t) { return script.has_fresh(t, 0); });
+  };
+  for (take_outputs(&held_clocks); !tick_zero_arrived() && std::chrono::steady_clock::now() < match_deadline;
+       take_outputs(&held_clocks))
+    if (!wait_for_samples(std::chrono::milliseconds(50))) return kExitInterrupted;
+
   publish_due(recording::kAtStart);
   write_own(kRegistrationTopic, Json{{"participant", o.participant}, {"active", true}});
 
@@ -319,7 +330,8 @@ int run_replay(const ReplayOptions& o, Context& ctx) {
   std::optional<recording::OutputMismatch> mismatch;
   bool finished = false;
   while (!finished && !interrupt.requested()) {
-    std::vector<int64_t> clocks;
+    std::vector<int64_t> clocks = std::move(held_clocks);  // the held tick 0's, the first time
+    held_clocks.clear();
     take_outputs(&clocks);
     std::sort(clocks.begin(), clocks.end());
     for (const int64_t tick : clocks) {

@@ -93,6 +93,8 @@ class ReplayScript {
 
   // A fresh output, decoded (world_content applied here).
   void fresh_output(const std::string& topic, int64_t tick, Json value);
+  // Whether a fresh output of `topic` stamped `tick` has arrived (matched or not).
+  bool has_fresh(const std::string& topic, int64_t tick) const { return fresh_.count({topic, tick}) > 0; }
   // Matches the outputs due by `clock` against the fresh ones. Returns the first that has no
   // fresh twin (so far), or nullopt when every output due has one. Matched outputs are not
   // looked at again. One fresh sample answers every recorded sample equal to it: a world held
